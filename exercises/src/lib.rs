@@ -1,0 +1,1 @@
+//! The exercises of Lecture 11.

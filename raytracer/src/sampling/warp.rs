@@ -1,0 +1,290 @@
+//! Warps: functions that turn uniform numbers `u ∈ [0,1)²` into points or
+//! directions with a known density, each with its pdf and, where cheap, its
+//! inverse (which makes round-trip tests easy).
+//!
+//! Directions are in the local shading frame (`z` is the normal, see
+//! [`crate::frame`]); pdfs of directions are per unit solid angle (`pdf_w`),
+//! pdfs of points per unit area (`pdf_a`).
+
+use crate::math::{INV_2PI, INV_4PI, INV_PI, PI, Vec2, Vec3A};
+
+/// Uniform point on the unit disk, by Shirley and Chiu's concentric map
+/// (it keeps strata compact and has low distortion).
+#[inline]
+pub fn concentric_disk(u: Vec2) -> Vec2 {
+    let a = 2.0 * u - Vec2::ONE;
+    if a.x == 0.0 && a.y == 0.0 {
+        return Vec2::ZERO;
+    }
+    let (r, theta) = if a.x.abs() > a.y.abs() {
+        (a.x, (PI / 4.0) * (a.y / a.x))
+    } else {
+        (a.y, PI / 2.0 - (PI / 4.0) * (a.x / a.y))
+    };
+    r * Vec2::new(theta.cos(), theta.sin())
+}
+
+/// Density of [`concentric_disk`] per unit area: `1/π`.
+#[inline]
+pub fn concentric_disk_pdf() -> f32 {
+    INV_PI
+}
+
+/// Inverse of [`concentric_disk`].
+pub fn concentric_disk_inverse(p: Vec2) -> Vec2 {
+    let r = p.length();
+    if r == 0.0 {
+        return Vec2::splat(0.5);
+    }
+    let mut phi = p.y.atan2(p.x);
+    if phi < -PI / 4.0 {
+        phi += 2.0 * PI;
+    }
+    let (a, b) = if phi < PI / 4.0 {
+        (r, r * phi / (PI / 4.0))
+    } else if phi < 3.0 * PI / 4.0 {
+        (-r * (phi - PI / 2.0) / (PI / 4.0), r)
+    } else if phi < 5.0 * PI / 4.0 {
+        (-r, -r * (phi - PI) / (PI / 4.0))
+    } else {
+        (r * (phi - 3.0 * PI / 2.0) / (PI / 4.0), -r)
+    };
+    (Vec2::new(a, b) + Vec2::ONE) * 0.5
+}
+
+/// Uniform direction on the upper hemisphere (`z ≥ 0`).
+#[inline]
+pub fn uniform_hemisphere(u: Vec2) -> Vec3A {
+    let z = u.x;
+    let r = (1.0 - z * z).max(0.0).sqrt();
+    let phi = 2.0 * PI * u.y;
+    Vec3A::new(r * phi.cos(), r * phi.sin(), z)
+}
+
+/// Density of [`uniform_hemisphere`]: `1/(2π)` per steradian.
+#[inline]
+pub fn uniform_hemisphere_pdf() -> f32 {
+    INV_2PI
+}
+
+/// Inverse of [`uniform_hemisphere`].
+#[inline]
+pub fn uniform_hemisphere_inverse(w: Vec3A) -> Vec2 {
+    Vec2::new(w.z, phi_fraction(w))
+}
+
+/// Cosine-weighted direction on the upper hemisphere (Malley's method: a
+/// uniform disk point lifted onto the hemisphere). Its pdf `cos θ/π` cancels
+/// the cosine of the rendering equation and the `1/π` of a Lambertian BRDF.
+#[inline]
+pub fn cosine_hemisphere(u: Vec2) -> Vec3A {
+    let d = concentric_disk(u);
+    let z = (1.0 - d.length_squared()).max(0.0).sqrt();
+    Vec3A::new(d.x, d.y, z)
+}
+
+/// Density of [`cosine_hemisphere`]: `cos θ / π` per steradian (0 below the surface).
+#[inline]
+pub fn cosine_hemisphere_pdf(cos_theta: f32) -> f32 {
+    cos_theta.max(0.0) * INV_PI
+}
+
+/// Inverse of [`cosine_hemisphere`].
+#[inline]
+pub fn cosine_hemisphere_inverse(w: Vec3A) -> Vec2 {
+    concentric_disk_inverse(Vec2::new(w.x, w.y))
+}
+
+/// Uniform direction on the unit sphere.
+#[inline]
+pub fn uniform_sphere(u: Vec2) -> Vec3A {
+    let z = 1.0 - 2.0 * u.x;
+    let r = (1.0 - z * z).max(0.0).sqrt();
+    let phi = 2.0 * PI * u.y;
+    Vec3A::new(r * phi.cos(), r * phi.sin(), z)
+}
+
+/// Density of [`uniform_sphere`]: `1/(4π)` per steradian.
+#[inline]
+pub fn uniform_sphere_pdf() -> f32 {
+    INV_4PI
+}
+
+/// Inverse of [`uniform_sphere`].
+#[inline]
+pub fn uniform_sphere_inverse(w: Vec3A) -> Vec2 {
+    Vec2::new((1.0 - w.z) * 0.5, phi_fraction(w))
+}
+
+/// Uniform direction inside the cone of half-angle θ_max around `+z`
+/// (`cos_theta_max` = cos θ_max). Used to sample the solid angle a sphere
+/// subtends.
+#[inline]
+pub fn uniform_cone(u: Vec2, cos_theta_max: f32) -> Vec3A {
+    let z = 1.0 - u.x * (1.0 - cos_theta_max);
+    let r = (1.0 - z * z).max(0.0).sqrt();
+    let phi = 2.0 * PI * u.y;
+    Vec3A::new(r * phi.cos(), r * phi.sin(), z)
+}
+
+/// Density of [`uniform_cone`]: one over the cone's solid angle `2π(1 − cos θ_max)`.
+#[inline]
+pub fn uniform_cone_pdf(cos_theta_max: f32) -> f32 {
+    1.0 / (2.0 * PI * (1.0 - cos_theta_max))
+}
+
+/// Inverse of [`uniform_cone`].
+#[inline]
+pub fn uniform_cone_inverse(w: Vec3A, cos_theta_max: f32) -> Vec2 {
+    Vec2::new((1.0 - w.z) / (1.0 - cos_theta_max), phi_fraction(w))
+}
+
+/// Uniform point on a triangle, as barycentric coordinates `(b0, b1)` of its
+/// first two vertices (the third is `1 − b0 − b1`). Uses the square-root-free
+/// map of Heitz, "A Low-Distortion Map Between Triangle and Square" (2019).
+/// Its density is `1 / area` of the triangle.
+#[inline]
+pub fn uniform_triangle(u: Vec2) -> Vec2 {
+    let (b0, b1);
+    if u.x < u.y {
+        b0 = u.x / 2.0;
+        b1 = u.y - b0;
+    } else {
+        b1 = u.y / 2.0;
+        b0 = u.x - b1;
+    }
+    Vec2::new(b0, b1)
+}
+
+/// Inverse of [`uniform_triangle`].
+#[inline]
+pub fn uniform_triangle_inverse(b: Vec2) -> Vec2 {
+    // In the first case b1 > b0 (since u.y - u.x/2 > u.x/2).
+    if b.y > b.x {
+        let ux = 2.0 * b.x;
+        Vec2::new(ux, b.y + b.x)
+    } else {
+        let uy = 2.0 * b.y;
+        Vec2::new(b.x + b.y, uy)
+    }
+}
+
+/// `φ / 2π` of a direction, in `[0, 1)`.
+#[inline]
+fn phi_fraction(w: Vec3A) -> f32 {
+    let phi = w.y.atan2(w.x);
+    let f = if phi < 0.0 { phi + 2.0 * PI } else { phi } * INV_2PI;
+    if f >= 1.0 { 0.0 } else { f }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sampling::Sampler;
+
+    fn grid(n: usize) -> impl Iterator<Item = Vec2> {
+        (0..n * n).map(move |i| {
+            Vec2::new(
+                ((i % n) as f32 + 0.37) / n as f32,
+                ((i / n) as f32 + 0.61) / n as f32,
+            )
+        })
+    }
+
+    #[test]
+    fn directions_are_unit_and_in_their_domain() {
+        for u in grid(33) {
+            for (w, lower) in [
+                (uniform_hemisphere(u), 0.0),
+                (cosine_hemisphere(u), 0.0),
+                (uniform_sphere(u), -1.0),
+                (uniform_cone(u, 0.8), 0.8 - 1e-6),
+            ] {
+                assert!((w.length() - 1.0).abs() < 1e-5, "{w} from {u}");
+                assert!(w.z >= lower, "{w} below {lower}");
+            }
+            assert!(concentric_disk(u).length() <= 1.0 + 1e-6);
+            let b = uniform_triangle(u);
+            assert!(b.x >= 0.0 && b.y >= 0.0 && b.x + b.y <= 1.0 + 1e-6);
+        }
+    }
+
+    #[test]
+    fn inverses_round_trip() {
+        for u in grid(17) {
+            let close =
+                |a: Vec2, what: &str| assert!((a - u).length() < 2e-4, "{what}: {u} -> {a}");
+            close(concentric_disk_inverse(concentric_disk(u)), "disk");
+            close(
+                cosine_hemisphere_inverse(cosine_hemisphere(u)),
+                "cosine hemisphere",
+            );
+            close(
+                uniform_hemisphere_inverse(uniform_hemisphere(u)),
+                "uniform hemisphere",
+            );
+            close(uniform_sphere_inverse(uniform_sphere(u)), "sphere");
+            close(uniform_cone_inverse(uniform_cone(u, 0.3), 0.3), "cone");
+            close(uniform_triangle_inverse(uniform_triangle(u)), "triangle");
+        }
+    }
+
+    /// Each warp's pdf must integrate its own samples correctly: the Monte Carlo
+    /// estimate of the integral of `g(w) = 1 + w.x + 2 w.z²` by `g(w)/pdf(w)`
+    /// must match a reference computed in closed form. With 2^18 samples the
+    /// relative standard error is below 0.3%; the tolerance is 1.5% (> 5σ).
+    #[test]
+    fn pdfs_are_consistent_with_the_samples() {
+        let g = |w: Vec3A| 1.0 + w.x + 2.0 * w.z * w.z;
+        // Closed forms: over the hemisphere ∫1 = 2π, ∫x = 0, ∫z² = 2π/3;
+        // over the sphere ∫1 = 4π, ∫z² = 4π/3; over the cone of cos θmax = c:
+        // ∫1 = 2π(1−c), ∫z² = 2π(1−c³)/3.
+        let c = 0.3f32;
+        type Warp = fn(Vec2) -> Vec3A;
+        let cases: [(&str, Warp, f32); 3] = [
+            (
+                "uniform hemisphere",
+                uniform_hemisphere,
+                2.0 * PI + 4.0 * PI / 3.0,
+            ),
+            (
+                "cosine hemisphere",
+                cosine_hemisphere,
+                2.0 * PI + 4.0 * PI / 3.0,
+            ),
+            ("uniform sphere", uniform_sphere, 4.0 * PI + 8.0 * PI / 3.0),
+        ];
+        let n = 1 << 18;
+        for (name, warp, exact) in cases {
+            let mut sum = 0.0f64;
+            for i in 0..n {
+                let mut s = Sampler::new(3, i, 0);
+                let w = warp(s.next_2d());
+                let pdf = match name {
+                    "uniform hemisphere" => uniform_hemisphere_pdf(),
+                    "cosine hemisphere" => cosine_hemisphere_pdf(w.z),
+                    _ => uniform_sphere_pdf(),
+                };
+                if pdf > 0.0 {
+                    sum += (g(w) / pdf) as f64;
+                }
+            }
+            let est = sum / n as f64;
+            assert!(
+                ((est - exact as f64) / exact as f64).abs() < 0.015,
+                "{name}: {est} vs {exact}"
+            );
+        }
+        let exact = 2.0 * PI * (1.0 - c) + 4.0 * PI * (1.0 - c * c * c) / 3.0;
+        let mut sum = 0.0f64;
+        for i in 0..n {
+            let w = uniform_cone(Sampler::new(4, i, 0).next_2d(), c);
+            sum += (g(w) / uniform_cone_pdf(c)) as f64;
+        }
+        let est = sum / n as f64;
+        assert!(
+            ((est - exact as f64) / exact as f64).abs() < 0.015,
+            "cone: {est} vs {exact}"
+        );
+    }
+}
