@@ -19,7 +19,7 @@ pub mod area;
 pub mod environment;
 pub mod point;
 
-use crate::math::{Color, Ray, Vec3A};
+use crate::math::{Color, INV_4PI, Ray, Vec2, Vec3A};
 
 pub use area::{AreaLight, AreaShape};
 pub use environment::{EnvironmentLight, EnvironmentMap};
@@ -70,4 +70,114 @@ pub enum Light {
     Area(AreaLight),
     Point(PointLight),
     Environment(EnvironmentLight),
+}
+
+impl Light {
+    /// Next event estimation: samples a point (direction) on the light as
+    /// seen from the receiving point `p`. `None` if the light sends nothing
+    /// to `p` (behind a one-sided light) or the sample is degenerate.
+    ///
+    /// - quad, sphere seen from inside: uniform by area, `p_ω = r²/(|cos θ_y| A)`;
+    /// - sphere seen from outside: uniform in the subtended cone,
+    ///   `p_ω = 1/(2π(1 − cos θ_max))`;
+    /// - point: `L_i = I/r²`, `p_ω = 1`, `is_delta`;
+    /// - environment: uniform sphere (constant) or by the map's brightness,
+    ///   `dist = ∞`.
+    #[inline]
+    pub fn sample_li(&self, p: Vec3A, u: Vec2) -> Option<LightSample> {
+        match self {
+            Light::Area(l) => l.sample_li(p, u),
+            Light::Point(l) => l.sample_li(p),
+            Light::Environment(l) => l.sample_li(p, u),
+        }
+    }
+
+    /// The solid-angle density `sample_li(p, ·)` has for the direction `wi`
+    /// that left `p` and hit the light at `p_light` with normal `n_light`
+    /// (the environment ignores both; a point light returns 0: no direction
+    /// hits it).
+    #[inline]
+    pub fn pdf_li(&self, p: Vec3A, p_light: Vec3A, n_light: Vec3A, wi: Vec3A) -> f32 {
+        match self {
+            Light::Area(l) => l.pdf_li(p, p_light, n_light, wi),
+            Light::Point(_) => 0.0,
+            Light::Environment(l) => l.pdf_li(wi),
+        }
+    }
+
+    /// `L_e` leaving an area light's surface point with normal `n_light` in
+    /// direction `w` (pointing away from the light, towards the viewer).
+    /// Zero for a point light (no ray hits it) and for the environment (use
+    /// [`Light::environment_radiance`] for escaping rays).
+    #[inline]
+    pub fn le(&self, n_light: Vec3A, w: Vec3A) -> Color {
+        match self {
+            Light::Area(l) => l.le(n_light, w),
+            Light::Point(_) | Light::Environment(_) => Color::ZERO,
+        }
+    }
+
+    /// Radiance a ray escaping with direction `d` sees from this light: the
+    /// environment's [`EnvironmentLight::environment_radiance`], zero for
+    /// the others.
+    #[inline]
+    pub fn environment_radiance(&self, d: Vec3A) -> Color {
+        match self {
+            Light::Environment(l) => l.environment_radiance(d),
+            _ => Color::ZERO,
+        }
+    }
+
+    /// Emits a ray (the first vertex of a light path), with its position
+    /// density per unit area and direction density per unit solid angle:
+    /// - area: uniform point (`1/A`), cosine-weighted direction on the
+    ///   emitting side (`cos θ/π`, halved and either side if two-sided);
+    /// - point: `p_A = 1`, uniform direction `1/(4π)`;
+    /// - environment: direction as in `sample_li`, origin on a disk of the
+    ///   scene's bounding radius `r` (`1/(π r²)`) beyond the scene.
+    #[inline]
+    pub fn sample_le(&self, u_pos: Vec2, u_dir: Vec2) -> Option<Emission> {
+        match self {
+            Light::Area(l) => l.sample_le(u_pos, u_dir),
+            Light::Point(l) => Some(l.sample_le(u_dir)),
+            Light::Environment(l) => l.sample_le(u_pos, u_dir),
+        }
+    }
+
+    /// `(p_A, p_ω)` with which `sample_le` emits from `p` (normal `n`) in
+    /// direction `w` (direction of travel). Point light: `(1, 1/(4π))`;
+    /// environment: `p` and `n` are ignored.
+    #[inline]
+    pub fn pdf_le(&self, p: Vec3A, n: Vec3A, w: Vec3A) -> (f32, f32) {
+        match self {
+            Light::Area(l) => l.pdf_le(p, n, w),
+            Light::Point(_) => (1.0, INV_4PI),
+            Light::Environment(l) => l.pdf_le(w),
+        }
+    }
+
+    /// Emitted flux `Φ` (W): `π A L` per emitting side of an area light,
+    /// `4π I` for a point light, `π r² ∫ L dω` for the environment (the flux
+    /// through the scene's bounding disk; depends on the scene bounds).
+    /// Used to choose lights in proportion to their power.
+    #[inline]
+    pub fn power(&self) -> Color {
+        match self {
+            Light::Area(l) => l.power(),
+            Light::Point(l) => l.power(),
+            Light::Environment(l) => l.power(),
+        }
+    }
+
+    /// Whether the light is a delta in position (a point light).
+    #[inline]
+    pub fn is_delta(&self) -> bool {
+        matches!(self, Light::Point(_))
+    }
+
+    /// Whether the light lies at infinity (rays that escape see it).
+    #[inline]
+    pub fn is_environment(&self) -> bool {
+        matches!(self, Light::Environment(_))
+    }
 }
