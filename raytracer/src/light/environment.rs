@@ -153,6 +153,11 @@ impl EnvironmentLight {
             None => (None, Color::splat(4.0 * PI)),
             Some(m) => {
                 let (w, h) = (m.width as usize, m.height as usize);
+                assert!(
+                    w > 0 && h > 0 && m.pixels.len() == w * h,
+                    "environment map of {w} × {h} pixels holds {} values",
+                    m.pixels.len()
+                );
                 let mut weights = Vec::with_capacity(w * h);
                 let mut integral = Color::ZERO;
                 for j in 0..h {
