@@ -359,16 +359,17 @@ where
     }
 }
 
+const PROGRESS_TEMPLATE: &str =
+    "{prefix} {wide_bar} {percent:>3}% {human_pos}/{human_len} samples, {per_sec:0}, ETA {eta}";
+
 /// A progress bar counting samples, with rate and ETA; hidden unless
 /// requested and stderr is a terminal.
 fn progress_bar(options: &RenderOptions, samples: u64) -> ProgressBar {
     if !options.progress || !std::io::stderr().is_terminal() {
         return ProgressBar::hidden();
     }
-    let style = ProgressStyle::with_template(
-        "{prefix} {wide_bar} {percent:>3}% {human_pos}/{human_len} samples, {per_sec}, ETA {eta}",
-    )
-    .unwrap_or_else(|_| ProgressStyle::default_bar());
+    let style = ProgressStyle::with_template(PROGRESS_TEMPLATE)
+        .unwrap_or_else(|_| ProgressStyle::default_bar());
     ProgressBar::with_draw_target(Some(samples), ProgressDrawTarget::stderr())
         .with_style(style)
         .with_prefix(options.label.clone())
@@ -669,6 +670,24 @@ mod tests {
         assert!(!r.stats.interrupted);
         let r = render_pixels_with_stop(3, 3, &options(0, 1, 0), &stop, |_, _, _| Color::ONE);
         assert_eq!(r.film.image(), crate::film::Image::new(3, 3));
+    }
+
+    #[test]
+    fn progress_and_summary_text() {
+        assert!(ProgressStyle::with_template(PROGRESS_TEMPLATE).is_ok());
+        let stats = RenderStats {
+            elapsed: Duration::from_millis(1500),
+            samples: 3_000_000,
+            interrupted: true,
+            nonfinite: 2,
+        };
+        assert_eq!(stats.samples_per_second(), 2e6);
+        let line = summary(&options(16, 2, 16), 640, 480, 2, &stats);
+        assert_eq!(
+            line,
+            "test: 640×480, 16 spp, 3.00M samples in 1.50 s (2.00M samples/s, 2 threads), \
+             INTERRUPTED, 2 NaN/inf/negative values dropped"
+        );
     }
 
     const CHILD: &str = "RAYTRACER_RENDER_INTERRUPT_CHILD";

@@ -125,6 +125,11 @@ struct SplatSums {
     sum_sq: [f64; 3],
 }
 
+const NO_SPLATS: SplatSums = SplatSums {
+    sum: [0.0; 3],
+    sum_sq: [0.0; 3],
+};
+
 /// The accumulation buffer of a `width × height` image.
 ///
 /// Two films compare equal if every sum is bit for bit the same (the
@@ -136,6 +141,7 @@ pub struct Film {
     width: u32,
     height: u32,
     pixels: Vec<PixelSums>,
+    /// Empty until the first splat arrives (most integrators never splat).
     splats: Vec<SplatSums>,
     total_samples: u64,
     nonfinite: u64,
@@ -149,7 +155,7 @@ impl Film {
             width,
             height,
             pixels: vec![PixelSums::default(); n],
-            splats: vec![SplatSums::default(); n],
+            splats: Vec::new(),
             total_samples: 0,
             nonfinite: 0,
         }
@@ -216,6 +222,9 @@ impl Film {
 
     #[inline]
     fn add_splat_at(&mut self, i: usize, value: Color) {
+        if self.splats.is_empty() {
+            self.splats = vec![SplatSums::default(); self.pixels.len()];
+        }
         let s = &mut self.splats[i];
         add_moments(&mut s.sum, &mut s.sum_sq, value);
     }
@@ -284,7 +293,7 @@ impl Film {
         let pixels = self
             .pixels
             .iter()
-            .zip(&self.splats)
+            .zip(self.splats.iter().chain(std::iter::repeat(&NO_SPLATS)))
             .map(|(p, s)| {
                 let n = p.count.max(1) as f64;
                 let v: [f64; 3] = std::array::from_fn(|c| p.sum[c] / n + scale * s.sum[c]);
@@ -314,7 +323,7 @@ impl Film {
         let pixels = self
             .pixels
             .iter()
-            .zip(&self.splats)
+            .zip(self.splats.iter().chain(std::iter::repeat(&NO_SPLATS)))
             .map(|(p, s)| {
                 if p.count < 2 {
                     return Color::splat(f32::INFINITY);
