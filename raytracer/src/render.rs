@@ -1,1 +1,761 @@
-//! The render loop.
+//! The render loop: many pixel samples, in parallel, reproducible bit for bit.
+//!
+//! A pixel's value is the Monte Carlo estimate `(1/N) Σ_k X_k` of the lecture;
+//! this loop draws the samples `X_k` by calling the integrator's sample
+//! function for every pixel `N = spp` times and gathers them on a [`Film`].
+//!
+//! **Determinism.** The random numbers of sample `k` of pixel `(x, y)` come
+//! from `Sampler::new(seed, y·width + x, k)`, whichever thread computes it.
+//! The work is cut into *units*: a tile of `tile_size²` pixels times a *pass*
+//! of [`SAMPLES_PER_PASS`] samples, numbered pass by pass and, within a pass,
+//! tile by tile in raster order. Each unit gathers its samples and splats in a
+//! private [`FilmTile`], and the tiles are merged into the film strictly in
+//! unit order (a small reorder buffer holds units that finished early). So
+//! every floating-point addition into the film happens in the same order on 1
+//! or 64 threads, and the image is identical to the last bit for the same
+//! seed, spp and tile size.
+//!
+//! Passes make the image converge evenly: an interrupted render is a
+//! complete image with fewer samples, not a half-finished one.
+//!
+//! **Interruption.** [`install_interrupt_handler`] makes Ctrl-C set a global
+//! flag (a second Ctrl-C quits). The loop checks it before every pixel sample,
+//! stops, and keeps every sample already computed: pixels may then hold
+//! different sample counts, each pixel's mean is still right, and
+//! `stats.interrupted` is set.
+
+use crate::film::{Film, FilmTile, Splat};
+use crate::math::{Color, UVec2};
+use crate::sampling::Sampler;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use std::collections::VecDeque;
+use std::io::IsTerminal;
+use std::ops::Range;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::{Mutex, Once};
+use std::time::{Duration, Instant};
+
+/// The number of samples per pixel in one pass over the image. Part of the
+/// determinism contract: the grouping of the floating-point sums depends on it.
+pub const SAMPLES_PER_PASS: u32 = 16;
+
+/// How to render.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RenderOptions {
+    /// Samples per pixel.
+    pub spp: u32,
+    /// The seed of every random number.
+    pub seed: u64,
+    /// Worker threads; `None` uses rayon's global pool (all cores).
+    pub threads: Option<usize>,
+    /// Tile edge in pixels (part of the determinism contract, like the seed).
+    pub tile_size: u32,
+    /// Show a progress bar (only if stderr is a terminal) and print a summary.
+    pub progress: bool,
+    /// A name for the progress bar and the summary.
+    pub label: String,
+}
+
+impl Default for RenderOptions {
+    fn default() -> Self {
+        RenderOptions {
+            spp: 16,
+            seed: 0,
+            threads: None,
+            tile_size: 16,
+            progress: true,
+            label: String::from("render"),
+        }
+    }
+}
+
+/// What a render cost.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RenderStats {
+    /// Wall-clock time of the loop.
+    pub elapsed: Duration,
+    /// Pixel samples computed (all of them stored on the film).
+    pub samples: u64,
+    /// True if the loop stopped before computing every sample.
+    pub interrupted: bool,
+    /// Samples and splats rejected as NaN, infinite or negative.
+    pub nonfinite: u64,
+}
+
+impl RenderStats {
+    /// Pixel samples per second of wall-clock time (0 if no time elapsed).
+    pub fn samples_per_second(&self) -> f64 {
+        let t = self.elapsed.as_secs_f64();
+        if t > 0.0 {
+            self.samples as f64 / t
+        } else {
+            0.0
+        }
+    }
+}
+
+/// The film and the statistics of a finished (or interrupted) render.
+#[derive(Clone, Debug)]
+pub struct RenderResult {
+    pub film: Film,
+    pub stats: RenderStats,
+}
+
+static INTERRUPTED: AtomicBool = AtomicBool::new(false);
+static HANDLER: Once = Once::new();
+
+/// Makes Ctrl-C request a clean stop of the running render (see
+/// [`interrupted`]); a second Ctrl-C exits the process with status 130.
+/// Calling it again does nothing. If the handler cannot be installed (another
+/// one exists), a warning is printed and Ctrl-C keeps its default effect.
+pub fn install_interrupt_handler() {
+    HANDLER.call_once(|| {
+        let installed = ctrlc::set_handler(|| {
+            if INTERRUPTED.swap(true, Ordering::SeqCst) {
+                eprintln!("\ninterrupted twice: exiting");
+                std::process::exit(130);
+            }
+            eprintln!("\ninterrupted: keeping the samples computed so far (Ctrl-C again to quit)");
+        });
+        if let Err(e) = installed {
+            eprintln!("warning: cannot install the Ctrl-C handler: {e}");
+        }
+    });
+}
+
+/// True once Ctrl-C (or [`request_interrupt`]) asked renders to stop.
+pub fn interrupted() -> bool {
+    INTERRUPTED.load(Ordering::SeqCst)
+}
+
+/// Clears the interrupt flag (e.g. to go on with the next image of a batch).
+pub fn reset_interrupt() {
+    INTERRUPTED.store(false, Ordering::SeqCst);
+}
+
+/// Sets the interrupt flag as Ctrl-C would (for tests and front-ends).
+pub fn request_interrupt() {
+    INTERRUPTED.store(true, Ordering::SeqCst);
+}
+
+/// Renders a `width × height` image with `options.spp` samples per pixel:
+/// `sample(pixel, sampler, splats)` returns one radiance estimate of `pixel`
+/// and may push splats (contributions to other pixels, normalized by the film
+/// as pbrt's `1/spp`, see [`crate::film`]). Stops early on Ctrl-C once
+/// [`install_interrupt_handler`] was called, or after [`request_interrupt`].
+pub fn render_pixels<F>(width: u32, height: u32, options: &RenderOptions, sample: F) -> RenderResult
+where
+    F: Fn(UVec2, &mut Sampler, &mut Vec<Splat>) -> Color + Sync,
+{
+    render_pixels_with_stop(width, height, options, &INTERRUPTED, sample)
+}
+
+/// [`render_pixels`] that watches its own stop flag instead of the global
+/// interrupt flag (a cancel button, or a test that must not disturb others).
+pub fn render_pixels_with_stop<F>(
+    width: u32,
+    height: u32,
+    options: &RenderOptions,
+    stop: &AtomicBool,
+    sample: F,
+) -> RenderResult
+where
+    F: Fn(UVec2, &mut Sampler, &mut Vec<Splat>) -> Color + Sync,
+{
+    let start = Instant::now();
+    let layout = Layout::new(width, height, options.tile_size, options.spp);
+    let expected = width as u64 * height as u64 * options.spp as u64;
+    let bar = progress_bar(options, expected);
+    let job = Job {
+        layout,
+        seed: options.seed,
+        sample: &sample,
+        stop,
+        next_unit: AtomicUsize::new(0),
+        merger: Mutex::new(Merger {
+            film: Film::new(width, height),
+            next: 0,
+            pending: VecDeque::new(),
+            spare: Vec::new(),
+        }),
+        bar: &bar,
+    };
+    let run = || {
+        let workers = rayon::current_num_threads().min(job.layout.units).max(1);
+        rayon::scope(|s| {
+            for _ in 0..workers {
+                s.spawn(|_| job.work());
+            }
+        });
+    };
+    let mut threads = rayon::current_num_threads();
+    match options.threads {
+        None => run(),
+        Some(n) => match rayon::ThreadPoolBuilder::new()
+            .num_threads(n.max(1))
+            .thread_name(|i| format!("render-{i}"))
+            .build()
+        {
+            Ok(pool) => {
+                threads = n.max(1);
+                pool.install(run)
+            }
+            Err(e) => {
+                eprintln!("warning: cannot start {n} render threads ({e}); using the global pool");
+                run()
+            }
+        },
+    }
+    let merger = job.merger.into_inner().expect("a render worker panicked");
+    debug_assert!(merger.pending.iter().all(Option::is_none));
+    let film = merger.film;
+    let stats = RenderStats {
+        elapsed: start.elapsed(),
+        samples: film.total_samples(),
+        interrupted: film.total_samples() < expected,
+        nonfinite: film.nonfinite_count(),
+    };
+    bar.finish_and_clear();
+    if options.progress {
+        eprintln!("{}", summary(options, width, height, threads, &stats));
+    }
+    RenderResult { film, stats }
+}
+
+/// How the image is cut into units of work (see the module doc).
+struct Layout {
+    width: u32,
+    height: u32,
+    tile: u32,
+    tiles_x: u32,
+    tiles: usize,
+    spp: u32,
+    units: usize,
+}
+
+impl Layout {
+    fn new(width: u32, height: u32, tile_size: u32, spp: u32) -> Self {
+        let tile = tile_size.max(1);
+        let tiles_x = width.div_ceil(tile);
+        let tiles = tiles_x as usize * height.div_ceil(tile) as usize;
+        let passes = spp.div_ceil(SAMPLES_PER_PASS) as usize;
+        Layout {
+            width,
+            height,
+            tile,
+            tiles_x,
+            tiles,
+            spp,
+            units: tiles * passes,
+        }
+    }
+
+    /// Unit `u`: the tile's origin and size, and the range of sample indices.
+    fn unit(&self, u: usize) -> (UVec2, UVec2, Range<u32>) {
+        let (pass, tile) = ((u / self.tiles) as u32, (u % self.tiles) as u32);
+        let origin = UVec2::new(tile % self.tiles_x, tile / self.tiles_x) * self.tile;
+        let size = UVec2::splat(self.tile).min(UVec2::new(self.width, self.height) - origin);
+        let first = pass * SAMPLES_PER_PASS;
+        (
+            origin,
+            size,
+            first..(first + SAMPLES_PER_PASS).min(self.spp),
+        )
+    }
+}
+
+/// Merges finished tiles into the film in unit order.
+struct Merger {
+    film: Film,
+    /// The next unit to merge.
+    next: usize,
+    /// Finished units `next, next+1, …` (`None`: not finished yet).
+    pending: VecDeque<Option<FilmTile>>,
+    /// Merged tiles, kept for reuse.
+    spare: Vec<FilmTile>,
+}
+
+impl Merger {
+    /// Takes finished unit `u`, merges every unit that is now next in line,
+    /// and hands back an empty tile for the worker's next unit.
+    fn submit(&mut self, u: usize, tile: FilmTile) -> FilmTile {
+        let slot = u - self.next;
+        if self.pending.len() <= slot {
+            self.pending.resize_with(slot + 1, || None);
+        }
+        self.pending[slot] = Some(tile);
+        while let Some(Some(_)) = self.pending.front() {
+            let tile = self.pending.pop_front().flatten().expect("checked above");
+            self.film.merge_tile(&tile);
+            self.spare.push(tile);
+            self.next += 1;
+        }
+        self.spare.pop().unwrap_or_else(|| self.new_tile())
+    }
+
+    fn new_tile(&self) -> FilmTile {
+        let size = UVec2::new(self.film.width(), self.film.height());
+        FilmTile::new(size, UVec2::ZERO, UVec2::ZERO)
+    }
+}
+
+/// Everything the workers share.
+struct Job<'a, F> {
+    layout: Layout,
+    seed: u64,
+    sample: &'a F,
+    stop: &'a AtomicBool,
+    next_unit: AtomicUsize,
+    merger: Mutex<Merger>,
+    bar: &'a ProgressBar,
+}
+
+impl<F> Job<'_, F>
+where
+    F: Fn(UVec2, &mut Sampler, &mut Vec<Splat>) -> Color + Sync,
+{
+    /// One worker: takes units in increasing order until none is left or a
+    /// stop is requested. Units are handed out in order, so the reorder buffer
+    /// stays about as small as the number of workers.
+    fn work(&self) {
+        let lock = || self.merger.lock().expect("a render worker panicked");
+        let mut tile = {
+            let mut m = lock();
+            m.spare.pop().unwrap_or_else(|| m.new_tile())
+        };
+        while !self.stop.load(Ordering::Relaxed) {
+            let u = self.next_unit.fetch_add(1, Ordering::Relaxed);
+            if u >= self.layout.units {
+                break;
+            }
+            // Once taken, a unit is always submitted (maybe partly done), so
+            // the units merged are exactly 0..(last taken).
+            let done = self.render_unit(u, &mut tile);
+            self.bar.inc(done);
+            tile = lock().submit(u, tile);
+        }
+    }
+
+    /// Computes unit `u` into `tile`; returns the number of samples taken.
+    fn render_unit(&self, u: usize, tile: &mut FilmTile) -> u64 {
+        let (origin, size, samples) = self.layout.unit(u);
+        tile.reset(origin, size);
+        let mut done = 0;
+        for y in origin.y..origin.y + size.y {
+            for x in origin.x..origin.x + size.x {
+                let pixel = UVec2::new(x, y);
+                let index = y as u64 * self.layout.width as u64 + x as u64;
+                for k in samples.clone() {
+                    if self.stop.load(Ordering::Relaxed) {
+                        return done;
+                    }
+                    let mut sampler = Sampler::new(self.seed, index, k as u64);
+                    tile.record(pixel, |splats| (self.sample)(pixel, &mut sampler, splats));
+                    done += 1;
+                }
+            }
+        }
+        done
+    }
+}
+
+const PROGRESS_TEMPLATE: &str =
+    "{prefix} {wide_bar} {percent:>3}% {human_pos}/{human_len} samples, {per_sec:0}, ETA {eta}";
+
+/// A progress bar counting samples, with rate and ETA; hidden unless
+/// requested and stderr is a terminal.
+fn progress_bar(options: &RenderOptions, samples: u64) -> ProgressBar {
+    if !options.progress || !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let style = ProgressStyle::with_template(PROGRESS_TEMPLATE)
+        .unwrap_or_else(|_| ProgressStyle::default_bar());
+    ProgressBar::with_draw_target(Some(samples), ProgressDrawTarget::stderr())
+        .with_style(style)
+        .with_prefix(options.label.clone())
+}
+
+/// One line: what was rendered, how fast, and anything unusual.
+fn summary(options: &RenderOptions, w: u32, h: u32, threads: usize, s: &RenderStats) -> String {
+    let mut line = format!(
+        "{}: {w}×{h}, {} spp, {} samples in {:.2} s ({} samples/s, {threads} threads)",
+        options.label,
+        options.spp,
+        human(s.samples as f64),
+        s.elapsed.as_secs_f64(),
+        human(s.samples_per_second()),
+    );
+    if s.interrupted {
+        line += ", INTERRUPTED";
+    }
+    if s.nonfinite > 0 {
+        line += &format!(", {} NaN/inf/negative values dropped", s.nonfinite);
+    }
+    line
+}
+
+/// `1234567` → `"1.23M"`.
+fn human(x: f64) -> String {
+    match x {
+        x if x >= 1e9 => format!("{:.2}G", x / 1e9),
+        x if x >= 1e6 => format!("{:.2}M", x / 1e6),
+        x if x >= 1e3 => format!("{:.1}k", x / 1e3),
+        x => format!("{x:.0}"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::Vec2;
+    use std::sync::atomic::AtomicU64;
+
+    fn options(spp: u32, threads: usize, tile_size: u32) -> RenderOptions {
+        RenderOptions {
+            spp,
+            seed: 17,
+            threads: Some(threads),
+            tile_size,
+            progress: false,
+            label: String::from("test"),
+        }
+    }
+
+    /// A toy integrator: many random numbers, a value from them, up to three
+    /// splats at random positions (some off the film, some in the same
+    /// pixel), now and then an invalid value. The left tiles cost 50 times
+    /// more than the others, so that units finish out of order.
+    fn toy(pixel: UVec2, s: &mut Sampler, splats: &mut Vec<Splat>) -> Color {
+        let mut acc = 0.0;
+        for _ in 0..if pixel.x < 8 { 2000 } else { 40 } {
+            acc += s.next_1d();
+        }
+        let n = (s.next_1d() * 4.0) as usize;
+        for _ in 0..n {
+            let raster = s.next_2d() * Vec2::new(25.0, 19.0) - Vec2::ONE;
+            let v = s.next_1d();
+            splats.push(Splat {
+                raster,
+                value: Color::new(v, v * v, 1.0 / (v + 1e-3)),
+            });
+        }
+        if s.next_1d() < 0.01 {
+            return Color::splat(f32::NAN);
+        }
+        Color::new(acc, s.next_1d(), pixel.x as f32 * s.next_1d())
+    }
+
+    fn bits(img: &crate::film::Image) -> Vec<u32> {
+        img.pixels
+            .iter()
+            .flat_map(|c| c.to_array().map(f32::to_bits))
+            .collect()
+    }
+
+    #[test]
+    fn same_image_on_any_number_of_threads() {
+        // 23×17 is not a multiple of the tile; 20 spp is a full and a partial pass.
+        let runs: Vec<_> = [1, 2, 3]
+            .iter()
+            .map(|&t| {
+                render_pixels_with_stop(23, 17, &options(20, t, 8), &AtomicBool::new(false), toy)
+            })
+            .collect();
+        for r in &runs {
+            assert!(!r.stats.interrupted);
+            assert_eq!(r.stats.samples, 23 * 17 * 20);
+            assert_eq!(r.stats.nonfinite, runs[0].stats.nonfinite);
+            assert!(r.film == runs[0].film, "the films' sums differ");
+            assert_eq!(bits(&r.film.image()), bits(&runs[0].film.image()));
+            assert_eq!(
+                bits(&r.film.variance_image()),
+                bits(&runs[0].film.variance_image())
+            );
+        }
+        assert!(runs[0].stats.nonfinite > 0);
+        // The test could not fail if the seed were ignored: another seed differs.
+        let other = RenderOptions {
+            seed: 18,
+            ..options(20, 2, 8)
+        };
+        let r = render_pixels_with_stop(23, 17, &other, &AtomicBool::new(false), toy);
+        assert_ne!(bits(&r.film.image()), bits(&runs[0].film.image()));
+    }
+
+    /// Pixel `(x, y)`, sample `k` uses `Sampler::new(seed, y·width + x, k)`.
+    #[test]
+    fn random_numbers_have_the_documented_address() {
+        let (w, h, spp) = (5, 3, 7);
+        let r = render_pixels_with_stop(
+            w,
+            h,
+            &options(spp, 2, 2),
+            &AtomicBool::new(false),
+            |_, s, _| Color::splat(s.next_1d()),
+        );
+        for y in 0..h {
+            for x in 0..w {
+                let mean: f64 = (0..spp as u64)
+                    .map(|k| Sampler::new(17, (y * w + x) as u64, k).next_1d() as f64)
+                    .sum::<f64>()
+                    / spp as f64;
+                assert!((r.film.image().get(x, y).x as f64 - mean).abs() < 1e-6);
+            }
+        }
+    }
+
+    /// `X = (u1, u2, u3)` uniform: every pixel mean is 1/2 and the variance
+    /// of the mean is (1/12)/N. 192 pixel-channels at 6 standard errors: a
+    /// false failure has probability < 192 · 2e-9 < 1e-6. The average
+    /// estimated variance has a relative standard error of about 0.4%
+    /// (kurtosis of the uniform), checked to 3%. The scatter of the means
+    /// across pixels must match the predicted variance: a chi-square with
+    /// 191 degrees of freedom, whose ratio lies in [0.45, 1.6] with
+    /// probability > 1 − 1e-6.
+    #[test]
+    fn mean_and_variance_of_a_uniform_variable() {
+        let n = 256;
+        let r = render_pixels_with_stop(
+            8,
+            8,
+            &options(n, 2, 4),
+            &AtomicBool::new(false),
+            |_, s, _| Color::new(s.next_1d(), s.next_1d(), s.next_1d()),
+        );
+        let predicted = 1.0 / 12.0 / n as f64;
+        let (img, var) = (r.film.image(), r.film.variance_image());
+        let (mut sum_var, mut scatter) = (0.0, 0.0);
+        for (m, v) in img.pixels.iter().zip(&var.pixels) {
+            for c in 0..3 {
+                let d = m[c] as f64 - 0.5;
+                assert!(d.abs() < 6.0 * predicted.sqrt(), "mean {}", m[c]);
+                sum_var += v[c] as f64;
+                scatter += d * d;
+            }
+        }
+        let avg_var = sum_var / 192.0;
+        assert!(
+            (avg_var / predicted - 1.0).abs() < 0.03,
+            "{avg_var} vs {predicted}"
+        );
+        let ratio = scatter / 192.0 / predicted;
+        assert!((0.45..1.6).contains(&ratio), "scatter ratio {ratio}");
+    }
+
+    #[test]
+    fn splats_are_normalized_per_sample_on_the_film() {
+        // Every sample splats (1, 2, 3) into pixel (1, 2): 4·3·5 = 60 splats,
+        // scaled by W·H/M = 12/60, give W·H·(1, 2, 3) = (12, 24, 36).
+        let r = render_pixels_with_stop(
+            4,
+            3,
+            &options(5, 2, 2),
+            &AtomicBool::new(false),
+            |_, _, splats| {
+                splats.push(Splat {
+                    raster: Vec2::new(1.5, 2.5),
+                    value: Color::new(1.0, 2.0, 3.0),
+                });
+                Color::ZERO
+            },
+        );
+        let img = r.film.image();
+        assert_eq!(img.get(1, 2), Color::new(12.0, 24.0, 36.0));
+        let others: f32 = img.pixels.iter().map(|c| c.element_sum()).sum();
+        assert_eq!(others, 72.0);
+        // Every path brings the same value: no variance.
+        assert!(r.film.variance_image().get(1, 2).max_element() < 1e-9);
+    }
+
+    /// Paths splat 1 into pixel (0, 0) with probability 1/2: the pixel is
+    /// `(W·H/M) Σ Y` with mean W·H/2 = 8 and variance (W·H)²/(4M) = 64/M.
+    /// The estimated variance is within 5% of that (its relative standard
+    /// error is about 1/√M ≈ 1.1%: a 4.5-sigma margin, false failure < 1e-5),
+    /// and the estimate within 6 standard deviations of 8.
+    #[test]
+    fn splat_variance_matches_a_bernoulli_path() {
+        let (w, h, spp) = (4, 4, 512);
+        let r = render_pixels_with_stop(
+            w,
+            h,
+            &options(spp, 2, 4),
+            &AtomicBool::new(false),
+            |_, s, splats| {
+                if s.next_1d() < 0.5 {
+                    splats.push(Splat {
+                        raster: Vec2::new(0.25, 0.75),
+                        value: Color::ONE,
+                    });
+                }
+                Color::ZERO
+            },
+        );
+        let m = (w * h * spp) as f64;
+        let predicted = 64.0 / m;
+        let var = r.film.variance_image().get(0, 0).x as f64;
+        assert!((var / predicted - 1.0).abs() < 0.05, "{var} vs {predicted}");
+        let value = r.film.image().get(0, 0).x as f64;
+        assert!((value - 8.0).abs() < 6.0 * predicted.sqrt(), "{value}");
+        assert_eq!(r.film.variance_image().get(1, 0), Color::ZERO);
+    }
+
+    #[test]
+    fn invalid_values_are_counted_and_kept_out() {
+        let r = render_pixels_with_stop(
+            6,
+            5,
+            &options(8, 2, 4),
+            &AtomicBool::new(false),
+            |p, s, splats| {
+                let k = s.next_1d();
+                splats.push(Splat {
+                    raster: p.as_vec2(),
+                    value: Color::new(f32::INFINITY, 0.0, 0.0),
+                });
+                if p.x == 2 {
+                    // Every value of pixel column 2 is NaN or negative.
+                    return if k < 0.5 {
+                        Color::splat(f32::NAN)
+                    } else {
+                        Color::splat(-1.0)
+                    };
+                }
+                Color::ONE
+            },
+        );
+        // One invalid splat per sample, plus every sample of column 2.
+        assert_eq!(r.stats.nonfinite, 6 * 5 * 8 + 5 * 8);
+        let img = r.film.image();
+        assert!(img.pixels.iter().all(|c| c.is_finite()));
+        assert_eq!(img.get(2, 3), Color::ZERO);
+        assert_eq!(img.get(3, 3), Color::ONE);
+        assert_eq!(r.film.sample_count(UVec2::new(2, 3)), 8);
+    }
+
+    /// The closure raises the stop flag after 1000 samples: the render stops,
+    /// keeps exactly the samples computed, and each pixel's mean is right.
+    #[test]
+    fn interruption_keeps_every_computed_sample() {
+        let stop = AtomicBool::new(false);
+        let calls = AtomicU64::new(0);
+        let r = render_pixels_with_stop(40, 30, &options(64, 2, 8), &stop, |_, _, _| {
+            if calls.fetch_add(1, Ordering::Relaxed) + 1 == 1000 {
+                stop.store(true, Ordering::Relaxed);
+            }
+            Color::new(1.0, 2.0, 3.0)
+        });
+        let calls = calls.load(Ordering::Relaxed);
+        assert!(r.stats.interrupted);
+        assert!((1000..40 * 30 * 64).contains(&calls));
+        assert_eq!(r.stats.samples, calls);
+        assert_eq!(r.film.total_samples(), calls);
+        let img = r.film.image();
+        for y in 0..30 {
+            for x in 0..40 {
+                let expected = if r.film.sample_count(UVec2::new(x, y)) > 0 {
+                    Color::new(1.0, 2.0, 3.0)
+                } else {
+                    Color::ZERO
+                };
+                assert_eq!(img.get(x, y), expected);
+            }
+        }
+    }
+
+    #[test]
+    fn empty_renders_are_fine() {
+        let stop = AtomicBool::new(false);
+        let r = render_pixels_with_stop(0, 7, &options(4, 2, 4), &stop, |_, _, _| Color::ONE);
+        assert_eq!(r.stats.samples, 0);
+        assert!(!r.stats.interrupted);
+        let r = render_pixels_with_stop(3, 3, &options(0, 1, 0), &stop, |_, _, _| Color::ONE);
+        assert_eq!(r.film.image(), crate::film::Image::new(3, 3));
+    }
+
+    #[test]
+    fn progress_and_summary_text() {
+        assert!(ProgressStyle::with_template(PROGRESS_TEMPLATE).is_ok());
+        let stats = RenderStats {
+            elapsed: Duration::from_millis(1500),
+            samples: 3_000_000,
+            interrupted: true,
+            nonfinite: 2,
+        };
+        assert_eq!(stats.samples_per_second(), 2e6);
+        let line = summary(&options(16, 2, 16), 640, 480, 2, &stats);
+        assert_eq!(
+            line,
+            "test: 640×480, 16 spp, 3.00M samples in 1.50 s (2.00M samples/s, 2 threads), \
+             INTERRUPTED, 2 NaN/inf/negative values dropped"
+        );
+    }
+
+    const CHILD: &str = "RAYTRACER_RENDER_INTERRUPT_CHILD";
+
+    /// The global flag is shared by every render in the process, so the test
+    /// of [`request_interrupt`] runs in a child process (this test binary,
+    /// running only `global_interrupt_child`) where it disturbs no one.
+    #[test]
+    fn global_interrupt_in_a_child_process() {
+        let exe = std::env::current_exe().expect("test binary path");
+        let out = std::process::Command::new(exe)
+            .args([
+                "--exact",
+                "render::tests::global_interrupt_child",
+                "--ignored",
+                "--test-threads=1",
+            ])
+            .env(CHILD, "1")
+            .output()
+            .expect("cannot run the test binary");
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success(),
+            "{text}\n{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(text.contains("1 passed"), "{text}");
+    }
+
+    #[test]
+    #[ignore = "run by global_interrupt_in_a_child_process"]
+    fn global_interrupt_child() {
+        if std::env::var_os(CHILD).is_none() {
+            return;
+        }
+        install_interrupt_handler();
+        install_interrupt_handler();
+        reset_interrupt();
+        assert!(!interrupted());
+        let calls = AtomicU64::new(0);
+        let r = render_pixels(16, 16, &options(64, 2, 8), |_, _, _| {
+            if calls.fetch_add(1, Ordering::Relaxed) == 500 {
+                request_interrupt();
+            }
+            Color::ONE
+        });
+        assert!(r.stats.interrupted && interrupted());
+        assert_eq!(r.stats.samples, calls.load(Ordering::Relaxed));
+        assert!(r.stats.samples < 16 * 16 * 64);
+        reset_interrupt();
+        let r = render_pixels(4, 4, &options(4, 1, 8), |_, _, _| Color::ONE);
+        assert!(!r.stats.interrupted && r.stats.samples == 64);
+    }
+
+    /// The cost of the loop itself: a closure that does almost nothing.
+    /// `cargo test --release -p raytracer --lib render::tests::loop_overhead -- --ignored --nocapture`
+    #[test]
+    #[ignore = "a measurement, not a test"]
+    fn loop_overhead() {
+        for threads in [1, 2] {
+            let opts = options(256, threads, 16);
+            let r = render_pixels_with_stop(512, 512, &opts, &AtomicBool::new(false), |_, s, _| {
+                Color::splat(s.next_1d())
+            });
+            println!(
+                "{threads} thread(s): {:.1} M samples/s",
+                r.stats.samples_per_second() / 1e6
+            );
+        }
+    }
+}
