@@ -106,14 +106,22 @@ mod tests {
 
     #[test]
     fn refraction_obeys_snell() {
-        for &(z, eta) in &[(0.9f32, 1.5f32), (0.2, 1.5), (-0.95, 1.0 / 1.5), (0.5, 1.33)] {
+        for &(z, eta) in &[
+            (0.9f32, 1.5f32),
+            (0.2, 1.5),
+            (-0.95, 1.0 / 1.5),
+            (0.5, 1.33),
+        ] {
             let w = Vec3A::new(0.6, -0.8, 0.0) * (1.0 - z * z).sqrt() + Vec3A::new(0.0, 0.0, z);
             let t = refract(w, eta).unwrap();
             assert!((t.length() - 1.0).abs() < 1e-5);
             assert!(t.z * w.z < 0.0, "the refracted ray crosses the surface");
             let sin_i = (w.x * w.x + w.y * w.y).sqrt();
             let sin_t = (t.x * t.x + t.y * t.y).sqrt();
-            assert!((sin_i - eta * sin_t).abs() < 1e-5, "η_i sin θ_i = η_t sin θ_t");
+            assert!(
+                (sin_i - eta * sin_t).abs() < 1e-5,
+                "η_i sin θ_i = η_t sin θ_t"
+            );
             // In the plane of w and the normal, on the other side of the normal.
             assert!((w.x * t.y - w.y * t.x).abs() < 1e-6);
             assert!(w.x * t.x + w.y * t.y <= 0.0);

@@ -140,7 +140,10 @@ mod tests {
             let t = g.sample(wo, 0.999_999, TransportMode::Importance).unwrap();
             assert!(r.wi.z * wo.z > 0.0 && t.wi.z * wo.z < 0.0);
             let sum = r.f * r.wi.z.abs() + t.f * t.wi.z.abs();
-            assert!((sum - g.tint).abs().max_element() < 1e-5, "θ {theta}: {sum}");
+            assert!(
+                (sum - g.tint).abs().max_element() < 1e-5,
+                "θ {theta}: {sum}"
+            );
             for s in [r, t] {
                 assert!((s.f * s.wi.z.abs() / s.pdf_w - g.tint).abs().max_element() < 1e-5);
                 assert!(s.is_delta);
@@ -195,6 +198,15 @@ mod tests {
         assert_eq!(b.eval(wo, s.wi, Vec2::ZERO), Color::ZERO);
         assert_eq!(b.pdf(wo, s.wi, Vec2::ZERO), 0.0);
         assert!(b.is_delta());
-        assert!(b.sample(Vec3A::X, Vec2::ZERO, 0.5, Vec2::ZERO, TransportMode::Radiance).is_none());
+        assert!(
+            b.sample(
+                Vec3A::X,
+                Vec2::ZERO,
+                0.5,
+                Vec2::ZERO,
+                TransportMode::Radiance
+            )
+            .is_none()
+        );
     }
 }

@@ -78,8 +78,15 @@ mod tests {
         let (wo, wi) = (dir(30.0), dir(70.0));
         let flip = |w: Vec3A| Vec3A::new(w.x, w.y, -w.z);
         assert!((b.eval(wo, wi, Vec2::ZERO) - Color::splat(0.5 * INV_PI)).length() < 1e-7);
-        assert_eq!(b.eval(wo, wi, Vec2::ZERO), b.eval(flip(wo), flip(wi), Vec2::ZERO));
-        assert_eq!(b.eval(wo, flip(wi), Vec2::ZERO), Color::ZERO, "no transmission");
+        assert_eq!(
+            b.eval(wo, wi, Vec2::ZERO),
+            b.eval(flip(wo), flip(wi), Vec2::ZERO)
+        );
+        assert_eq!(
+            b.eval(wo, flip(wi), Vec2::ZERO),
+            Color::ZERO,
+            "no transmission"
+        );
         assert_eq!(b.pdf(wo, flip(wi), Vec2::ZERO), 0.0);
     }
 

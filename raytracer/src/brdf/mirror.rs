@@ -49,7 +49,13 @@ mod tests {
             Vec3A::Z,
         ] {
             let s = m
-                .sample(wo, Vec2::ZERO, 0.3, Vec2::new(0.1, 0.2), TransportMode::Radiance)
+                .sample(
+                    wo,
+                    Vec2::ZERO,
+                    0.3,
+                    Vec2::new(0.1, 0.2),
+                    TransportMode::Radiance,
+                )
                 .unwrap();
             let n = Vec3A::new(0.0, 0.0, wo.z.signum());
             assert!((s.wi - reflect(wo, n)).length() < 1e-6, "{wo} -> {}", s.wi);
@@ -62,8 +68,14 @@ mod tests {
         assert!(m.is_delta());
         // Grazing: no reflection can be formed.
         assert!(
-            m.sample(Vec3A::X, Vec2::ZERO, 0.3, Vec2::ZERO, TransportMode::Radiance)
-                .is_none()
+            m.sample(
+                Vec3A::X,
+                Vec2::ZERO,
+                0.3,
+                Vec2::ZERO,
+                TransportMode::Radiance
+            )
+            .is_none()
         );
     }
 

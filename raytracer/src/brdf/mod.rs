@@ -16,6 +16,12 @@
 //!   above (the frame is mirrored), so meshes with any winding look right.
 //!   Glass distinguishes the sides: the normal points out of the glass.
 //!
+//! Both the two-sidedness and the dropping of useless samples (zero pdf, zero
+//! or non-finite value, a reflected direction on the wrong side) happen in one
+//! place, the `match` of [`Brdf`]; the models only ever see `ω_o` in the upper
+//! hemisphere (glass excepted). Files: one per model, [`fresnel`] for the
+//! Fresnel equations and Snell's law, [`texture`] for spatially varying albedo.
+//!
 //! Delta lobes (mirror, glass) follow pbrt's convention: the sample's `f` is
 //! already divided by `|cos θ_i|` and its pdf is the probability of choosing
 //! the lobe, so the usual estimator `f · |cos θ_i| / pdf` gives the right
@@ -33,11 +39,11 @@ pub mod texture;
 
 use crate::math::{Color, Vec2, Vec3A};
 
+pub use fresnel::fresnel_dielectric;
 pub use glass::Glass;
 pub use lambert::Lambert;
 pub use mirror::Mirror;
 pub use phong::Phong;
-pub use fresnel::fresnel_dielectric;
 pub use texture::{ImageTexture, Texture, srgb_to_linear};
 
 /// Which quantity a path carries: radiance from the camera's side (path
@@ -172,7 +178,11 @@ fn two_sided<T>(wo: Vec3A, wi: Vec3A, zero: T, f: impl FnOnce(Vec3A, Vec3A) -> T
     } else {
         (wo, wi)
     };
-    if wo.z > 0.0 && wi.z > 0.0 { f(wo, wi) } else { zero }
+    if wo.z > 0.0 && wi.z > 0.0 {
+        f(wo, wi)
+    } else {
+        zero
+    }
 }
 
 /// Two-sidedness of the reflective models, for `sample`: the model samples

@@ -42,6 +42,7 @@ pub fn zoomed(axis: Vec3A, cos_min: f32, seed: u64) -> Chi2Test {
 /// Chi-square test of `Brdf::sample` against `Brdf::pdf` for a fixed `wo`.
 pub fn chi2_brdf(b: &Brdf, wo: Vec3A, settings: Chi2Test) -> Result<Chi2Report, String> {
     let what = format!("{b:?} at wo {wo}: ");
+    let start = std::time::Instant::now();
     let r = settings.run(
         |u, u_lobe| {
             b.sample(wo, Vec2::ZERO, u_lobe, u, TransportMode::Radiance)
@@ -50,7 +51,7 @@ pub fn chi2_brdf(b: &Brdf, wo: Vec3A, settings: Chi2Test) -> Result<Chi2Report, 
         |wi| b.pdf(wo, wi, Vec2::ZERO),
     );
     // Shown with `--nocapture`: the statistics behind the verdict.
-    eprintln!("{what}{r:?}");
+    eprintln!("{what}{r:?} in {:.2} s", start.elapsed().as_secs_f32());
     r
 }
 

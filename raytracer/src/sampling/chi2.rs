@@ -264,7 +264,8 @@ impl Chi2Test {
             for c in 0..cols {
                 let p0 = tau * c as f64 / cols as f64;
                 let p1 = tau * (c + 1) as f64 / cols as f64;
-                expected[r * cols + c] = n * integrate_cell(&pdf, &bad, &frame, [z0, z1, p0, p1], n);
+                expected[r * cols + c] =
+                    n * integrate_cell(&pdf, &bad, &frame, [z0, z1, p0, p1], n);
             }
         }
         if z_min > -1.0 {
@@ -482,13 +483,20 @@ fn goodness_of_fit(
 /// row (top row = `cos θ` near 1): `.` within 2σ, `+`/`-` within 4σ,
 /// `#`/`=` beyond (too many / too few samples).
 fn deviation_map(observed: &[u64], expected: &[f64], rows: usize, cols: usize) -> String {
-    let mut map = String::from("deviation map (rows: cos θ from 1 down; '#' too many, '=' too few):");
+    let mut map =
+        String::from("deviation map (rows: cos θ from 1 down; '#' too many, '=' too few):");
     for r in (0..rows).rev() {
         map.push_str("\n  ");
         for c in 0..cols {
             let k = r * cols + c;
             let (o, e) = (observed[k] as f64, expected[k]);
-            let z = if e > 0.0 { (o - e) / e.sqrt() } else if o > 0.0 { 99.0 } else { 0.0 };
+            let z = if e > 0.0 {
+                (o - e) / e.sqrt()
+            } else if o > 0.0 {
+                99.0
+            } else {
+                0.0
+            };
             map.push(match z {
                 z if z > 4.0 => '#',
                 z if z > 2.0 => '+',
@@ -515,7 +523,7 @@ pub fn chi2_frequencies(
         return Err("chi-square: as many probabilities as outcomes are needed".to_string());
     }
     let sum: f64 = probabilities.iter().sum();
-    if probabilities.iter().any(|p| !(*p >= 0.0)) || (sum - 1.0).abs() > 1e-6 {
+    if probabilities.iter().any(|p| p.is_nan() || *p < 0.0) || (sum - 1.0).abs() > 1e-6 {
         return Err(format!(
             "chi-square: probabilities {probabilities:?} are not a distribution"
         ));
@@ -598,12 +606,23 @@ mod tests {
         assert!((ln_gamma(10.0) - 362_880f64.ln()).abs() < 1e-10);
         assert!(ln_gamma(1.0).abs() < 1e-12 && ln_gamma(2.0).abs() < 1e-12);
         // 95% quantiles of the chi-square tables.
-        for &(x, k) in &[(3.841_459, 1), (18.307_038, 10), (124.342_113, 100), (43.772_972, 30)] {
+        for &(x, k) in &[
+            (3.841_459, 1),
+            (18.307_038, 10),
+            (124.342_113, 100),
+            (43.772_972, 30),
+        ] {
             let p = chi2_survival(x, k);
             assert!((p - 0.05).abs() < 1e-6, "k = {k}: {p}");
         }
         // Even k = 2m: P(χ² ≥ x) = e^{−x/2} Σ_{j<m} (x/2)^j / j! exactly.
-        for &(k, x) in &[(4usize, 2.0f64), (20, 15.0), (20, 40.0), (200, 180.0), (200, 250.0)] {
+        for &(k, x) in &[
+            (4usize, 2.0f64),
+            (20, 15.0),
+            (20, 40.0),
+            (200, 180.0),
+            (200, 250.0),
+        ] {
             let (mut term, mut sum) = (1.0f64, 0.0f64);
             for j in 0..k / 2 {
                 if j > 0 {
@@ -613,12 +632,18 @@ mod tests {
             }
             let exact = (-x / 2.0).exp() * sum;
             let p = chi2_survival(x, k);
-            assert!((p - exact).abs() < 1e-9 * exact.max(1e-3), "k {k}, x {x}: {p} vs {exact}");
+            assert!(
+                (p - exact).abs() < 1e-9 * exact.max(1e-3),
+                "k {k}, x {x}: {p} vs {exact}"
+            );
         }
         // Two degrees of freedom: an exponential, P(χ² ≥ x) = e^{−x/2}, on
         // both sides of the series / continued fraction switch at x/2 = a + 1.
         for x in [0.1f64, 1.0, 3.9, 4.1, 10.0, 60.0] {
-            assert!((chi2_survival(x, 2) - (-x / 2.0).exp()).abs() < 1e-12, "x = {x}");
+            assert!(
+                (chi2_survival(x, 2) - (-x / 2.0).exp()).abs() < 1e-12,
+                "x = {x}"
+            );
         }
         assert!((sidak(0.01, 1) - 0.01).abs() < 1e-15);
         assert!((1.0 - (1.0 - sidak(0.01, 20)).powi(20) - 0.01).abs() < 1e-12);
@@ -688,7 +713,13 @@ mod tests {
         let e = settings(7)
             .run(
                 |u, _| Some(warp::uniform_sphere(u)),
-                |w| if w.z > 0.0 { 2.0 * warp::uniform_sphere_pdf() } else { 0.0 },
+                |w| {
+                    if w.z > 0.0 {
+                        2.0 * warp::uniform_sphere_pdf()
+                    } else {
+                        0.0
+                    }
+                },
             )
             .unwrap_err();
         assert!(e.contains("pdf is zero"), "{e}");
