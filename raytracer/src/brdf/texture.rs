@@ -1,8 +1,13 @@
 //! Textures: a colour as a function of the surface's `(u, v)` coordinates.
+//!
+//! Lecture topic: "BRDF-и" — a spatially varying BRDF `f_r(x, ω_i → ω_o)`:
+//! the albedo of a Lambertian surface may change from point to point.
+//! All colours are linear RGB; PNG files store sRGB-encoded values, which are
+//! decoded on load with the exact sRGB transfer curve.
 
 use std::sync::Arc;
 
-use crate::math::Color;
+use crate::math::{Color, Vec2};
 
 /// A colour over the surface.
 #[derive(Clone, Debug)]
@@ -17,6 +22,23 @@ pub enum Texture {
     Image(Arc<ImageTexture>),
 }
 
+impl Texture {
+    /// The colour at `uv`. The checker square `(⌊u·scale⌋, ⌊v·scale⌋)` is `a`
+    /// when the sum of its indices is even (so the square at the origin,
+    /// `[0, 1/scale)²`, is `a`), `b` when odd.
+    #[inline]
+    pub fn eval(&self, uv: Vec2) -> Color {
+        match self {
+            Texture::Constant(c) => *c,
+            Texture::Checker { a, b, scale } => {
+                let i = (uv.x * scale).floor() as i64 + (uv.y * scale).floor() as i64;
+                if i.rem_euclid(2) == 0 { *a } else { *b }
+            }
+            Texture::Image(image) => image.eval(uv),
+        }
+    }
+}
+
 /// An RGB image in linear colour (sRGB PNGs are decoded to linear on load).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ImageTexture {
@@ -26,10 +48,155 @@ pub struct ImageTexture {
     pub pixels: Vec<Color>,
 }
 
+/// The sRGB electro-optical transfer function (IEC 61966-2-1): an encoded
+/// value `c ∈ [0, 1]` to linear, `c/12.92` for `c ≤ 0.04045`, else
+/// `((c + 0.055)/1.055)^2.4`. Not a pure gamma 2.2: the linear toe avoids an
+/// infinite slope at black.
+#[inline]
+pub fn srgb_to_linear(c: f32) -> f32 {
+    if c <= 0.040_45 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}
+
 impl ImageTexture {
+    /// An image from linear pixels, top row first; checks the size.
+    pub fn new(width: u32, height: u32, pixels: Vec<Color>) -> Result<ImageTexture, String> {
+        if width == 0 || height == 0 || pixels.len() != width as usize * height as usize {
+            return Err(format!(
+                "an image texture of {width}×{height} needs {} pixels, got {}",
+                width as usize * height as usize,
+                pixels.len()
+            ));
+        }
+        Ok(ImageTexture {
+            width,
+            height,
+            pixels,
+        })
+    }
+
     /// Loads a PNG, converting its sRGB values to linear RGB.
     pub fn load(path: &std::path::Path) -> Result<ImageTexture, String> {
-        let _ = path;
-        todo!("brdf helper")
+        let image = image::open(path)
+            .map_err(|e| format!("cannot load texture '{}': {e}", path.display()))?;
+        let rgb = image.to_rgb32f();
+        let (width, height) = rgb.dimensions();
+        let pixels = rgb
+            .pixels()
+            .map(|p| {
+                Color::new(
+                    srgb_to_linear(p.0[0]),
+                    srgb_to_linear(p.0[1]),
+                    srgb_to_linear(p.0[2]),
+                )
+            })
+            .collect();
+        ImageTexture::new(width, height, pixels)
+            .map_err(|e| format!("texture '{}': {e}", path.display()))
+    }
+
+    /// The pixel at column `x`, row `y` (wrapped around, so the texture tiles).
+    #[inline]
+    fn texel(&self, x: i64, y: i64) -> Color {
+        let x = x.rem_euclid(self.width as i64) as usize;
+        let y = y.rem_euclid(self.height as i64) as usize;
+        self.pixels
+            .get(y * self.width as usize + x)
+            .copied()
+            .unwrap_or(Color::ZERO)
+    }
+
+    /// Bilinear lookup with wrap-around. `u` runs left to right and `v`
+    /// bottom to top (the OBJ convention), so `v = 1` is the top row; pixel
+    /// centres sit at half-integer coordinates `(u·w, (1 − v)·h)`.
+    #[inline]
+    pub fn eval(&self, uv: Vec2) -> Color {
+        if self.width == 0 || self.height == 0 {
+            return Color::ZERO;
+        }
+        let x = uv.x * self.width as f32 - 0.5;
+        let y = (1.0 - uv.y) * self.height as f32 - 0.5;
+        if !(x.is_finite() && y.is_finite()) {
+            return Color::ZERO;
+        }
+        let (x0, y0) = (x.floor(), y.floor());
+        let (fx, fy) = (x - x0, y - y0);
+        let (x0, y0) = (x0 as i64, y0 as i64);
+        let top = self.texel(x0, y0).lerp(self.texel(x0 + 1, y0), fx);
+        let bottom = self.texel(x0, y0 + 1).lerp(self.texel(x0 + 1, y0 + 1), fx);
+        top.lerp(bottom, fy)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn checker_alternates() {
+        let (a, b) = (Color::new(1.0, 0.0, 0.0), Color::new(0.0, 0.0, 1.0));
+        let t = Texture::Checker { a, b, scale: 4.0 };
+        // Squares of size 1/4.
+        assert_eq!(t.eval(Vec2::new(0.1, 0.1)), a);
+        assert_eq!(t.eval(Vec2::new(0.3, 0.1)), b);
+        assert_eq!(t.eval(Vec2::new(0.3, 0.3)), a);
+        assert_eq!(t.eval(Vec2::new(0.1, 0.3)), b);
+        assert_eq!(t.eval(Vec2::new(0.6, 0.9)), b);
+        // Negative coordinates continue the pattern (no mirrored square at 0).
+        assert_eq!(t.eval(Vec2::new(-0.1, 0.1)), b);
+        assert_eq!(t.eval(Vec2::new(-0.1, -0.1)), a);
+        assert_eq!(Texture::Constant(a).eval(Vec2::new(7.0, -3.0)), a);
+    }
+
+    #[test]
+    fn srgb_decoding_is_exact() {
+        assert!((srgb_to_linear(0.5) - 0.214_041).abs() < 1e-5);
+        assert_eq!(srgb_to_linear(0.0), 0.0);
+        assert!((srgb_to_linear(1.0) - 1.0).abs() < 1e-6);
+        assert!((srgb_to_linear(0.04) - 0.04 / 12.92).abs() < 1e-9);
+        // Continuous at the junction of the two pieces.
+        assert!((srgb_to_linear(0.040_45) - srgb_to_linear(0.040_46)).abs() < 1e-5);
+    }
+
+    #[test]
+    fn image_lookup_is_bilinear_and_wraps() {
+        // 2×2: top row red, green; bottom row blue, white.
+        let px = vec![Color::X, Color::Y, Color::Z, Color::ONE];
+        let img = ImageTexture::new(2, 2, px).unwrap();
+        // Pixel centres: (u, v) = (0.25, 0.75) is the top-left pixel.
+        assert!((img.eval(Vec2::new(0.25, 0.75)) - Color::X).length() < 1e-6);
+        assert!((img.eval(Vec2::new(0.75, 0.25)) - Color::ONE).length() < 1e-6);
+        // Halfway between the two top pixels.
+        let mid = img.eval(Vec2::new(0.5, 0.75));
+        assert!((mid - Color::new(0.5, 0.5, 0.0)).length() < 1e-6);
+        // Wrap-around: u = 0 is halfway between the right and left columns.
+        let edge = img.eval(Vec2::new(0.0, 0.75));
+        assert!((edge - Color::new(0.5, 0.5, 0.0)).length() < 1e-6);
+        assert!((img.eval(Vec2::new(1.25, -0.25)) - Color::X).length() < 1e-6);
+        assert!(ImageTexture::new(2, 2, vec![Color::ONE; 3]).is_err());
+    }
+
+    #[test]
+    fn png_is_loaded_as_linear_and_errors_name_the_file() {
+        let dir = std::env::temp_dir().join(format!("brdf-texture-test-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("two.png");
+        // 2×1 sRGB: mid grey (128) and (255, 0, 64).
+        let data: Vec<u8> = vec![128, 128, 128, 255, 0, 64];
+        image::save_buffer(&path, &data, 2, 1, image::ColorType::Rgb8).unwrap();
+        let t = ImageTexture::load(&path).unwrap();
+        std::fs::remove_dir_all(&dir).ok();
+        assert_eq!((t.width, t.height), (2, 1));
+        let g = srgb_to_linear(128.0 / 255.0);
+        assert!((g - 0.2158).abs() < 1e-4);
+        assert!((t.pixels[0] - Color::splat(g)).length() < 1e-6);
+        assert!((t.pixels[1] - Color::new(1.0, 0.0, srgb_to_linear(64.0 / 255.0))).length() < 1e-6);
+
+        let missing = std::path::Path::new("/nonexistent/dir/albedo.png");
+        let err = ImageTexture::load(missing).unwrap_err();
+        assert!(err.contains("/nonexistent/dir/albedo.png"), "{err}");
     }
 }
