@@ -221,7 +221,7 @@ mod tests {
     /// Checks the error's place: the line and column of the first `needle`
     /// after `after` in `text`, and the field path.
     fn assert_at(e: &SceneError, text: &str, after: &str, needle: &str, path: &str) {
-        let from = text.find(after).expect("after") ;
+        let from = text.find(after).expect("after");
         let offset = from + text[from..].find(needle).expect("needle");
         let (line, column) = line_column(text, offset);
         assert_eq!(e.file, "test.toml");
@@ -235,7 +235,9 @@ mod tests {
             name: "test.toml".into(),
             dir: ".".into(),
         };
-        let text = format!("{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"red\"\n");
+        let text = format!(
+            "{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"red\"\n"
+        );
         let parts = load_str(&text, &origin).expect("valid");
         assert_eq!(parts.objects.len(), 1);
         assert_eq!(parts.brdf_names, ["white", "red"], "file order");
@@ -254,16 +256,23 @@ mod tests {
 
     #[test]
     fn unknown_field() {
-        let text = format!("{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradiuss = 1\nmaterial = \"red\"\n");
+        let text = format!(
+            "{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradiuss = 1\nmaterial = \"red\"\n"
+        );
         let e = load_err(&text);
         assert_at(&e, &text, "[[shapes]]", "radiuss", "shapes[0].radiuss");
         assert!(e.message.contains("unknown field `radiuss`"), "{e}");
-        assert!(e.message.contains("`radius`"), "lists the known fields: {e}");
+        assert!(
+            e.message.contains("`radius`"),
+            "lists the known fields: {e}"
+        );
     }
 
     #[test]
     fn wrong_type() {
-        let text = format!("{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = \"big\"\nmaterial = \"red\"\n");
+        let text = format!(
+            "{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = \"big\"\nmaterial = \"red\"\n"
+        );
         let e = load_err(&text);
         assert_at(&e, &text, "radius", "\"big\"", "shapes[0].radius");
         assert!(e.message.contains("expected a number"), "{e}");
@@ -276,7 +285,9 @@ mod tests {
 
     #[test]
     fn unknown_material_lists_the_known_ones() {
-        let text = format!("{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"whit\"\n");
+        let text = format!(
+            "{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"whit\"\n"
+        );
         let e = load_err(&text);
         assert_at(&e, &text, "[[shapes]]", "\"whit\"", "shapes[0].material");
         assert!(e.message.contains("unknown material `whit`"), "{e}");
@@ -290,7 +301,9 @@ mod tests {
 
     #[test]
     fn missing_mesh_file() {
-        let text = format!("{HEAD}[[shapes]]\ntype = \"mesh\"\nfile = \"bunny.obj\"\nmaterial = \"red\"\n");
+        let text = format!(
+            "{HEAD}[[shapes]]\ntype = \"mesh\"\nfile = \"bunny.obj\"\nmaterial = \"red\"\n"
+        );
         let e = load_err(&text);
         assert_at(&e, &text, "[[shapes]]", "\"bunny.obj\"", "shapes[0].file");
         assert!(e.message.contains("mesh file not found"), "{e}");
@@ -300,23 +313,32 @@ mod tests {
     #[test]
     fn zero_or_negative_sphere_radius() {
         for r in ["-1", "0"] {
-            let text = format!("{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = {r}\nmaterial = \"red\"\n");
+            let text = format!(
+                "{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = {r}\nmaterial = \"red\"\n"
+            );
             let e = load_err(&text);
             assert_at(&e, &text, "radius", r, "shapes[0].radius");
             assert_eq!(e.message, format!("must be positive, got {r}"));
-            assert!(e.to_string().ends_with(&format!("shapes[0].radius: must be positive, got {r}")));
+            assert!(
+                e.to_string()
+                    .ends_with(&format!("shapes[0].radius: must be positive, got {r}"))
+            );
         }
     }
 
     #[test]
     fn zero_area_light() {
-        let text = format!("{HEAD}[[shapes]]\ntype = \"quad\"\norigin = [0, 1, 0]\nedge1 = [1, 0, 0]\nedge2 = [-2, 0, 0]\nmaterial = \"white\"\nemission = 10\n");
+        let text = format!(
+            "{HEAD}[[shapes]]\ntype = \"quad\"\norigin = [0, 1, 0]\nedge1 = [1, 0, 0]\nedge2 = [-2, 0, 0]\nmaterial = \"white\"\nemission = 10\n"
+        );
         let e = load_err(&text);
         assert_at(&e, &text, "edge2", "[-2", "shapes[0].edge2");
         assert!(e.message.contains("no area"), "{e}");
 
         // A rectangle squashed flat by its scale.
-        let text = format!("{HEAD}[[shapes]]\ntype = \"rectangle\"\nscale = [1, 0, 1]\nmaterial = \"white\"\nemission = 10\n");
+        let text = format!(
+            "{HEAD}[[shapes]]\ntype = \"rectangle\"\nscale = [1, 0, 1]\nmaterial = \"white\"\nemission = 10\n"
+        );
         let e = load_err(&text);
         assert_at(&e, &text, "scale", "[1, 0", "shapes[0].scale");
     }
@@ -342,7 +364,9 @@ mod tests {
             assert_at(&e, &text, "", bad, "camera.fov");
             assert!(e.message.contains("finite"), "{e}");
         }
-        let text = format!("{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, nan, 0]\nradius = 1\nmaterial = \"red\"\n");
+        let text = format!(
+            "{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, nan, 0]\nradius = 1\nmaterial = \"red\"\n"
+        );
         let e = load_err(&text);
         assert_at(&e, &text, "center", "nan", "shapes[0].center[1]");
     }
@@ -361,7 +385,9 @@ mod tests {
 
     #[test]
     fn negative_radiance() {
-        let text = format!("{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"red\"\nemission = [1, -1, 1]\n");
+        let text = format!(
+            "{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"red\"\nemission = [1, -1, 1]\n"
+        );
         let e = load_err(&text);
         assert_at(&e, &text, "emission", "[1, -1", "shapes[0].emission");
         assert!(e.message.contains("must not be negative"), "{e}");
@@ -370,14 +396,17 @@ mod tests {
         let e = load_err(&text);
         assert_at(&e, &text, "[environment]", "-0.5", "environment.radiance");
 
-        let text = format!("{HEAD}[[lights]]\ntype = \"point\"\nposition = [0, 1, 0]\nintensity = [-1, 0, 0]\n");
+        let text = format!(
+            "{HEAD}[[lights]]\ntype = \"point\"\nposition = [0, 1, 0]\nintensity = [-1, 0, 0]\n"
+        );
         let e = load_err(&text);
         assert_at(&e, &text, "intensity", "[-1", "lights[0].intensity");
     }
 
     #[test]
     fn phong_exponent_below_zero() {
-        let text = format!("{HEAD}[materials.shiny]\ntype = \"phong\"\nalbedo = 0.5\nexponent = -2\n");
+        let text =
+            format!("{HEAD}[materials.shiny]\ntype = \"phong\"\nalbedo = 0.5\nexponent = -2\n");
         let e = load_err(&text);
         assert_at(&e, &text, "exponent", "-2", "materials.shiny.exponent");
         assert_eq!(e.message, "must be ≥ 0, got -2");
@@ -395,12 +424,16 @@ mod tests {
 
     #[test]
     fn fields_of_another_type_and_missing_fields() {
-        let text = format!("{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\nedge1 = [1, 0, 0]\nmaterial = \"red\"\n");
+        let text = format!(
+            "{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\nedge1 = [1, 0, 0]\nmaterial = \"red\"\n"
+        );
         let e = load_err(&text);
         assert_at(&e, &text, "edge1", "[1, 0, 0]", "shapes[0].edge1");
         assert_eq!(e.message, "`edge1` is not used by a sphere");
 
-        let text = format!("{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nmaterial = \"red\"\n");
+        let text = format!(
+            "{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nmaterial = \"red\"\n"
+        );
         let e = load_err(&text);
         assert_eq!(e.path, "shapes[0]");
         assert_eq!(e.message, "a sphere needs `radius`");
@@ -412,7 +445,10 @@ mod tests {
 
     #[test]
     fn albedo_above_one_breaks_energy_conservation() {
-        let text = HEAD.replace("albedo = 0.8", "albedo = { checker = { a = 0.5, b = 1.2, scale = 4 } }");
+        let text = HEAD.replace(
+            "albedo = 0.8",
+            "albedo = { checker = { a = 0.5, b = 1.2, scale = 4 } }",
+        );
         let e = load_err(&text);
         assert_at(&e, &text, "b = ", "1.2", "materials.white.albedo.checker.b");
         assert!(e.message.contains("energy conservation"), "{e}");

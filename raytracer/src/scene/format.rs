@@ -188,9 +188,7 @@ fn numbers<'de, A: SeqAccess<'de>, const N: usize>(mut seq: A) -> Result<[f32; N
         match seq.next_element::<Real>()? {
             Some(Real(x)) => *slot = x,
             None => {
-                return Err(de::Error::custom(format!(
-                    "expected {N} numbers, got {i}"
-                )));
+                return Err(de::Error::custom(format!("expected {N} numbers, got {i}")));
             }
         }
     }

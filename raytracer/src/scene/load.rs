@@ -6,6 +6,7 @@
 //! radii, quads with an area, a camera that does not look along its up
 //! vector, known material names, …) and builds the renderer's objects. Every
 //! failure is a [`SceneError`] pointing at the offending line and field.
+//! Shapes and their transforms are built in the submodule `shape`.
 
 use std::ops::Range;
 use std::path::{Path, PathBuf};
@@ -13,18 +14,19 @@ use std::sync::Arc;
 
 use toml::Spanned;
 
+mod shape;
+
 use super::builtin::BuiltinScene;
 use super::error::SceneError;
 use super::format::{
-    CameraDesc, ColorDesc, EnvironmentDesc, LightDesc, MaterialDesc, Real, RenderDesc,
-    SceneFile, ShapeDesc, TextureDesc, Vec3Desc,
+    CameraDesc, ColorDesc, EnvironmentDesc, LightDesc, MaterialDesc, Real, RenderDesc, SceneFile,
+    TextureDesc,
 };
-use super::{Emitter, RenderSettings, SceneObject, SceneParts};
+use super::{RenderSettings, SceneParts};
 use crate::brdf::{Brdf, Glass, ImageTexture, Lambert, Mirror, Phong, Texture};
 use crate::camera::CameraParams;
-use crate::geometry::{Mesh, Quad, Shape, Sphere, Transform};
 use crate::light::{EnvironmentLight, EnvironmentMap, Light, PointLight};
-use crate::math::{Color, Vec2, Vec3, Vec3A};
+use crate::math::{Color, Vec2, Vec3A};
 
 /// Where a scene text comes from: the name shown in errors and how the
 /// files it names (meshes, textures, maps) are found.
@@ -94,7 +96,7 @@ pub(crate) fn build(
     let mut brdfs = Vec::with_capacity(materials.len());
     for (name, desc) in materials {
         brdf_names.push(name.get_ref().clone());
-        brdfs.push(cx.material(desc)?);
+        brdfs.push(cx.material(name.get_ref(), desc)?);
     }
 
     let objects = file
@@ -107,7 +109,8 @@ pub(crate) fn build(
     let mut lights = file
         .lights
         .iter()
-        .map(|light| cx.light(light))
+        .enumerate()
+        .map(|(i, light)| cx.light(i, light))
         .collect::<Result<Vec<_>, _>>()?;
     if let Some(env) = &file.environment {
         lights.push(cx.environment(env)?);
@@ -195,7 +198,9 @@ impl Context<'_> {
         let c = desc.get_ref();
         let position = Vec3A::from(c.position.get_ref().0);
         let look_at = Vec3A::from(c.look_at.get_ref().0);
-        let up = c.up.as_ref().map_or(Vec3A::Y, |u| Vec3A::from(u.get_ref().0));
+        let up =
+            c.up.as_ref()
+                .map_or(Vec3A::Y, |u| Vec3A::from(u.get_ref().0));
         let up_span = c.up.as_ref().map_or(c.look_at.span(), |u| u.span());
         let forward = look_at - position;
         if forward.length() == 0.0 {
@@ -208,7 +213,7 @@ impl Context<'_> {
             return Err(self.error(up_span, "up must not be the zero vector"));
         }
         let sin = forward.normalize().cross(up.normalize()).length();
-        if !(sin > 1e-4) {
+        if sin.is_nan() || sin <= 1e-4 {
             return Err(self.error(
                 up_span,
                 "the camera looks along its up vector: choose an up that is not parallel \
@@ -244,9 +249,7 @@ impl Context<'_> {
     fn render(&self, r: &RenderDesc) -> Result<RenderSettings> {
         let mut s = RenderSettings::default();
         let at_least_one = |v: &Option<Spanned<u32>>, default: u32| match v {
-            Some(v) if *v.get_ref() == 0 => {
-                Err(self.error(v.span(), "must be at least 1, got 0"))
-            }
+            Some(v) if *v.get_ref() == 0 => Err(self.error(v.span(), "must be at least 1, got 0")),
             Some(v) => Ok(*v.get_ref()),
             None => Ok(default),
         };
@@ -278,21 +281,21 @@ impl Context<'_> {
     /// silently ignored otherwise).
     fn unused(&self, what: &str, fields: &[(&str, Option<Range<usize>>)]) -> Result<()> {
         match fields.iter().find(|(_, span)| span.is_some()) {
-            Some((field, Some(span))) => Err(self.error(
-                span.clone(),
-                format!("`{field}` is not used by {what}"),
-            )),
+            Some((field, Some(span))) => {
+                Err(self.error(span.clone(), format!("`{field}` is not used by {what}")))
+            }
             _ => Ok(()),
         }
     }
 
-    fn material(&self, desc: &Spanned<MaterialDesc>) -> Result<Brdf> {
+    fn material(&self, name: &str, desc: &Spanned<MaterialDesc>) -> Result<Brdf> {
         let m = desc.get_ref();
         let kind = m.kind.get_ref().as_str();
-        let required = |name: &str| {
-            self.error(
+        let required = |field: &str| {
+            self.error_in(
                 m.kind.span(),
-                format!("a {kind} material needs `{name}`"),
+                format!("materials.{name}"),
+                format!("a {kind} material needs `{field}`"),
             )
         };
         match kind {
@@ -407,230 +410,16 @@ impl Context<'_> {
         }
     }
 
-    /// Loads an OBJ mesh from disk or from the built-in scene's embedded files.
-    fn mesh_file(&self, file: &Spanned<String>) -> Result<Mesh> {
-        let loaded = match self.origin {
-            SceneOrigin::Builtin(scene) => {
-                let asset = scene
-                    .assets
-                    .iter()
-                    .find(|a| a.file == file.get_ref())
-                    .ok_or_else(|| {
-                        self.error(
-                            file.span(),
-                            format!(
-                                "mesh file not found: built-in scene `{}` has no file `{}`",
-                                scene.name,
-                                file.get_ref()
-                            ),
-                        )
-                    })?;
-                Mesh::from_obj_str(asset.text, asset.file)
-            }
-            SceneOrigin::Dir { .. } => Mesh::load_obj(&self.asset_path(file, "mesh")?),
-        };
-        let mesh = loaded.map_err(|e| self.error(file.span(), format!("bad mesh: {e}")))?;
-        if mesh.indices.is_empty() {
-            return Err(self.error(file.span(), "the mesh has no triangles"));
-        }
-        Ok(mesh)
-    }
-
-    /// `translate · R_n ⋯ R_1 · scale`: scale first, then the rotations in
-    /// the order listed, then the translation (Mitsuba's `to_world`).
-    fn transform(&self, s: &ShapeDesc) -> Result<Transform> {
-        let mut t = Transform::identity();
-        if let Some(scale) = &s.scale {
-            let v = scale.get_ref().0;
-            if v.abs().min_element() == 0.0 {
-                return Err(self.error(
-                    scale.span(),
-                    format!("scale must not be zero, got {v}"),
-                ));
-            }
-            t = Transform::scale(v);
-        }
-        if let Some(rotate) = &s.rotate {
-            for r in &rotate.get_ref().0 {
-                let axis = Vec3::new(r[0], r[1], r[2]);
-                if axis.length() == 0.0 {
-                    return Err(self.error(rotate.span(), "a rotation axis must not be zero"));
-                }
-                t = Transform::rotate(axis, r[3]) * t;
-            }
-        }
-        if let Some(translate) = &s.translate {
-            t = Transform::translate(translate.get_ref().0) * t;
-        }
-        Ok(t)
-    }
-
-    fn shape(&self, i: usize, desc: &Spanned<ShapeDesc>, names: &[String]) -> Result<SceneObject> {
-        let s = desc.get_ref();
-        let kind = s.kind.get_ref().as_str();
-        let here = format!("shapes[{i}]");
-        let required = |field: &str| {
-            self.error_in(
-                s.kind.span(),
-                here.clone(),
-                format!("a {kind} needs `{field}`"),
-            )
-        };
-        let placed = [
-            ("translate", span_of(&s.translate)),
-            ("rotate", span_of(&s.rotate)),
-            ("scale", span_of(&s.scale)),
-        ];
-        let sphere_fields = [
-            ("center", span_of(&s.center)),
-            ("radius", span_of(&s.radius)),
-        ];
-        let quad_fields = [
-            ("origin", span_of(&s.origin)),
-            ("edge1", span_of(&s.edge1)),
-            ("edge2", span_of(&s.edge2)),
-        ];
-        let file_field = [("file", span_of(&s.file))];
-        let what = format!("a {kind}");
-        let vec = |v: &Option<Spanned<Vec3Desc>>, name| -> Result<Vec3A> {
-            v.as_ref()
-                .map(|v| Vec3A::from(v.get_ref().0))
-                .ok_or_else(|| required(name))
-        };
-
-        // Type, material and emission first: they fail before any file is read.
-        const SHAPES: [&str; 5] = ["sphere", "quad", "rectangle", "cube", "mesh"];
-        if !SHAPES.contains(&kind) {
-            return Err(self.error(
-                s.kind.span(),
-                format!(
-                    "unknown shape type `{kind}`, expected one of: {}",
-                    SHAPES.join(", ")
-                ),
-            ));
-        }
-        let brdf = names
-            .iter()
-            .position(|n| n == s.material.get_ref())
-            .ok_or_else(|| {
-                let known = if names.is_empty() {
-                    "no materials are defined; add a [materials.NAME] table".to_string()
-                } else {
-                    format!("the materials are: {}", names.join(", "))
-                };
-                self.error(
-                    s.material.span(),
-                    format!("unknown material `{}`; {known}", s.material.get_ref()),
-                )
-            })?;
-
-        let emitter = self.emitter(s, kind)?;
-
-        let shape = match kind {
-            "sphere" => {
-                self.unused(&what, &[&quad_fields[..], &file_field, &placed].concat())?;
-                let radius = s.radius.as_ref().ok_or_else(|| required("radius"))?;
-                Shape::Sphere(Sphere {
-                    center: vec(&s.center, "center")?,
-                    radius: self.positive(radius)?,
-                })
-            }
-            "quad" => {
-                self.unused(&what, &[&sphere_fields[..], &file_field, &placed].concat())?;
-                let quad = Quad {
-                    origin: vec(&s.origin, "origin")?,
-                    e1: vec(&s.edge1, "edge1")?,
-                    e2: vec(&s.edge2, "edge2")?,
-                };
-                self.check_area(&quad, s.edge2.as_ref().map_or(s.kind.span(), |e| e.span()))?;
-                Shape::Quad(quad)
-            }
-            "rectangle" => {
-                self.unused(&what, &[&sphere_fields[..], &quad_fields, &file_field].concat())?;
-                // Mitsuba's rectangle: [-1, 1]² at z = 0, normal +z. Its
-                // corners (-1,-1), (1,-1), (-1,1) give origin, e1 and e2, so
-                // that e1 × e2 is the transformed +z (for a transform that
-                // keeps orientation).
-                let m = self.transform(s)?.matrix;
-                let p = |x: f32, y: f32| Vec3A::from(m.transform_point3(Vec3::new(x, y, 0.0)));
-                let origin = p(-1.0, -1.0);
-                let quad = Quad {
-                    origin,
-                    e1: p(1.0, -1.0) - origin,
-                    e2: p(-1.0, 1.0) - origin,
-                };
-                self.check_area(&quad, s.kind.span())?;
-                Shape::Quad(quad)
-            }
-            "cube" => {
-                self.unused(&what, &[&sphere_fields[..], &quad_fields, &file_field].concat())?;
-                Shape::Mesh(Arc::new(Mesh::cube().transformed(&self.transform(s)?)))
-            }
-            "mesh" => {
-                self.unused(&what, &[&sphere_fields[..], &quad_fields].concat())?;
-                let file = s.file.as_ref().ok_or_else(|| required("file"))?;
-                let transform = self.transform(s)?;
-                Shape::Mesh(Arc::new(self.mesh_file(file)?.transformed(&transform)))
-            }
-            _ => unreachable!("the shape type was checked above"),
-        };
-
-        Ok(SceneObject {
-            name: s.name.clone().unwrap_or_else(|| format!("{kind}#{i}")),
-            shape,
-            brdf: brdf as u32,
-            emitter,
-        })
-    }
-
-    /// A quad must have an area: `|e1 × e2| > 0`.
-    fn check_area(&self, quad: &Quad, span: Range<usize>) -> Result<()> {
-        let area = quad.e1.cross(quad.e2).length();
-        if area > 1e-6 * quad.e1.length() * quad.e2.length() && area > 0.0 {
-            Ok(())
-        } else {
-            Err(self.error(
-                span,
-                format!(
-                    "the quad has no area: its edges {} and {} are parallel or zero",
-                    quad.e1, quad.e2
-                ),
-            ))
-        }
-    }
-
-    fn emitter(&self, s: &ShapeDesc, kind: &str) -> Result<Option<Emitter>> {
-        let Some(emission) = &s.emission else {
-            if let Some(two) = &s.two_sided {
-                return Err(self.error(
-                    two.span(),
-                    "`two_sided` only applies to emitting shapes (add `emission`)",
-                ));
-            }
-            return Ok(None);
-        };
-        if !matches!(kind, "sphere" | "quad" | "rectangle") {
-            return Err(self.error(
-                emission.span(),
-                format!("a {kind} cannot emit; only spheres, quads and rectangles can"),
-            ));
-        }
-        let radiance = self.radiance(emission)?;
-        if radiance == Color::ZERO {
-            return Ok(None);
-        }
-        Ok(Some(Emitter {
-            radiance,
-            two_sided: s.two_sided.as_ref().is_some_and(|t| *t.get_ref()),
-        }))
-    }
-
-    fn light(&self, desc: &Spanned<LightDesc>) -> Result<Light> {
+    fn light(&self, i: usize, desc: &Spanned<LightDesc>) -> Result<Light> {
         let l = desc.get_ref();
         match l.kind.get_ref().as_str() {
             "point" => {
                 let required = |field: &str| {
-                    self.error(l.kind.span(), format!("a point light needs `{field}`"))
+                    self.error_in(
+                        l.kind.span(),
+                        format!("lights[{i}]"),
+                        format!("a point light needs `{field}`"),
+                    )
                 };
                 let position = l.position.as_ref().ok_or_else(|| required("position"))?;
                 let intensity = l.intensity.as_ref().ok_or_else(|| required("intensity"))?;
@@ -690,4 +479,142 @@ fn span_of<T>(field: &Option<Spanned<T>>) -> Option<Range<usize>> {
 
 fn fmt_color(c: Color) -> String {
     format!("[{}, {}, {}]", c.x, c.y, c.z)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Emitter;
+
+    fn origin() -> SceneOrigin {
+        SceneOrigin::Dir {
+            name: "test.toml".into(),
+            dir: ".".into(),
+        }
+    }
+
+    const CAMERA: &str = "[camera]\nposition = [0, 0, 5]\nlook_at = [0, 0, 1]\nfov = 40\n";
+
+    #[test]
+    fn defaults_fill_what_the_file_leaves_out() {
+        let parts = load_str(CAMERA, &origin()).unwrap();
+        let c = parts.camera;
+        assert_eq!(c.up, Vec3A::Y);
+        assert_eq!(c.aperture_radius, 0.0);
+        assert_eq!(c.focus_distance, 4.0, "distance to look_at");
+        assert_eq!(c.shift, Vec2::ZERO);
+        assert_eq!(parts.settings, RenderSettings::default());
+        assert!(parts.objects.is_empty() && parts.lights.is_empty());
+
+        let text = format!("{CAMERA}[render]\nmax_depth = -1\n");
+        assert_eq!(load_str(&text, &origin()).unwrap().settings.max_depth, None);
+        let text = format!(
+            "{CAMERA}aperture_radius = 0.1\nfocus_distance = 2\n\
+             [render]\nwidth = 40\nheight = 30\nspp = 7\nmax_depth = 8\nrr_depth = 3\nseed = 9\n"
+        );
+        let parts = load_str(&text, &origin()).unwrap();
+        assert_eq!(
+            parts.settings,
+            RenderSettings {
+                width: 40,
+                height: 30,
+                spp: 7,
+                max_depth: Some(8),
+                rr_depth: 3,
+                seed: 9
+            }
+        );
+        assert_eq!(parts.camera.aperture_radius, 0.1);
+        assert_eq!(parts.camera.focus_distance, 2.0);
+    }
+
+    #[test]
+    fn materials_lights_and_environment_are_built() {
+        let text = format!(
+            "{CAMERA}\
+             [materials.floor]\ntype = \"lambert\"\nalbedo = {{ checker = {{ a = 0.8, b = [0.1, 0.2, 0.3], scale = 4 }} }}\n\
+             [materials.shiny]\ntype = \"phong\"\nalbedo = [0.5, 0.4, 0.3]\nexponent = 100\n\
+             [materials.mirror]\ntype = \"mirror\"\n\
+             [materials.glass]\ntype = \"glass\"\ntint = 0.9\n\
+             [[shapes]]\nname = \"ball\"\ntype = \"sphere\"\ncenter = [1, 2, 3]\nradius = 0.5\nmaterial = \"glass\"\n\
+             [[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 9\nmaterial = \"floor\"\nemission = 0.5\ntwo_sided = true\n\
+             [[lights]]\ntype = \"point\"\nposition = [0, 4, 0]\nintensity = 30\n\
+             [environment]\nradiance = [0.1, 0.2, 0.3]\n"
+        );
+        let parts = load_str(&text, &origin()).unwrap();
+        assert_eq!(parts.brdf_names, ["floor", "shiny", "mirror", "glass"]);
+        match &parts.brdfs[0] {
+            Brdf::Lambert(Lambert {
+                albedo: Texture::Checker { a, b, scale },
+            }) => {
+                assert_eq!(*a, Color::splat(0.8));
+                assert_eq!(*b, Color::new(0.1, 0.2, 0.3));
+                assert_eq!(*scale, 4.0);
+            }
+            other => panic!("{other:?}"),
+        }
+        assert!(matches!(
+            parts.brdfs[1],
+            Brdf::Phong(Phong {
+                exponent: 100.0,
+                ..
+            })
+        ));
+        assert!(
+            matches!(parts.brdfs[2], Brdf::Mirror(Mirror { reflectance }) if reflectance == Color::ONE)
+        );
+        assert!(
+            matches!(parts.brdfs[3], Brdf::Glass(Glass { ior: 1.5, tint }) if tint == Color::splat(0.9))
+        );
+
+        assert_eq!(parts.objects[0].name, "ball");
+        assert_eq!(parts.objects[0].brdf, 3);
+        assert_eq!(parts.objects[0].emitter, None);
+        assert_eq!(parts.objects[1].name, "sphere#1");
+        assert_eq!(
+            parts.objects[1].emitter,
+            Some(Emitter {
+                radiance: Color::splat(0.5),
+                two_sided: true
+            })
+        );
+        assert!(matches!(
+            parts.lights[0],
+            Light::Point(PointLight { position, intensity })
+                if position == Vec3A::new(0.0, 4.0, 0.0) && intensity == Color::splat(30.0)
+        ));
+        match &parts.lights[1] {
+            Light::Environment(env) => {
+                assert_eq!(env.radiance, Color::new(0.1, 0.2, 0.3));
+                assert!(env.map.is_none());
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    /// The example of `raytracer/scenes/README.md` is a valid scene.
+    #[test]
+    fn the_readme_example_loads() {
+        let readme = include_str!("../../scenes/README.md");
+        let start = readme.find("```toml\n").expect("an example") + "```toml\n".len();
+        let example = &readme[start..start + readme[start..].find("```").unwrap()];
+        let parts = load_str(example, &origin()).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(parts.objects.len(), 3);
+        assert_eq!(parts.lights.len(), 1);
+        assert!(parts.objects[2].emitter.is_some());
+    }
+
+    #[test]
+    fn load_file_reads_from_disk_and_names_a_missing_file() {
+        let dir = std::env::temp_dir().join(format!("scenefmt-load-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("s.toml");
+        std::fs::write(&path, CAMERA).unwrap();
+        assert_eq!(load_file(&path).unwrap().camera.vfov_deg, 40.0);
+        let missing = dir.join("nope.toml");
+        let e = load_file(&missing).unwrap_err();
+        assert_eq!(e.file, missing.display().to_string());
+        assert!(e.message.starts_with("cannot read"), "{e}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 }
