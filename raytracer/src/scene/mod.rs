@@ -4,6 +4,15 @@
 //! (numerically identical to Mitsuba 3's, so an independent renderer can check
 //! ours), furnaces with known answers, a caustic, a room lit through a door.
 
+pub mod builtin;
+pub mod error;
+pub mod format;
+pub mod load;
+
+pub use builtin::{BUILTIN_SCENES, BuiltinScene, builtin, load_builtin, write_builtin};
+pub use error::SceneError;
+pub use load::{SceneOrigin, load_file, load_str};
+
 use crate::brdf::Brdf;
 use crate::camera::CameraParams;
 use crate::geometry::Shape;

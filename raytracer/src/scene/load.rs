@@ -1,0 +1,620 @@
+//! The scene loader: TOML text → checked [`SceneParts`].
+//!
+//! Lecture topic: the scenes of the lecture's pictures. Parsing (syntax,
+//! unknown fields, types, finite numbers) is done by serde with the types of
+//! [`super::format`]; this file then checks what serde cannot (positive
+//! radii, quads with an area, a camera that does not look along its up
+//! vector, known material names, …) and builds the renderer's objects. Every
+//! failure is a [`SceneError`] pointing at the offending line and field.
+//! Shapes and their transforms are built in the submodule `shape`.
+
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use toml::Spanned;
+
+mod shape;
+
+use super::builtin::BuiltinScene;
+use super::error::SceneError;
+use super::format::{
+    CameraDesc, ColorDesc, EnvironmentDesc, LightDesc, MaterialDesc, Real, RenderDesc, SceneFile,
+    TextureDesc,
+};
+use super::{RenderSettings, SceneParts};
+use crate::brdf::{Brdf, Glass, ImageTexture, Lambert, Mirror, Phong, Texture};
+use crate::camera::CameraParams;
+use crate::light::{EnvironmentLight, EnvironmentMap, Light, PointLight};
+use crate::math::{Color, Vec2, Vec3A};
+
+/// Where a scene text comes from: the name shown in errors and how the
+/// files it names (meshes, textures, maps) are found.
+#[derive(Clone, Debug)]
+pub enum SceneOrigin {
+    /// A file on disk; relative paths are resolved from `dir`.
+    Dir { name: String, dir: PathBuf },
+    /// A built-in scene; its files are embedded in the crate.
+    Builtin(&'static BuiltinScene),
+}
+
+impl SceneOrigin {
+    /// The origin of the scene file `path`: named as given, assets beside it.
+    pub fn file(path: &Path) -> Self {
+        SceneOrigin::Dir {
+            name: path.display().to_string(),
+            dir: path.parent().map(Path::to_path_buf).unwrap_or_default(),
+        }
+    }
+
+    /// The name shown in errors (`builtin:NAME` for a built-in scene).
+    pub fn name(&self) -> String {
+        match self {
+            SceneOrigin::Dir { name, .. } => name.clone(),
+            SceneOrigin::Builtin(scene) => format!("builtin:{}", scene.name),
+        }
+    }
+}
+
+/// Loads and checks the scene file `path`.
+pub fn load_file(path: &Path) -> Result<SceneParts, SceneError> {
+    let text = std::fs::read_to_string(path).map_err(|e| {
+        SceneError::whole_file(path.display().to_string(), format!("cannot read: {e}"))
+    })?;
+    load_str(&text, &SceneOrigin::file(path))
+}
+
+/// Loads and checks the scene text `text`.
+pub fn load_str(text: &str, origin: &SceneOrigin) -> Result<SceneParts, SceneError> {
+    let file = parse(text, origin)?;
+    build(text, origin, &file)
+}
+
+/// Parses the text into the format's types (syntax, fields, types, numbers).
+pub(crate) fn parse(text: &str, origin: &SceneOrigin) -> Result<SceneFile, SceneError> {
+    toml::from_str(text).map_err(|e| SceneError::from_toml(&origin.name(), text, &e))
+}
+
+/// Checks a parsed file and builds the scene's parts.
+pub(crate) fn build(
+    text: &str,
+    origin: &SceneOrigin,
+    file: &SceneFile,
+) -> Result<SceneParts, SceneError> {
+    let cx = Context {
+        text,
+        origin,
+        name: origin.name(),
+    };
+    let camera = cx.camera(&file.camera)?;
+    let settings = cx.render(&file.render)?;
+
+    // Materials in the order of the file (the map sorts them by name).
+    let mut materials: Vec<_> = file.materials.iter().collect();
+    materials.sort_by_key(|(name, _)| name.span().start);
+    let mut brdf_names = Vec::with_capacity(materials.len());
+    let mut brdfs = Vec::with_capacity(materials.len());
+    for (name, desc) in materials {
+        brdf_names.push(name.get_ref().clone());
+        brdfs.push(cx.material(name.get_ref(), desc)?);
+    }
+
+    let objects = file
+        .shapes
+        .iter()
+        .enumerate()
+        .map(|(i, shape)| cx.shape(i, shape, &brdf_names))
+        .collect::<Result<Vec<_>, _>>()?;
+
+    let mut lights = file
+        .lights
+        .iter()
+        .enumerate()
+        .map(|(i, light)| cx.light(i, light))
+        .collect::<Result<Vec<_>, _>>()?;
+    if let Some(env) = &file.environment {
+        lights.push(cx.environment(env)?);
+    }
+
+    Ok(SceneParts {
+        camera,
+        settings,
+        brdf_names,
+        brdfs,
+        objects,
+        lights,
+    })
+}
+
+/// The text being loaded, to turn byte ranges into errors.
+struct Context<'a> {
+    text: &'a str,
+    origin: &'a SceneOrigin,
+    name: String,
+}
+
+type Result<T, E = SceneError> = std::result::Result<T, E>;
+
+impl Context<'_> {
+    fn error(&self, span: Range<usize>, message: impl Into<String>) -> SceneError {
+        SceneError::at(&self.name, self.text, Some(span), message.into())
+    }
+
+    /// An error about a whole table (a missing field), with its path given.
+    fn error_in(&self, span: Range<usize>, path: String, message: String) -> SceneError {
+        let mut e = self.error(span, message);
+        e.path = path;
+        e
+    }
+
+    fn positive(&self, x: &Spanned<Real>) -> Result<f32> {
+        let v = x.get_ref().0;
+        if v > 0.0 {
+            Ok(v)
+        } else {
+            Err(self.error(x.span(), format!("must be positive, got {v}")))
+        }
+    }
+
+    fn non_negative(&self, x: &Spanned<Real>) -> Result<f32> {
+        let v = x.get_ref().0;
+        if v >= 0.0 {
+            Ok(v)
+        } else {
+            Err(self.error(x.span(), format!("must be ≥ 0, got {v}")))
+        }
+    }
+
+    /// A radiance or intensity: every component ≥ 0.
+    fn radiance(&self, c: &Spanned<ColorDesc>) -> Result<Color> {
+        let v = c.get_ref().0;
+        if v.min_element() >= 0.0 {
+            Ok(v)
+        } else {
+            Err(self.error(
+                c.span(),
+                format!("radiance must not be negative, got {}", fmt_color(v)),
+            ))
+        }
+    }
+
+    /// An albedo or reflectance: every component in [0, 1] (a surface cannot
+    /// reflect more light than it receives).
+    fn albedo(&self, c: Color, span: Range<usize>) -> Result<Color> {
+        if c.min_element() >= 0.0 && c.max_element() <= 1.0 {
+            Ok(c)
+        } else {
+            Err(self.error(
+                span,
+                format!(
+                    "must be in [0, 1] (energy conservation), got {}",
+                    fmt_color(c)
+                ),
+            ))
+        }
+    }
+
+    fn camera(&self, desc: &Spanned<CameraDesc>) -> Result<CameraParams> {
+        let c = desc.get_ref();
+        let position = Vec3A::from(c.position.get_ref().0);
+        let look_at = Vec3A::from(c.look_at.get_ref().0);
+        let up =
+            c.up.as_ref()
+                .map_or(Vec3A::Y, |u| Vec3A::from(u.get_ref().0));
+        let up_span = c.up.as_ref().map_or(c.look_at.span(), |u| u.span());
+        let forward = look_at - position;
+        if forward.length() == 0.0 {
+            return Err(self.error(
+                c.look_at.span(),
+                "the camera looks at its own position: look_at must differ from position",
+            ));
+        }
+        if up.length() == 0.0 {
+            return Err(self.error(up_span, "up must not be the zero vector"));
+        }
+        let sin = forward.normalize().cross(up.normalize()).length();
+        if sin.is_nan() || sin <= 1e-4 {
+            return Err(self.error(
+                up_span,
+                "the camera looks along its up vector: choose an up that is not parallel \
+                 to look_at − position",
+            ));
+        }
+        let fov = c.fov.get_ref().0;
+        if !(fov > 0.0 && fov < 180.0) {
+            return Err(self.error(
+                c.fov.span(),
+                format!("the vertical field of view must be in (0, 180) degrees, got {fov}"),
+            ));
+        }
+        let aperture_radius = match &c.aperture_radius {
+            Some(a) => self.non_negative(a)?,
+            None => 0.0,
+        };
+        let focus_distance = match &c.focus_distance {
+            Some(f) => self.positive(f)?,
+            None => forward.length(),
+        };
+        Ok(CameraParams {
+            position,
+            look_at,
+            up,
+            vfov_deg: fov,
+            aperture_radius,
+            focus_distance,
+            shift: Vec2::ZERO,
+        })
+    }
+
+    fn render(&self, r: &RenderDesc) -> Result<RenderSettings> {
+        let mut s = RenderSettings::default();
+        let at_least_one = |v: &Option<Spanned<u32>>, default: u32| match v {
+            Some(v) if *v.get_ref() == 0 => Err(self.error(v.span(), "must be at least 1, got 0")),
+            Some(v) => Ok(*v.get_ref()),
+            None => Ok(default),
+        };
+        s.width = at_least_one(&r.width, s.width)?;
+        s.height = at_least_one(&r.height, s.height)?;
+        s.spp = at_least_one(&r.spp, s.spp)?;
+        if let Some(d) = &r.max_depth {
+            s.max_depth = match *d.get_ref() {
+                -1 => None,
+                d @ 1..=0xffff => Some(d as u32),
+                other => {
+                    return Err(self.error(
+                        d.span(),
+                        format!("must be -1 (unlimited) or in [1, 65535], got {other}"),
+                    ));
+                }
+            };
+        }
+        if let Some(d) = &r.rr_depth {
+            s.rr_depth = *d.get_ref();
+        }
+        if let Some(seed) = &r.seed {
+            s.seed = *seed.get_ref();
+        }
+        Ok(s)
+    }
+
+    /// Refuses fields that the given `type` does not use (they would be
+    /// silently ignored otherwise).
+    fn unused(&self, what: &str, fields: &[(&str, Option<Range<usize>>)]) -> Result<()> {
+        match fields.iter().find(|(_, span)| span.is_some()) {
+            Some((field, Some(span))) => {
+                Err(self.error(span.clone(), format!("`{field}` is not used by {what}")))
+            }
+            _ => Ok(()),
+        }
+    }
+
+    fn material(&self, name: &str, desc: &Spanned<MaterialDesc>) -> Result<Brdf> {
+        let m = desc.get_ref();
+        let kind = m.kind.get_ref().as_str();
+        let required = |field: &str| {
+            self.error_in(
+                m.kind.span(),
+                format!("materials.{name}"),
+                format!("a {kind} material needs `{field}`"),
+            )
+        };
+        match kind {
+            "lambert" => {
+                self.unused("a lambert material", &[
+                    ("exponent", span_of(&m.exponent)),
+                    ("reflectance", span_of(&m.reflectance)),
+                    ("ior", span_of(&m.ior)),
+                    ("tint", span_of(&m.tint)),
+                ])?;
+                let albedo = m.albedo.as_ref().ok_or_else(|| required("albedo"))?;
+                Ok(Brdf::Lambert(Lambert {
+                    albedo: self.texture(albedo)?,
+                }))
+            }
+            "phong" => {
+                self.unused("a phong material", &[
+                    ("reflectance", span_of(&m.reflectance)),
+                    ("ior", span_of(&m.ior)),
+                    ("tint", span_of(&m.tint)),
+                ])?;
+                let albedo = m.albedo.as_ref().ok_or_else(|| required("albedo"))?;
+                let TextureDesc::Color(c) = albedo.get_ref() else {
+                    return Err(self.error(
+                        albedo.span(),
+                        "a phong albedo must be a colour [r, g, b], not a texture",
+                    ));
+                };
+                let exponent = m.exponent.as_ref().ok_or_else(|| required("exponent"))?;
+                Ok(Brdf::Phong(Phong {
+                    albedo: self.albedo(*c, albedo.span())?,
+                    exponent: self.non_negative(exponent)?,
+                }))
+            }
+            "mirror" => {
+                self.unused("a mirror material", &[
+                    ("albedo", span_of(&m.albedo)),
+                    ("exponent", span_of(&m.exponent)),
+                    ("ior", span_of(&m.ior)),
+                    ("tint", span_of(&m.tint)),
+                ])?;
+                let reflectance = match &m.reflectance {
+                    Some(r) => self.albedo(r.get_ref().0, r.span())?,
+                    None => Color::ONE,
+                };
+                Ok(Brdf::Mirror(Mirror { reflectance }))
+            }
+            "glass" => {
+                self.unused("a glass material", &[
+                    ("albedo", span_of(&m.albedo)),
+                    ("exponent", span_of(&m.exponent)),
+                    ("reflectance", span_of(&m.reflectance)),
+                ])?;
+                let ior = match &m.ior {
+                    Some(ior) => self.positive(ior)?,
+                    None => 1.5,
+                };
+                let tint = match &m.tint {
+                    Some(t) => self.albedo(t.get_ref().0, t.span())?,
+                    None => Color::ONE,
+                };
+                Ok(Brdf::Glass(Glass { ior, tint }))
+            }
+            other => Err(self.error(
+                m.kind.span(),
+                format!(
+                    "unknown material type `{other}`, expected one of: lambert, phong, mirror, glass"
+                ),
+            )),
+        }
+    }
+
+    fn texture(&self, t: &Spanned<TextureDesc>) -> Result<Texture> {
+        match t.get_ref() {
+            TextureDesc::Color(c) => Ok(Texture::Constant(self.albedo(*c, t.span())?)),
+            TextureDesc::Checker(ch) => Ok(Texture::Checker {
+                a: self.albedo(ch.a.get_ref().0, ch.a.span())?,
+                b: self.albedo(ch.b.get_ref().0, ch.b.span())?,
+                scale: self.positive(&ch.scale)?,
+            }),
+            TextureDesc::Image(file) => {
+                let path = self.asset_path(file, "image")?;
+                let image = ImageTexture::load(&path)
+                    .map_err(|e| self.error(file.span(), format!("cannot load the image: {e}")))?;
+                Ok(Texture::Image(Arc::new(image)))
+            }
+        }
+    }
+
+    /// The path of a file named by the scene, which must exist. Built-in
+    /// scenes embed only OBJ meshes (see [`Context::mesh_file`]).
+    fn asset_path(&self, file: &Spanned<String>, what: &str) -> Result<PathBuf> {
+        match self.origin {
+            SceneOrigin::Dir { dir, .. } => {
+                let path = dir.join(file.get_ref());
+                if path.is_file() {
+                    Ok(path)
+                } else {
+                    Err(self.error(
+                        file.span(),
+                        format!("{what} file not found: {}", path.display()),
+                    ))
+                }
+            }
+            SceneOrigin::Builtin(scene) => Err(self.error(
+                file.span(),
+                format!(
+                    "built-in scene `{}` cannot use {what} files; write it out and load it from disk",
+                    scene.name
+                ),
+            )),
+        }
+    }
+
+    fn light(&self, i: usize, desc: &Spanned<LightDesc>) -> Result<Light> {
+        let l = desc.get_ref();
+        match l.kind.get_ref().as_str() {
+            "point" => {
+                let required = |field: &str| {
+                    self.error_in(
+                        l.kind.span(),
+                        format!("lights[{i}]"),
+                        format!("a point light needs `{field}`"),
+                    )
+                };
+                let position = l.position.as_ref().ok_or_else(|| required("position"))?;
+                let intensity = l.intensity.as_ref().ok_or_else(|| required("intensity"))?;
+                Ok(Light::Point(PointLight {
+                    position: Vec3A::from(position.get_ref().0),
+                    intensity: self.radiance(intensity)?,
+                }))
+            }
+            other => Err(self.error(
+                l.kind.span(),
+                format!(
+                    "unknown light type `{other}`, expected `point` (area lights are shapes \
+                     with `emission`; the sky is the [environment] table)"
+                ),
+            )),
+        }
+    }
+
+    fn environment(&self, desc: &Spanned<EnvironmentDesc>) -> Result<Light> {
+        let e = desc.get_ref();
+        let radiance = match &e.radiance {
+            Some(r) => self.radiance(r)?,
+            None if e.map.is_some() => Color::ONE,
+            None => {
+                return Err(self.error_in(
+                    desc.span(),
+                    "environment".into(),
+                    "give `radiance`, `map` or both".into(),
+                ));
+            }
+        };
+        let map = match &e.map {
+            Some(file) => {
+                let path = self.asset_path(file, "environment map")?;
+                let map = EnvironmentMap::load(&path).map_err(|err| {
+                    self.error(file.span(), format!("cannot load the map: {err}"))
+                })?;
+                Some(Arc::new(map))
+            }
+            None => None,
+        };
+        // TODO(lead): use EnvironmentLight::new; the scene sets the bounding
+        // sphere once the geometry is built.
+        Ok(Light::Environment(EnvironmentLight {
+            radiance,
+            map,
+            scene_center: Vec3A::ZERO,
+            scene_radius: 0.0,
+        }))
+    }
+}
+
+/// Where an optional field is, if it is present.
+fn span_of<T>(field: &Option<Spanned<T>>) -> Option<Range<usize>> {
+    field.as_ref().map(Spanned::span)
+}
+
+fn fmt_color(c: Color) -> String {
+    format!("[{}, {}, {}]", c.x, c.y, c.z)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Emitter;
+
+    fn origin() -> SceneOrigin {
+        SceneOrigin::Dir {
+            name: "test.toml".into(),
+            dir: ".".into(),
+        }
+    }
+
+    const CAMERA: &str = "[camera]\nposition = [0, 0, 5]\nlook_at = [0, 0, 1]\nfov = 40\n";
+
+    #[test]
+    fn defaults_fill_what_the_file_leaves_out() {
+        let parts = load_str(CAMERA, &origin()).unwrap();
+        let c = parts.camera;
+        assert_eq!(c.up, Vec3A::Y);
+        assert_eq!(c.aperture_radius, 0.0);
+        assert_eq!(c.focus_distance, 4.0, "distance to look_at");
+        assert_eq!(c.shift, Vec2::ZERO);
+        assert_eq!(parts.settings, RenderSettings::default());
+        assert!(parts.objects.is_empty() && parts.lights.is_empty());
+
+        let text = format!("{CAMERA}[render]\nmax_depth = -1\n");
+        assert_eq!(load_str(&text, &origin()).unwrap().settings.max_depth, None);
+        let text = format!(
+            "{CAMERA}aperture_radius = 0.1\nfocus_distance = 2\n\
+             [render]\nwidth = 40\nheight = 30\nspp = 7\nmax_depth = 8\nrr_depth = 3\nseed = 9\n"
+        );
+        let parts = load_str(&text, &origin()).unwrap();
+        assert_eq!(
+            parts.settings,
+            RenderSettings {
+                width: 40,
+                height: 30,
+                spp: 7,
+                max_depth: Some(8),
+                rr_depth: 3,
+                seed: 9
+            }
+        );
+        assert_eq!(parts.camera.aperture_radius, 0.1);
+        assert_eq!(parts.camera.focus_distance, 2.0);
+    }
+
+    #[test]
+    fn materials_lights_and_environment_are_built() {
+        let text = format!(
+            "{CAMERA}\
+             [materials.floor]\ntype = \"lambert\"\nalbedo = {{ checker = {{ a = 0.8, b = [0.1, 0.2, 0.3], scale = 4 }} }}\n\
+             [materials.shiny]\ntype = \"phong\"\nalbedo = [0.5, 0.4, 0.3]\nexponent = 100\n\
+             [materials.mirror]\ntype = \"mirror\"\n\
+             [materials.glass]\ntype = \"glass\"\ntint = 0.9\n\
+             [[shapes]]\nname = \"ball\"\ntype = \"sphere\"\ncenter = [1, 2, 3]\nradius = 0.5\nmaterial = \"glass\"\n\
+             [[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 9\nmaterial = \"floor\"\nemission = 0.5\ntwo_sided = true\n\
+             [[lights]]\ntype = \"point\"\nposition = [0, 4, 0]\nintensity = 30\n\
+             [environment]\nradiance = [0.1, 0.2, 0.3]\n"
+        );
+        let parts = load_str(&text, &origin()).unwrap();
+        assert_eq!(parts.brdf_names, ["floor", "shiny", "mirror", "glass"]);
+        match &parts.brdfs[0] {
+            Brdf::Lambert(Lambert {
+                albedo: Texture::Checker { a, b, scale },
+            }) => {
+                assert_eq!(*a, Color::splat(0.8));
+                assert_eq!(*b, Color::new(0.1, 0.2, 0.3));
+                assert_eq!(*scale, 4.0);
+            }
+            other => panic!("{other:?}"),
+        }
+        assert!(matches!(
+            parts.brdfs[1],
+            Brdf::Phong(Phong {
+                exponent: 100.0,
+                ..
+            })
+        ));
+        assert!(
+            matches!(parts.brdfs[2], Brdf::Mirror(Mirror { reflectance }) if reflectance == Color::ONE)
+        );
+        assert!(
+            matches!(parts.brdfs[3], Brdf::Glass(Glass { ior: 1.5, tint }) if tint == Color::splat(0.9))
+        );
+
+        assert_eq!(parts.objects[0].name, "ball");
+        assert_eq!(parts.objects[0].brdf, 3);
+        assert_eq!(parts.objects[0].emitter, None);
+        assert_eq!(parts.objects[1].name, "sphere#1");
+        assert_eq!(
+            parts.objects[1].emitter,
+            Some(Emitter {
+                radiance: Color::splat(0.5),
+                two_sided: true
+            })
+        );
+        assert!(matches!(
+            parts.lights[0],
+            Light::Point(PointLight { position, intensity })
+                if position == Vec3A::new(0.0, 4.0, 0.0) && intensity == Color::splat(30.0)
+        ));
+        match &parts.lights[1] {
+            Light::Environment(env) => {
+                assert_eq!(env.radiance, Color::new(0.1, 0.2, 0.3));
+                assert!(env.map.is_none());
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    /// The example of `raytracer/scenes/README.md` is a valid scene.
+    #[test]
+    fn the_readme_example_loads() {
+        let readme = include_str!("../../scenes/README.md");
+        let start = readme.find("```toml\n").expect("an example") + "```toml\n".len();
+        let example = &readme[start..start + readme[start..].find("```").unwrap()];
+        let parts = load_str(example, &origin()).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(parts.objects.len(), 3);
+        assert_eq!(parts.lights.len(), 1);
+        assert!(parts.objects[2].emitter.is_some());
+    }
+
+    #[test]
+    fn load_file_reads_from_disk_and_names_a_missing_file() {
+        let dir = std::env::temp_dir().join(format!("scenefmt-load-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("s.toml");
+        std::fs::write(&path, CAMERA).unwrap();
+        assert_eq!(load_file(&path).unwrap().camera.vfov_deg, 40.0);
+        let missing = dir.join("nope.toml");
+        let e = load_file(&missing).unwrap_err();
+        assert_eq!(e.file, missing.display().to_string());
+        assert!(e.message.starts_with("cannot read"), "{e}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
