@@ -1,6 +1,14 @@
 //! Triangle meshes, loaded from OBJ files or generated (cube, icosphere).
+//!
+//! Lecture topic: none of its own (scene description). OBJ files go through
+//! the `tobj` crate, triangulated and with one index per vertex (a vertex
+//! with two normals in the file becomes two vertices).
 
-use crate::math::{Vec2, Vec3};
+use std::collections::HashMap;
+use std::fmt::Write as _;
+use std::io::BufRead;
+
+use crate::math::{Vec2, Vec3, Vec3A};
 
 /// An indexed triangle mesh in world space. Vertex arrays use the compact
 /// 12-byte `Vec3`.
@@ -32,25 +40,411 @@ impl std::error::Error for MeshError {}
 
 impl Mesh {
     /// Loads an OBJ file (positions, and normals and uvs where present).
+    ///
+    /// All objects and groups of the file are merged into one mesh; faces are
+    /// triangulated as fans; materials are ignored. Normals (uvs) are kept
+    /// only when every vertex has one; otherwise the mesh is flat shaded
+    /// (untextured).
     pub fn load_obj(path: &std::path::Path) -> Result<Mesh, MeshError> {
-        let _ = path;
-        todo!("geometry helper")
+        let name = path.display().to_string();
+        let file = std::fs::File::open(path).map_err(|e| MeshError {
+            path: name.clone(),
+            message: format!("cannot open the OBJ file: {e}"),
+        })?;
+        Self::from_obj_reader(&mut std::io::BufReader::new(file), &name)
     }
 
     /// Parses OBJ text (for meshes that ship inside the crate); `name` is used in errors.
     pub fn from_obj_str(text: &str, name: &str) -> Result<Mesh, MeshError> {
-        let _ = (text, name);
-        todo!("geometry helper")
+        Self::from_obj_reader(&mut std::io::Cursor::new(text.as_bytes()), name)
     }
 
-    /// The cube `[-1, 1]³` with outward normals (flat shading).
+    fn from_obj_reader(reader: &mut impl BufRead, name: &str) -> Result<Mesh, MeshError> {
+        let err = |message: String| MeshError {
+            path: name.to_string(),
+            message,
+        };
+        let options = tobj::LoadOptions {
+            single_index: true,
+            triangulate: true,
+            ignore_points: true,
+            ignore_lines: true,
+            ..Default::default()
+        };
+        let (models, _materials) =
+            tobj::load_obj_buf(reader, &options, |_| Err(tobj::LoadError::GenericFailure))
+                .map_err(|e| err(format!("not a valid OBJ file ({e})")))?;
+
+        let mut mesh = Mesh::default();
+        let mut all_normals = true;
+        let mut all_uvs = true;
+        for model in &models {
+            let m = &model.mesh;
+            let nv = m.positions.len() / 3;
+            all_normals &= m.normals.len() == 3 * nv;
+            all_uvs &= m.texcoords.len() == 2 * nv;
+        }
+        for model in &models {
+            let m = &model.mesh;
+            let base = mesh.positions.len();
+            let nv = m.positions.len() / 3;
+            mesh.positions.extend(
+                m.positions
+                    .chunks_exact(3)
+                    .map(|p| Vec3::new(p[0], p[1], p[2])),
+            );
+            if all_normals {
+                mesh.normals.extend(
+                    m.normals
+                        .chunks_exact(3)
+                        .map(|n| Vec3::new(n[0], n[1], n[2])),
+                );
+            }
+            if all_uvs {
+                mesh.uvs
+                    .extend(m.texcoords.chunks_exact(2).map(|t| Vec2::new(t[0], t[1])));
+            }
+            for tri in m.indices.chunks_exact(3) {
+                if tri.iter().any(|&i| i as usize >= nv) {
+                    return Err(err(format!(
+                        "object '{}': vertex index out of range ({} vertices)",
+                        model.name, nv
+                    )));
+                }
+                mesh.indices.push([
+                    base as u32 + tri[0],
+                    base as u32 + tri[1],
+                    base as u32 + tri[2],
+                ]);
+            }
+        }
+        if mesh.indices.is_empty() {
+            return Err(err("the OBJ file contains no triangles".into()));
+        }
+        if let Some(i) = mesh.positions.iter().position(|p| !p.is_finite()) {
+            return Err(err(format!(
+                "vertex {} has a non-finite position {}",
+                i + 1,
+                mesh.positions[i]
+            )));
+        }
+        // Zero or non-finite normals cannot be normalized: fall back to flat.
+        if mesh
+            .normals
+            .iter()
+            .any(|n| !n.is_finite() || n.length_squared() == 0.0)
+        {
+            mesh.normals.clear();
+        } else {
+            mesh.normals.iter_mut().for_each(|n| *n = n.normalize());
+        }
+        if mesh.uvs.iter().any(|t| !t.is_finite()) {
+            mesh.uvs.clear();
+        }
+        Ok(mesh)
+    }
+
+    /// The cube `[-1, 1]³` with outward normals (flat shading): 24 vertices
+    /// (4 per face, so each face has its own uvs `[0,1]²`), 12 triangles.
     pub fn cube() -> Mesh {
-        todo!("geometry helper")
+        let mut mesh = Mesh::default();
+        for axis in 0..3 {
+            for sign in [-1.0f32, 1.0] {
+                // Outward normal n; tangents u, v with u × v = n, so the
+                // corners n ± u ± v in this order run counter-clockwise
+                // seen from outside.
+                let mut n = Vec3::ZERO;
+                n[axis] = sign;
+                let mut u = Vec3::ZERO;
+                u[(axis + 1) % 3] = 1.0;
+                let v = n.cross(u);
+                let base = mesh.positions.len() as u32;
+                for (a, b) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                    mesh.positions.push(n + a * u + b * v);
+                    mesh.uvs.push(Vec2::new(0.5 * (a + 1.0), 0.5 * (b + 1.0)));
+                }
+                mesh.indices.push([base, base + 1, base + 2]);
+                mesh.indices.push([base, base + 2, base + 3]);
+            }
+        }
+        mesh
     }
 
-    /// This mesh with `transform` applied to positions and normals.
+    /// The unit sphere approximated by a subdivided icosahedron: each level
+    /// splits every triangle into four at its edge midpoints, which are
+    /// pushed out onto the sphere. `20·4^level` triangles (level 6: 81,920;
+    /// level 8: 1,310,720); the vertex normals are the exact sphere normals.
+    pub fn icosphere(level: u32) -> Mesh {
+        let g = (1.0 + 5f32.sqrt()) / 2.0;
+        let mut positions: Vec<Vec3> = [
+            (-1.0, g, 0.0),
+            (1.0, g, 0.0),
+            (-1.0, -g, 0.0),
+            (1.0, -g, 0.0),
+            (0.0, -1.0, g),
+            (0.0, 1.0, g),
+            (0.0, -1.0, -g),
+            (0.0, 1.0, -g),
+            (g, 0.0, -1.0),
+            (g, 0.0, 1.0),
+            (-g, 0.0, -1.0),
+            (-g, 0.0, 1.0),
+        ]
+        .iter()
+        .map(|&(x, y, z)| Vec3::new(x, y, z).normalize())
+        .collect();
+        let mut indices: Vec<[u32; 3]> = vec![
+            [0, 11, 5],
+            [0, 5, 1],
+            [0, 1, 7],
+            [0, 7, 10],
+            [0, 10, 11],
+            [1, 5, 9],
+            [5, 11, 4],
+            [11, 10, 2],
+            [10, 7, 6],
+            [7, 1, 8],
+            [3, 9, 4],
+            [3, 4, 2],
+            [3, 2, 6],
+            [3, 6, 8],
+            [3, 8, 9],
+            [4, 9, 5],
+            [2, 4, 11],
+            [6, 2, 10],
+            [8, 6, 7],
+            [9, 8, 1],
+        ];
+        for _ in 0..level {
+            let mut midpoints: HashMap<u64, u32> = HashMap::with_capacity(indices.len() * 3 / 2);
+            let mut midpoint = |a: u32, b: u32, positions: &mut Vec<Vec3>| -> u32 {
+                let key = (a.min(b) as u64) << 32 | a.max(b) as u64;
+                *midpoints.entry(key).or_insert_with(|| {
+                    let m = (positions[a as usize] + positions[b as usize]).normalize();
+                    positions.push(m);
+                    positions.len() as u32 - 1
+                })
+            };
+            let mut next = Vec::with_capacity(indices.len() * 4);
+            for &[a, b, c] in &indices {
+                let ab = midpoint(a, b, &mut positions);
+                let bc = midpoint(b, c, &mut positions);
+                let ca = midpoint(c, a, &mut positions);
+                next.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
+            }
+            indices = next;
+        }
+        Mesh {
+            normals: positions.clone(),
+            positions,
+            uvs: Vec::new(),
+            indices,
+        }
+    }
+
+    /// This mesh with `transform` applied to positions and normals (normals by
+    /// the inverse transpose). A mirroring transform also reverses the
+    /// winding, so the geometric normal keeps pointing to the same side of
+    /// the surface as the vertex normals.
     pub fn transformed(&self, transform: &super::Transform) -> Mesh {
-        let _ = transform;
-        todo!("geometry helper")
+        let nm = transform.normal_matrix();
+        let mut indices = self.indices.clone();
+        if transform.flips_handedness() {
+            indices.iter_mut().for_each(|t| t.swap(1, 2));
+        }
+        Mesh {
+            positions: self
+                .positions
+                .iter()
+                .map(|&p| transform.apply_point(p.into()).into())
+                .collect(),
+            normals: self.normals.iter().map(|&n| (nm * n).normalize()).collect(),
+            uvs: self.uvs.clone(),
+            indices,
+        }
+    }
+
+    /// The mesh as OBJ text (`v`, `vn`, `vt` and `f` lines). Numbers are
+    /// written in Rust's shortest round-trip form, so loading the text back
+    /// gives the same floats.
+    pub fn to_obj_string(&self) -> String {
+        let mut s = String::with_capacity(self.positions.len() * 40 + self.indices.len() * 40);
+        let _ = writeln!(
+            s,
+            "# {} vertices, {} triangles",
+            self.positions.len(),
+            self.indices.len()
+        );
+        for p in &self.positions {
+            let _ = writeln!(s, "v {} {} {}", p.x, p.y, p.z);
+        }
+        for n in &self.normals {
+            let _ = writeln!(s, "vn {} {} {}", n.x, n.y, n.z);
+        }
+        for t in &self.uvs {
+            let _ = writeln!(s, "vt {} {}", t.x, t.y);
+        }
+        let (hn, ht) = (!self.normals.is_empty(), !self.uvs.is_empty());
+        for tri in &self.indices {
+            s.push('f');
+            for &i in tri {
+                let i = i + 1; // OBJ indices start at 1
+                let _ = match (ht, hn) {
+                    (false, false) => write!(s, " {i}"),
+                    (true, false) => write!(s, " {i}/{i}"),
+                    (false, true) => write!(s, " {i}//{i}"),
+                    (true, true) => write!(s, " {i}/{i}/{i}"),
+                };
+            }
+            s.push('\n');
+        }
+        s
+    }
+
+    /// Total surface area `Σ ½|e1 × e2|`.
+    pub fn area(&self) -> f32 {
+        self.indices
+            .iter()
+            .map(|&[a, b, c]| {
+                let p0 = Vec3A::from(self.positions[a as usize]);
+                let e1 = Vec3A::from(self.positions[b as usize]) - p0;
+                let e2 = Vec3A::from(self.positions[c as usize]) - p0;
+                0.5 * e1.cross(e2).length() as f64
+            })
+            .sum::<f64>() as f32
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::Transform;
+
+    const QUAD_OBJ: &str = "\
+# a unit square in z = 0, two objects
+o first
+v 0 0 0
+v 1 0 0
+v 1 1 0
+vt 0 0
+vt 1 0
+vt 1 1
+vn 0 0 1
+f 1/1/1 2/2/1 3/3/1
+o second
+v 0 1 0
+vt 0 1
+f 1/1/1 3/3/1 4/4/1
+";
+
+    #[test]
+    fn parses_obj_with_normals_and_uvs() {
+        let m = Mesh::from_obj_str(QUAD_OBJ, "quad.obj").unwrap();
+        assert_eq!(m.indices.len(), 2);
+        assert_eq!(m.positions.len(), m.normals.len());
+        assert_eq!(m.positions.len(), m.uvs.len());
+        assert!(m.normals.iter().all(|&n| n == Vec3::Z));
+        assert!((m.area() - 1.0).abs() < 1e-6);
+        // Every vertex's uv equals its (x, y).
+        for (p, t) in m.positions.iter().zip(&m.uvs) {
+            assert_eq!(Vec2::new(p.x, p.y), *t);
+        }
+        // A quad face is triangulated.
+        let m = Mesh::from_obj_str("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n", "q").unwrap();
+        assert_eq!(m.indices.len(), 2);
+        assert!(m.normals.is_empty() && m.uvs.is_empty());
+    }
+
+    #[test]
+    fn errors_name_the_file_and_the_problem() {
+        let e = Mesh::load_obj(std::path::Path::new("/no/such/dir/bunny.obj")).unwrap_err();
+        assert!(e.to_string().contains("/no/such/dir/bunny.obj"), "{e}");
+        assert!(e.message.contains("cannot open"), "{e}");
+        let e = Mesh::from_obj_str("this is not\nan obj file at all\n", "garbage.obj").unwrap_err();
+        assert!(e.to_string().starts_with("garbage.obj: "), "{e}");
+        let e = Mesh::from_obj_str("v 0 0 0\nv 1 0 0\nf 1 2 7\n", "range.obj").unwrap_err();
+        assert!(
+            e.to_string().contains("range.obj") && e.message.contains("out of"),
+            "{e}"
+        );
+        let e = Mesh::from_obj_str("v 0 0 0\nv 1 0 0\nv 0 1 0\n", "empty.obj").unwrap_err();
+        assert!(e.message.contains("no triangles"), "{e}");
+        let e =
+            Mesh::from_obj_str("v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n", "inf.obj").unwrap_err();
+        assert!(e.message.contains("non-finite"), "{e}");
+    }
+
+    #[test]
+    fn cube_is_closed_with_outward_normals() {
+        let c = Mesh::cube();
+        assert_eq!((c.positions.len(), c.indices.len()), (24, 12));
+        assert!((c.area() - 24.0).abs() < 1e-5);
+        for &[a, b, d] in &c.indices {
+            let (p0, p1, p2) = (
+                c.positions[a as usize],
+                c.positions[b as usize],
+                c.positions[d as usize],
+            );
+            let n = (p1 - p0).cross(p2 - p0).normalize();
+            let centre = (p0 + p1 + p2) / 3.0;
+            // Outward: the normal is the face's axis, pointing the way of the centre.
+            assert!((n - centre.round()).length() < 1e-6, "{n} at {centre}");
+        }
+    }
+
+    #[test]
+    fn icosphere_counts_and_orientation() {
+        for level in [0u32, 1, 3] {
+            let m = Mesh::icosphere(level);
+            assert_eq!(m.indices.len(), 20 * 4usize.pow(level));
+            // Euler: V − E + F = 2 with E = 3F/2.
+            assert_eq!(m.positions.len(), 2 + m.indices.len() / 2);
+            for &[a, b, c] in &m.indices {
+                let (p0, p1, p2) = (
+                    m.positions[a as usize],
+                    m.positions[b as usize],
+                    m.positions[c as usize],
+                );
+                assert!(
+                    (p1 - p0).cross(p2 - p0).dot(p0 + p1 + p2) > 0.0,
+                    "inward triangle"
+                );
+            }
+        }
+        let a = Mesh::icosphere(4).area();
+        assert!(
+            a < 4.0 * crate::math::PI && a > 0.99 * 4.0 * crate::math::PI,
+            "{a}"
+        );
+    }
+
+    #[test]
+    fn obj_round_trip_and_transform() {
+        let m = Mesh::icosphere(1);
+        let back = Mesh::from_obj_str(&m.to_obj_string(), "ico.obj").unwrap();
+        // tobj renumbers vertices in order of first use: compare triangles.
+        assert_eq!(back.indices.len(), m.indices.len());
+        for (x, y) in back.indices.iter().zip(&m.indices) {
+            for k in 0..3 {
+                assert_eq!(back.positions[x[k] as usize], m.positions[y[k] as usize]);
+                let dn = back.normals[x[k] as usize] - m.normals[y[k] as usize];
+                assert!(dn.length() < 1e-6);
+            }
+        }
+        let t = Transform::translate(Vec3::new(1.0, 0.0, 0.0))
+            * Transform::scale(Vec3::new(-2.0, 2.0, 2.0));
+        let w = m.transformed(&t);
+        assert!((w.area() - 4.0 * m.area()).abs() < 1e-4);
+        // The mirror keeps triangles facing outwards, like the normals.
+        for (k, &[a, b, c]) in w.indices.iter().enumerate() {
+            let (p0, p1, p2) = (
+                w.positions[a as usize],
+                w.positions[b as usize],
+                w.positions[c as usize],
+            );
+            let ng = (p1 - p0).cross(p2 - p0);
+            assert!(ng.dot(w.normals[a as usize]) > 0.0, "triangle {k}");
+            assert!(ng.dot(p0 - Vec3::X) > 0.0, "triangle {k}");
+        }
     }
 }

@@ -17,11 +17,19 @@ pub mod mesh;
 pub mod quad;
 pub mod sphere;
 pub mod transform;
+pub mod triangle;
+
+#[cfg(test)]
+mod tests;
 
 use std::sync::Arc;
 
-use crate::math::{Vec2, Vec3A};
+use rayon::prelude::*;
 
+use crate::math::{Ray, Vec2, Vec3A};
+
+pub use aabb::Aabb;
+pub use bvh::Bvh;
 pub use mesh::{Mesh, MeshError};
 pub use quad::Quad;
 pub use sphere::Sphere;
@@ -65,4 +73,247 @@ pub struct SurfacePoint {
     pub uv: Vec2,
     /// Index of the [`Shape`] hit, in the order given to [`Geometry::new`].
     pub shape: u32,
+}
+
+/// Where a primitive comes from: shape index and, for a mesh, triangle index.
+#[derive(Clone, Copy, Debug)]
+struct PrimSource {
+    shape: u32,
+    local: u32,
+}
+
+/// The shapes of a scene with one BVH over all their primitives (every
+/// triangle of every mesh, every sphere, every quad).
+///
+/// Primitive data is stored in BVH leaf order ([`triangle::PrimRecord`]); a
+/// [`Hit::prim`] is an index into that order, and [`Geometry::surface_point`]
+/// maps it back to the shape.
+#[derive(Clone, Debug)]
+pub struct Geometry {
+    shapes: Vec<Shape>,
+    bvh: Bvh,
+    prims: Vec<triangle::PrimRecord>,
+    sources: Vec<PrimSource>,
+}
+
+/// A primitive's box, padded by a few ulps of its size and position: quads
+/// accept edge parameters a hair outside `[0, 1]` (see `QUAD_EPS`), a quad's
+/// corners `origin + e1 + e2` are rounded, and slab tests round too; hits
+/// near the edges must still lie inside the boxes traversal tests.
+fn padded_bounds(r: &triangle::PrimRecord) -> Aabb {
+    let a = Vec3A::from_vec4(r.a);
+    let b = Vec3A::from_vec4(r.b);
+    let c = Vec3A::from_vec4(r.c);
+    let bounds = match r.kind() {
+        triangle::KIND_SPHERE => Aabb::new(a - Vec3A::splat(r.b.x), a + Vec3A::splat(r.b.x)),
+        triangle::KIND_QUAD => {
+            let mut bb = Aabb::new(a, a + b);
+            bb.grow(a + c);
+            bb.grow(a + b + c);
+            bb
+        }
+        _ => {
+            let mut bb = Aabb::new(a, b);
+            bb.grow(c);
+            bb
+        }
+    };
+    let pad = 4e-6
+        * (bounds.diagonal().max_element() + bounds.min.abs().max(bounds.max.abs()).max_element());
+    Aabb {
+        min: bounds.min - Vec3A::splat(pad),
+        max: bounds.max + Vec3A::splat(pad),
+    }
+}
+
+impl Geometry {
+    /// Builds the BVH over all primitives of `shapes`.
+    pub fn new(shapes: Vec<Shape>) -> Geometry {
+        let mut records = Vec::new();
+        let mut sources = Vec::new();
+        for (s, shape) in shapes.iter().enumerate() {
+            let shape_id = s as u32;
+            match shape {
+                Shape::Sphere(sp) => {
+                    records.push(triangle::PrimRecord::sphere(sp.center, sp.radius));
+                    sources.push(PrimSource {
+                        shape: shape_id,
+                        local: 0,
+                    });
+                }
+                Shape::Quad(q) => {
+                    records.push(triangle::PrimRecord::quad(q.origin, q.e1, q.e2));
+                    sources.push(PrimSource {
+                        shape: shape_id,
+                        local: 0,
+                    });
+                }
+                Shape::Mesh(m) => {
+                    let p = &m.positions;
+                    records.par_extend(m.indices.par_iter().map(|&[a, b, c]| {
+                        triangle::PrimRecord::triangle(
+                            p[a as usize].into(),
+                            p[b as usize].into(),
+                            p[c as usize].into(),
+                        )
+                    }));
+                    sources.par_extend((0..m.indices.len() as u32).into_par_iter().map(|local| {
+                        PrimSource {
+                            shape: shape_id,
+                            local,
+                        }
+                    }));
+                }
+            }
+        }
+        let bounds: Vec<Aabb> = records.par_iter().map(padded_bounds).collect();
+        let bvh = Bvh::build(&bounds);
+        let prims = bvh.order.par_iter().map(|&i| records[i as usize]).collect();
+        let sources = bvh.order.par_iter().map(|&i| sources[i as usize]).collect();
+        Geometry {
+            shapes,
+            bvh,
+            prims,
+            sources,
+        }
+    }
+
+    /// The shapes, in the order given to [`Geometry::new`].
+    pub fn shapes(&self) -> &[Shape] {
+        &self.shapes
+    }
+
+    /// A box around every primitive (empty without primitives).
+    pub fn bounds(&self) -> Aabb {
+        self.bvh.bounds()
+    }
+
+    /// Number of primitives (triangles + spheres + quads).
+    pub fn primitive_count(&self) -> usize {
+        self.prims.len()
+    }
+
+    /// Number of BVH nodes.
+    pub fn node_count(&self) -> usize {
+        self.bvh.nodes.len()
+    }
+
+    /// The closest hit with `t ∈ (0, ray.t_max)`.
+    #[inline]
+    pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        let (o, d) = (ray.o, ray.d);
+        let prims = &self.prims[..];
+        let mut best: Option<Hit> = None;
+        self.bvh.traverse(o, d, ray.t_max, |first, count, t_max| {
+            let leaf = &prims[first as usize..(first + count) as usize];
+            for (k, prim) in leaf.iter().enumerate() {
+                if let Some((t, uv)) = prim.intersect(o, d, *t_max) {
+                    *t_max = t;
+                    best = Some(Hit {
+                        t,
+                        prim: first + k as u32,
+                        uv,
+                    });
+                }
+            }
+            false
+        });
+        best
+    }
+
+    /// True when anything lies on the ray for `t ∈ (0, ray.t_max)` (stops at
+    /// the first primitive found, in no particular order).
+    #[inline]
+    pub fn occluded(&self, ray: &Ray) -> bool {
+        let (o, d) = (ray.o, ray.d);
+        let prims = &self.prims[..];
+        let mut hit = false;
+        self.bvh.traverse(o, d, ray.t_max, |first, count, t_max| {
+            let leaf = &prims[first as usize..(first + count) as usize];
+            hit = leaf
+                .iter()
+                .any(|prim| prim.intersect(o, d, *t_max).is_some());
+            hit
+        });
+        hit
+    }
+
+    /// The closest hit by testing every primitive (for tests and for
+    /// checking the BVH).
+    pub fn intersect_brute_force(&self, ray: &Ray) -> Option<Hit> {
+        let mut best: Option<Hit> = None;
+        let mut t_max = ray.t_max;
+        for (i, prim) in self.prims.iter().enumerate() {
+            if let Some((t, uv)) = prim.intersect(ray.o, ray.d, t_max) {
+                t_max = t;
+                best = Some(Hit {
+                    t,
+                    prim: i as u32,
+                    uv,
+                });
+            }
+        }
+        best
+    }
+
+    /// Position, normals, texture coordinates and shape of a hit found by
+    /// [`Geometry::intersect`] for `ray`.
+    pub fn surface_point(&self, ray: &Ray, hit: &Hit) -> SurfacePoint {
+        let src = self.sources[hit.prim as usize];
+        match &self.shapes[src.shape as usize] {
+            Shape::Sphere(s) => {
+                // o + t·d is off by a few ulps of t; reprojecting onto the
+                // sphere removes that error.
+                let p = s.reproject(ray.at(hit.t));
+                let ng = s.normal(p);
+                SurfacePoint {
+                    p,
+                    ng,
+                    ns: ng,
+                    uv: Sphere::uv(ng),
+                    shape: src.shape,
+                }
+            }
+            Shape::Quad(q) => {
+                let ng = q.normal();
+                SurfacePoint {
+                    p: q.point(hit.uv.x, hit.uv.y),
+                    ng,
+                    ns: ng,
+                    uv: hit.uv,
+                    shape: src.shape,
+                }
+            }
+            Shape::Mesh(m) => {
+                let [i0, i1, i2] = m.indices[src.local as usize].map(|i| i as usize);
+                let (b1, b2) = (hit.uv.x, hit.uv.y);
+                let b0 = 1.0 - b1 - b2;
+                let v = |i: usize| Vec3A::from(m.positions[i]);
+                let (p0, p1, p2) = (v(i0), v(i1), v(i2));
+                // p = b0·p0 + b1·p1 + b2·p2 lies on the triangle up to
+                // rounding of the vertices, unlike o + t·d.
+                let p = b0 * p0 + b1 * p1 + b2 * p2;
+                let ng = (p1 - p0).cross(p2 - p0).normalize_or(Vec3A::Z);
+                let ns = if m.normals.is_empty() {
+                    ng
+                } else {
+                    let n = |i: usize| Vec3A::from(m.normals[i]);
+                    let ns = (b0 * n(i0) + b1 * n(i1) + b2 * n(i2)).normalize_or(ng);
+                    if ns.dot(ng) < 0.0 { -ns } else { ns }
+                };
+                let uv = if m.uvs.is_empty() {
+                    hit.uv
+                } else {
+                    b0 * m.uvs[i0] + b1 * m.uvs[i1] + b2 * m.uvs[i2]
+                };
+                SurfacePoint {
+                    p,
+                    ng,
+                    ns,
+                    uv,
+                    shape: src.shape,
+                }
+            }
+        }
+    }
 }

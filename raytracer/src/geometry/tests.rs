@@ -1,0 +1,402 @@
+//! Tests of [`Geometry`]: BVH against brute force, self-intersection, leaks
+//! at corners, surface points.
+
+use std::sync::Arc;
+
+use super::*;
+use crate::math::{PI, Vec3};
+use crate::sampling::Sampler;
+
+fn uniform_sphere(s: &mut Sampler) -> Vec3A {
+    let z = 1.0 - 2.0 * s.next_1d();
+    let r = (1.0 - z * z).max(0.0).sqrt();
+    let phi = 2.0 * PI * s.next_1d();
+    Vec3A::new(r * phi.cos(), r * phi.sin(), z)
+}
+
+fn uniform_box(s: &mut Sampler, half: f32) -> Vec3A {
+    Vec3A::new(s.next_1d(), s.next_1d(), s.next_1d()) * (2.0 * half) - Vec3A::splat(half)
+}
+
+/// `n` random triangles of size about `size` in `[-1, 1]³`.
+fn soup(n: usize, size: f32, seed: u64) -> Mesh {
+    let mut mesh = Mesh::default();
+    for i in 0..n {
+        let mut s = Sampler::new(seed, i as u64, 0);
+        let c = uniform_box(&mut s, 1.0);
+        for _ in 0..3 {
+            mesh.positions.push((c + uniform_box(&mut s, size)).into());
+        }
+        let k = 3 * i as u32;
+        mesh.indices.push([k, k + 1, k + 2]);
+    }
+    mesh
+}
+
+fn cornell_walls() -> Vec<Shape> {
+    // Six walls of [-1, 1]³, normals pointing inwards (e1 × e2).
+    let q = |o: Vec3A, e1: Vec3A, e2: Vec3A| Shape::Quad(Quad { origin: o, e1, e2 });
+    let m = Vec3A::splat(-1.0);
+    let (x, y, z) = (2.0 * Vec3A::X, 2.0 * Vec3A::Y, 2.0 * Vec3A::Z);
+    vec![
+        q(m, z, x),    // floor y = -1, normal +y
+        q(-m, -x, -z), // ceiling y = 1, normal -y
+        q(m, x, y),    // back z = -1, normal +z
+        q(-m, -y, -x), // front z = 1, normal -z
+        q(m, y, z),    // left x = -1, normal +x
+        q(-m, -z, -y), // right x = 1, normal -x
+    ]
+}
+
+/// BVH and brute force agree on the closest hit (same `t` bit for bit, same
+/// primitive unless two primitives share that `t`) and on occlusion, for
+/// random rays through random triangle soups mixed with spheres and quads.
+#[test]
+fn bvh_matches_brute_force() {
+    for (n, size, rays) in [
+        (1usize, 0.5, 500usize),
+        (10, 0.5, 1000),
+        (1000, 0.1, 2000),
+        (50_000, 0.02, 600),
+    ] {
+        let mut shapes = vec![Shape::Mesh(Arc::new(soup(n, size, n as u64)))];
+        for k in 0..5 {
+            let mut s = Sampler::new(99, k, n as u64);
+            shapes.push(Shape::Sphere(Sphere {
+                center: uniform_box(&mut s, 1.0),
+                radius: 0.05 + 0.2 * s.next_1d(),
+            }));
+            shapes.push(Shape::Quad(Quad {
+                origin: uniform_box(&mut s, 1.0),
+                e1: uniform_box(&mut s, 0.3),
+                e2: uniform_box(&mut s, 0.3),
+            }));
+        }
+        let g = Geometry::new(shapes);
+        assert_eq!(g.primitive_count(), n + 10);
+        let mut hits = 0;
+        for i in 0..rays {
+            let mut s = Sampler::new(7, i as u64, n as u64);
+            let o = uniform_box(&mut s, 1.5);
+            // Half the rays aim at the objects, half go anywhere.
+            let d = if i % 2 == 0 {
+                (uniform_box(&mut s, 1.0) - o).normalize()
+            } else {
+                uniform_sphere(&mut s)
+            };
+            let t_max = if i % 3 == 0 {
+                0.5 + 2.0 * s.next_1d()
+            } else {
+                f32::INFINITY
+            };
+            let ray = Ray { o, d, t_max };
+            let fast = g.intersect(&ray);
+            let slow = g.intersect_brute_force(&ray);
+            match (fast, slow) {
+                (None, None) => {}
+                (Some(a), Some(b)) => {
+                    hits += 1;
+                    assert_eq!(a.t, b.t, "n={n} ray {i}");
+                    if a.prim != b.prim {
+                        // A tie: the other primitive must give the same t.
+                        let other = g.prims[a.prim as usize].intersect(o, d, f32::INFINITY);
+                        assert_eq!(other.map(|h| h.0), Some(b.t), "n={n} ray {i}");
+                    } else {
+                        assert_eq!(a.uv, b.uv);
+                    }
+                }
+                _ => panic!("n={n} ray {i}: bvh {fast:?} vs brute force {slow:?}"),
+            }
+            assert_eq!(g.occluded(&ray), slow.is_some(), "n={n} ray {i}");
+        }
+        // The test is only meaningful if it sees both hits and misses.
+        assert!(
+            hits > rays / 20 && hits < rays,
+            "n={n}: {hits} hits of {rays}"
+        );
+    }
+}
+
+#[test]
+fn empty_geometry_hits_nothing() {
+    let g = Geometry::new(Vec::new());
+    let r = Ray::new(Vec3A::ZERO, Vec3A::X);
+    assert!(g.intersect(&r).is_none() && !g.occluded(&r));
+    assert!(g.bounds().is_empty());
+}
+
+/// Points on a surface, found by shooting rays at it from outside.
+fn surface_points(g: &Geometry, centre: Vec3A, radius: f32, n: usize) -> Vec<(SurfacePoint, u32)> {
+    let mut out = Vec::new();
+    for i in 0..n as u64 * 4 {
+        let mut s = Sampler::new(3, i, 0);
+        let o = centre + 3.0 * radius * uniform_sphere(&mut s);
+        let target = centre + 0.8 * radius * uniform_box(&mut s, 1.0);
+        let ray = Ray::new(o, (target - o).normalize());
+        if let Some(hit) = g.intersect(&ray) {
+            out.push((g.surface_point(&ray, &hit), hit.prim));
+        }
+        if out.len() == n {
+            break;
+        }
+    }
+    assert_eq!(out.len(), n);
+    out
+}
+
+/// Rays spawned on a surface with [`Ray::spawn`] never hit that surface
+/// again at the start point. Every shape here is convex (or flat), so a ray
+/// leaving on the outer side must hit nothing at all, and a ray entering
+/// must hit another primitive (mesh) or the far side (sphere).
+#[test]
+fn spawned_rays_do_not_self_intersect() {
+    let centre = Vec3A::new(10.0, 5.0, -3.0);
+    let ico = Mesh::icosphere(3)
+        .transformed(&(Transform::translate(centre.into()) * Transform::scale(Vec3::splat(2.0))));
+    let cases: Vec<(Shape, f32)> = vec![
+        (
+            Shape::Sphere(Sphere {
+                center: centre,
+                radius: 2.0,
+            }),
+            2.0,
+        ),
+        (
+            Shape::Sphere(Sphere {
+                center: Vec3A::ZERO,
+                radius: 0.01,
+            }),
+            0.01,
+        ),
+        (
+            Shape::Quad(Quad {
+                origin: centre - Vec3A::new(1.0, 1.0, 0.3),
+                e1: Vec3A::new(2.0, 0.1, 0.0),
+                e2: Vec3A::new(0.0, 2.0, 0.5),
+            }),
+            1.5,
+        ),
+        (Shape::Mesh(Arc::new(ico)), 2.0),
+    ];
+    for (case, (shape, radius)) in cases.into_iter().enumerate() {
+        let c = match &shape {
+            Shape::Sphere(s) => s.center,
+            _ => centre,
+        };
+        let flat = matches!(shape, Shape::Quad(_));
+        let g = Geometry::new(vec![shape]);
+        for (k, (sp, prim)) in surface_points(&g, c, radius, 2000).into_iter().enumerate() {
+            let mut s = Sampler::new(11, k as u64, case as u64);
+            let d = uniform_sphere(&mut s);
+            let outward = if flat { true } else { d.dot(sp.ng) > 0.0 };
+            let hit = g.intersect(&Ray::spawn(sp.p, sp.ng, d));
+            if outward {
+                assert!(hit.is_none(), "case {case}, point {k}: re-hit {hit:?}");
+            } else if let Some(h) = hit {
+                match case {
+                    3 => assert_ne!(h.prim, prim, "case {case}, point {k}: own triangle"),
+                    // The chord 2r·cos θ, with cos θ of a uniform direction
+                    // > 1e-4 except with probability 1e-4 per ray.
+                    _ => assert!(h.t > 1e-6 * radius, "case {case}, point {k}: t = {}", h.t),
+                }
+            } else {
+                panic!("case {case}, point {k}: inward ray left a closed surface");
+            }
+        }
+    }
+}
+
+/// A closed box of six quads (the Cornell box with a front wall) and the
+/// same box as a triangle mesh: rays from inside aimed exactly at corners
+/// and at points of the edges where two walls meet always hit a wall.
+#[test]
+fn closed_boxes_do_not_leak() {
+    let cube = Shape::Mesh(Arc::new(Mesh::cube()));
+    for (name, shapes) in [("quads", cornell_walls()), ("cube mesh", vec![cube])] {
+        let g = Geometry::new(shapes);
+        let mut targets = Vec::new();
+        for i in 0..8 {
+            targets.push(Vec3A::new(
+                if i & 1 == 0 { -1.0 } else { 1.0 },
+                if i & 2 == 0 { -1.0 } else { 1.0 },
+                if i & 4 == 0 { -1.0 } else { 1.0 },
+            ));
+        }
+        for k in 0..3000u64 {
+            let mut s = Sampler::new(5, k, 0);
+            // A random point on a random one of the 12 edges (and on the
+            // faces' diagonals, where a cube mesh's two triangles meet).
+            let e = (s.next_1d() * 12.0) as usize;
+            let (axis, a, b) = (e / 4, e & 1, (e >> 1) & 1);
+            let mut p = Vec3A::ZERO;
+            p[axis] = 2.0 * s.next_1d() - 1.0;
+            p[(axis + 1) % 3] = if a == 0 { -1.0 } else { 1.0 };
+            p[(axis + 2) % 3] = if b == 0 { -1.0 } else { 1.0 };
+            targets.push(p);
+            let mut q = Vec3A::splat(2.0 * s.next_1d() - 1.0);
+            q[axis] = if a == 0 { -1.0 } else { 1.0 };
+            targets.push(q);
+        }
+        for (k, &target) in targets.iter().enumerate() {
+            for j in 0..4u64 {
+                let mut s = Sampler::new(6, k as u64, j);
+                let o = uniform_box(&mut s, 0.95);
+                let ray = Ray::new(o, (target - o).normalize());
+                let hit = g.intersect(&ray);
+                assert!(hit.is_some(), "{name}: ray from {o} to {target} escaped");
+                let dist = (target - o).length();
+                assert!((hit.unwrap().t - dist).abs() < 1e-4 * dist.max(1.0));
+            }
+        }
+    }
+}
+
+#[test]
+fn surface_points_are_sane() {
+    let obj = "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n";
+    let textured = Mesh::from_obj_str(obj, "wall.obj").unwrap();
+    let ico = Mesh::icosphere(4).transformed(&Transform::translate(Vec3::new(0.0, 3.0, 0.0)));
+    let shapes = vec![
+        Shape::Sphere(Sphere {
+            center: Vec3A::new(3.0, 0.0, 0.0),
+            radius: 0.5,
+        }),
+        Shape::Quad(Quad {
+            origin: Vec3A::new(-3.0, -0.5, -0.5),
+            e1: Vec3A::new(0.0, 1.0, 0.0),
+            e2: Vec3A::new(0.0, 0.0, 1.0),
+        }),
+        Shape::Mesh(Arc::new(textured)),
+        Shape::Mesh(Arc::new(ico)),
+    ];
+    let g = Geometry::new(shapes);
+    let centres = [
+        Vec3A::new(3.0, 0.0, 0.0),
+        Vec3A::new(-3.0, 0.0, 0.0),
+        Vec3A::new(0.0, 0.0, -1.0),
+        Vec3A::new(0.0, 3.0, 0.0),
+    ];
+    let mut seen = [0; 4];
+    for i in 0..4000u64 {
+        let mut s = Sampler::new(8, i, 0);
+        let shape = (i % 4) as usize;
+        let target = centres[shape]
+            + uniform_box(&mut s, 0.4) * Vec3A::new(1.0, 1.0, if shape == 2 { 0.0 } else { 1.0 });
+        let o = Vec3A::new(0.0, 0.0, 6.0) + uniform_box(&mut s, 0.5);
+        let ray = Ray::new(o, (target - o).normalize());
+        let Some(hit) = g.intersect(&ray) else {
+            continue;
+        };
+        let sp = g.surface_point(&ray, &hit);
+        assert!((sp.ng.length() - 1.0).abs() < 1e-5 && (sp.ns.length() - 1.0).abs() < 1e-5);
+        assert!(sp.ns.dot(sp.ng) > 0.0);
+        assert!(
+            (0.0..=1.0).contains(&sp.uv.x) && (0.0..=1.0).contains(&sp.uv.y),
+            "{sp:?}"
+        );
+        assert!((sp.p - ray.at(hit.t)).length() < 1e-4, "{sp:?}");
+        seen[sp.shape as usize] += 1;
+        match sp.shape {
+            0 => {
+                let r = sp.p - centres[0];
+                assert!((r.length() - 0.5).abs() < 1e-6);
+                assert!((sp.ng - r / 0.5).length() < 1e-5);
+                // Latitude: v = θ/π with cos θ = n_y.
+                assert!((sp.uv.y - sp.ng.y.clamp(-1.0, 1.0).acos() / PI).abs() < 1e-5);
+            }
+            1 => {
+                assert_eq!(sp.ng, Vec3A::X);
+                assert!((sp.uv - Vec2::new(sp.p.y + 0.5, sp.p.z + 0.5)).length() < 1e-5);
+            }
+            2 => {
+                assert!((sp.ng - Vec3A::Z).length() < 1e-6);
+                // uv = (x + 1, y + 1) / 2 from the file's texture coordinates.
+                let expect = Vec2::new(sp.p.x + 1.0, sp.p.y + 1.0) * 0.5;
+                assert!((sp.uv - expect).length() < 1e-5, "{sp:?}");
+            }
+            _ => {
+                // Smooth normal ≈ radial direction; faceted ng within a few degrees.
+                let radial = (sp.p - centres[3]).normalize();
+                assert!((sp.ns - radial).length() < 1e-3, "{sp:?}");
+                assert!(sp.ng.dot(radial) > 0.99);
+            }
+        }
+    }
+    assert!(seen.iter().all(|&c| c > 200), "{seen:?}");
+}
+
+/// The Cornell box's small box: cube → Mitsuba transform → world AABB as
+/// in the reference (/work/shared/reference/cornell_box_mitsuba.txt §4).
+#[test]
+fn transformed_cube_matches_mitsuba() {
+    let t = Transform::translate(Vec3::new(0.335, -0.7, 0.38))
+        * Transform::rotate(Vec3::Y, -17.0)
+        * Transform::scale(Vec3::splat(0.3));
+    let g = Geometry::new(vec![Shape::Mesh(Arc::new(Mesh::cube().transformed(&t)))]);
+    let b = g.bounds();
+    assert!(
+        (b.min - Vec3A::new(-0.039603, -1.0, 0.005397))
+            .abs()
+            .max_element()
+            < 1e-4
+    );
+    assert!(
+        (b.max - Vec3A::new(0.709603, -0.4, 0.754603))
+            .abs()
+            .max_element()
+            < 1e-4
+    );
+    let area = match &g.shapes()[0] {
+        Shape::Mesh(m) => m.area(),
+        _ => unreachable!(),
+    };
+    assert!((area - 2.16).abs() < 1e-4);
+}
+
+#[test]
+#[ignore]
+fn debug_stats() {
+    let g = Geometry::new(vec![Shape::Mesh(Arc::new(Mesh::icosphere(6)))]);
+    let (mut leaves, mut tris) = (0usize, 0usize);
+    for n in &g.bvh.nodes[2..] {
+        if n.count() > 0 {
+            leaves += 1;
+            tris += n.count() as usize;
+        }
+    }
+    println!(
+        "nodes {} leaves {} avg leaf {}",
+        g.bvh.nodes.len(),
+        leaves,
+        tris as f32 / leaves as f32
+    );
+    let t = 20f32.to_radians().tan();
+    let (mut nl, mut nt, mut nrays) = (0usize, 0usize, 0usize);
+    for j in (0..1000).step_by(7) {
+        for i in (0..1000).step_by(7) {
+            let s = |k: usize| (k as f32 + 0.5) / 1000.0 * 2.0 - 1.0;
+            let d = Vec3A::new(s(i) * t, -s(j) * t, -1.0).normalize();
+            let mut t_max = f32::INFINITY;
+            g.bvh
+                .traverse(Vec3A::new(0.0, 0.0, 3.0), d, t_max, |f, c, tm| {
+                    nl += 1;
+                    nt += c as usize;
+                    for k in f..f + c {
+                        if let Some((t, _)) =
+                            g.prims[k as usize].intersect(Vec3A::new(0.0, 0.0, 3.0), d, *tm)
+                        {
+                            *tm = t;
+                        }
+                    }
+                    false
+                });
+            t_max += 0.0;
+            nrays += 1;
+        }
+    }
+    println!(
+        "per ray: leaves {} tris {}",
+        nl as f32 / nrays as f32,
+        nt as f32 / nrays as f32
+    );
+}
