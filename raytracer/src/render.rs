@@ -25,8 +25,10 @@
 //! `stats.interrupted` is set.
 
 use crate::film::{Film, FilmTile, Splat};
+use crate::integrator::Integrator;
 use crate::math::{Color, UVec2};
 use crate::sampling::Sampler;
+use crate::scene::Scene;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::collections::VecDeque;
 use std::io::IsTerminal;
@@ -148,6 +150,17 @@ where
     F: Fn(UVec2, &mut Sampler, &mut Vec<Splat>) -> Color + Sync,
 {
     render_pixels_with_stop(width, height, options, &INTERRUPTED, sample)
+}
+
+/// Renders `scene` with `integrator`: every pixel sample of the scene's
+/// camera resolution is one call of [`Integrator::sample`].
+pub fn render(scene: &Scene, integrator: &dyn Integrator, options: &RenderOptions) -> RenderResult {
+    render_pixels(
+        scene.camera.width,
+        scene.camera.height,
+        options,
+        |pixel, sampler, splats| integrator.sample(scene, pixel, sampler, splats),
+    )
 }
 
 /// [`render_pixels`] that watches its own stop flag instead of the global

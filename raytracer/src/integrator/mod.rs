@@ -25,3 +25,24 @@ pub trait Integrator: Sync {
         splats: &mut Vec<Splat>,
     ) -> Color;
 }
+
+mod ao;
+mod direct;
+mod naive;
+pub mod nee;
+mod path;
+
+pub use ao::AmbientOcclusion;
+pub use direct::Direct;
+pub use naive::NaiveRecursive;
+pub use path::{DirectStrategy, PathTracer};
+
+/// The primary ray of a pixel sample: a uniform point in the pixel (a box
+/// filter: each sample counts fully for its own pixel) and a point on the lens.
+/// Uses the sampler's next four numbers.
+#[inline]
+pub fn camera_ray(scene: &Scene, pixel: UVec2, sampler: &mut Sampler) -> crate::math::Ray {
+    let film = sampler.next_2d();
+    let lens = sampler.next_2d();
+    scene.camera.generate_ray(pixel.as_vec2() + film, lens)
+}

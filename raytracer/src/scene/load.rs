@@ -461,14 +461,8 @@ impl Context<'_> {
             }
             None => None,
         };
-        // TODO(lead): use EnvironmentLight::new; the scene sets the bounding
-        // sphere once the geometry is built.
-        Ok(Light::Environment(EnvironmentLight {
-            radiance,
-            map,
-            scene_center: Vec3A::ZERO,
-            scene_radius: 0.0,
-        }))
+        // The scene sets the bounding sphere once its geometry is built.
+        Ok(Light::Environment(EnvironmentLight::new(radiance, map)))
     }
 }
 

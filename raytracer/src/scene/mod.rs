@@ -12,12 +12,15 @@ pub mod load;
 pub use builtin::{BUILTIN_SCENES, BuiltinScene, builtin, load_builtin, write_builtin};
 pub use error::SceneError;
 pub use load::{SceneOrigin, load_file, load_str};
+mod interaction;
 
 use crate::brdf::Brdf;
-use crate::camera::CameraParams;
-use crate::geometry::Shape;
-use crate::light::Light;
-use crate::math::Color;
+use crate::camera::{Camera, CameraParams};
+use crate::geometry::{Geometry, Shape};
+use crate::light::{AreaLight, AreaShape, Light};
+use crate::math::{Color, Ray};
+
+pub use interaction::Interaction;
 
 /// How to render a scene unless the command line says otherwise.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -33,6 +36,17 @@ pub struct RenderSettings {
     /// Depth from which Russian roulette may end a path (Mitsuba's `rr_depth`).
     pub rr_depth: u32,
     pub seed: u64,
+}
+
+impl RenderSettings {
+    /// Render options with this scene's samples per pixel and seed.
+    pub fn render_options(&self) -> crate::render::RenderOptions {
+        crate::render::RenderOptions {
+            spp: self.spp,
+            seed: self.seed,
+            ..Default::default()
+        }
+    }
 }
 
 impl Default for RenderSettings {
@@ -76,6 +90,175 @@ pub struct SceneParts {
     /// Lights that are not shapes: point lights and the environment.
     pub lights: Vec<Light>,
 }
+
+/// What a shape is made of: its BRDF and, if it glows, its area light.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ObjectInfo {
+    pub name: String,
+    /// Index into [`Scene::brdfs`].
+    pub brdf: u32,
+    /// Index into [`Scene::lights`] if the shape emits.
+    pub light: Option<u32>,
+}
+
+/// A scene ready to render: camera, geometry with its BVH, BRDFs and lights.
+#[derive(Clone, Debug)]
 pub struct Scene {
-    pub parts: SceneParts,
+    /// Built-in name or file name, for messages and file names.
+    pub name: String,
+    pub camera: Camera,
+    pub settings: RenderSettings,
+    pub geometry: Geometry,
+    /// One entry per shape of `geometry`, in the same order.
+    pub objects: Vec<ObjectInfo>,
+    pub brdf_names: Vec<String>,
+    pub brdfs: Vec<Brdf>,
+    /// Every light: the area lights of emitting shapes, point lights and the
+    /// environment.
+    pub lights: Vec<Light>,
+    /// Index of the environment in `lights`, if the scene has one.
+    pub environment: Option<u32>,
+}
+
+impl Scene {
+    /// A built-in scene by name (`lesson11 scenes` lists them).
+    pub fn builtin(name: &str) -> Result<Scene, SceneError> {
+        Ok(Scene::build(name, builtin::load_builtin(name)?))
+    }
+
+    /// A scene file (TOML, see `raytracer/scenes/README.md`).
+    pub fn load(path: &std::path::Path) -> Result<Scene, SceneError> {
+        let name = path
+            .file_stem()
+            .map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());
+        Ok(Scene::build(&name, load::load_file(path)?))
+    }
+
+    /// Assembles checked parts: emitting shapes become area lights, every
+    /// shape goes into one BVH, the environment learns the scene's bounds.
+    pub fn build(name: &str, parts: SceneParts) -> Scene {
+        let mut lights = Vec::new();
+        let mut objects = Vec::with_capacity(parts.objects.len());
+        let mut shapes = Vec::with_capacity(parts.objects.len());
+        for object in parts.objects {
+            let light = object.emitter.and_then(|e| {
+                let shape = match &object.shape {
+                    Shape::Quad(q) => AreaShape::Quad(*q),
+                    Shape::Sphere(s) => AreaShape::Sphere(*s),
+                    // The loader only lets quads and spheres emit.
+                    Shape::Mesh(_) => return None,
+                };
+                lights.push(Light::Area(AreaLight {
+                    shape,
+                    radiance: e.radiance,
+                    two_sided: e.two_sided,
+                }));
+                Some(lights.len() as u32 - 1)
+            });
+            objects.push(ObjectInfo {
+                name: object.name,
+                brdf: object.brdf,
+                light,
+            });
+            shapes.push(object.shape);
+        }
+        let geometry = Geometry::new(shapes);
+        let bounds = geometry.bounds();
+        let (center, radius) = if bounds.is_empty() {
+            (crate::math::Vec3A::ZERO, 1.0)
+        } else {
+            let c = bounds.centroid();
+            (c, (bounds.max - c).length().max(1e-3))
+        };
+        let mut environment = None;
+        for mut light in parts.lights {
+            if let Light::Environment(env) = &mut light {
+                env.set_scene_bounds(center, radius);
+                environment = Some(lights.len() as u32);
+            }
+            lights.push(light);
+        }
+        let settings = parts.settings;
+        Scene {
+            name: name.to_string(),
+            camera: Camera::new(parts.camera, settings.width, settings.height),
+            settings,
+            geometry,
+            objects,
+            brdf_names: parts.brdf_names,
+            brdfs: parts.brdfs,
+            lights,
+            environment,
+        }
+    }
+
+    /// Changes the image size (and the camera's aspect ratio with it).
+    pub fn set_resolution(&mut self, width: u32, height: u32) {
+        self.settings.width = width;
+        self.settings.height = height;
+        self.camera = Camera::new(self.camera.params, width, height);
+    }
+
+    /// The first surface along `ray`, with everything shading needs.
+    #[inline]
+    pub fn intersect(&self, ray: &Ray) -> Option<Interaction> {
+        let hit = self.geometry.intersect(ray)?;
+        let sp = self.geometry.surface_point(ray, &hit);
+        Some(Interaction::new(sp, hit.t, -ray.d))
+    }
+
+    /// Whether nothing blocks `ray` before its `t_max` (a shadow ray).
+    #[inline]
+    pub fn unoccluded(&self, ray: &Ray) -> bool {
+        !self.geometry.occluded(ray)
+    }
+
+    /// Picks a light for next event estimation: uniformly, as Mitsuba does
+    /// (each of `n` lights with probability `1/n`). Returns the index, the
+    /// light and the probability.
+    #[inline]
+    pub fn choose_light(&self, u: f32) -> Option<(u32, &Light, f32)> {
+        let n = self.lights.len();
+        if n == 0 {
+            return None;
+        }
+        let i = ((u * n as f32) as usize).min(n - 1);
+        Some((i as u32, &self.lights[i], 1.0 / n as f32))
+    }
+
+    /// Probability that [`Self::choose_light`] picks light `index`.
+    #[inline]
+    pub fn light_pmf(&self, _index: u32) -> f32 {
+        1.0 / self.lights.len().max(1) as f32
+    }
+
+    /// Radiance arriving along a ray that left the scene (the environment, or black).
+    #[inline]
+    pub fn escaped_radiance(&self, d: crate::math::Vec3A) -> Color {
+        match self.environment.map(|i| &self.lights[i as usize]) {
+            Some(Light::Environment(env)) => env.environment_radiance(d),
+            _ => Color::ZERO,
+        }
+    }
+
+    /// The BRDF at a hit.
+    #[inline]
+    pub fn brdf(&self, it: &Interaction) -> &Brdf {
+        &self.brdfs[self.objects[it.shape as usize].brdf as usize]
+    }
+
+    /// The area light of the shape hit, if it emits, with its index.
+    #[inline]
+    pub fn area_light(&self, it: &Interaction) -> Option<(u32, &Light)> {
+        self.objects[it.shape as usize]
+            .light
+            .map(|i| (i, &self.lights[i as usize]))
+    }
+
+    /// Radiance emitted by the hit surface towards `it.wo` (zero unless it is a light).
+    #[inline]
+    pub fn emitted(&self, it: &Interaction) -> Color {
+        self.area_light(it)
+            .map_or(Color::ZERO, |(_, l)| l.le(it.ng, it.wo))
+    }
 }

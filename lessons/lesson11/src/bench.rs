@@ -1,0 +1,69 @@
+//! `lesson11 bench`: the figures behind every speed claim of the README.
+
+use std::time::Instant;
+
+use anyhow::Result;
+use clap::Args;
+use raytracer::integrator::Direct;
+use raytracer::render::{RenderOptions, render};
+use raytracer::scene::Scene;
+
+/// Measure primary-ray throughput on large meshes and direct-lighting samples
+/// per second on the Cornell box (256×256). Run it with --release.
+#[derive(Args, Debug)]
+pub struct BenchArgs {
+    /// Thread counts to measure (comma separated; default: 1 and all cores).
+    #[arg(long, value_delimiter = ',')]
+    pub threads: Vec<usize>,
+    /// Samples per pixel of the Cornell box measurement.
+    #[arg(long, default_value_t = 64)]
+    pub spp: u32,
+    /// Skip the ray-throughput part.
+    #[arg(long)]
+    pub no_rays: bool,
+}
+
+pub fn run(args: &BenchArgs) -> Result<()> {
+    if cfg!(debug_assertions) {
+        println!("note: this is not a --release build; figures will be lower than the README's");
+    }
+    let all = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let threads = if args.threads.is_empty() {
+        let mut t = vec![1, all];
+        t.dedup();
+        t
+    } else {
+        args.threads.clone()
+    };
+    if !args.no_rays {
+        crate::bench_rays::run(&threads)?;
+    }
+    println!(
+        "\nDirect lighting (next event estimation + BRDF sampling, MIS) on `cornell`, 256×256, {} spp",
+        args.spp
+    );
+    let t = Instant::now();
+    let scene = Scene::builtin("cornell")?;
+    println!(
+        "  scene load + BVH build: {:.3} ms",
+        t.elapsed().as_secs_f64() * 1e3
+    );
+    println!("  {:>8} {:>12} {:>18}", "threads", "seconds", "M samples/s");
+    for &n in &threads {
+        let options = RenderOptions {
+            spp: args.spp,
+            seed: 1,
+            threads: Some(n),
+            progress: false,
+            ..RenderOptions::default()
+        };
+        let result = render(&scene, &Direct, &options);
+        println!(
+            "  {:>8} {:>12.3} {:>18.2}",
+            n,
+            result.stats.elapsed.as_secs_f64(),
+            result.stats.samples_per_second() / 1e6
+        );
+    }
+    Ok(())
+}

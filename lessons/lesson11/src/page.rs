@@ -1,0 +1,112 @@
+//! The page that shows the lesson's pictures: one self-contained HTML file,
+//! no scripts and no network.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result};
+
+use crate::render_cmd::Picture;
+
+/// A picture with its caption, linked relative to the page.
+pub struct Figure {
+    pub src: String,
+    pub exr: String,
+    pub caption: String,
+}
+
+impl Figure {
+    pub fn new(root: &Path, picture: &Picture, caption: &str) -> Self {
+        let rel = |p: &Path| {
+            p.strip_prefix(root)
+                .unwrap_or(p)
+                .to_string_lossy()
+                .replace('\\', "/")
+        };
+        Figure {
+            src: rel(&picture.png),
+            exr: rel(&picture.exr),
+            caption: format!("{caption} ({} spp, {:.1} s)", picture.spp, picture.seconds),
+        }
+    }
+}
+
+/// One chapter of the page.
+pub struct Section {
+    pub title: String,
+    pub text: String,
+    pub figures: Vec<Figure>,
+}
+
+impl Section {
+    pub fn new(title: &str, text: &str) -> Self {
+        Section {
+            title: title.into(),
+            text: text.into(),
+            figures: Vec::new(),
+        }
+    }
+}
+
+/// The whole page.
+pub struct Page {
+    pub title: String,
+    pub sections: Vec<Section>,
+}
+
+fn escape(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+impl Page {
+    pub fn new(title: &str) -> Self {
+        Page {
+            title: title.into(),
+            sections: Vec::new(),
+        }
+    }
+
+    pub fn to_html(&self) -> String {
+        let mut h = String::new();
+        let _ = write!(
+            h,
+            "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>{t}</title>\n<style>\
+             body{{font-family:system-ui,sans-serif;max-width:72rem;margin:2rem auto;padding:0 1rem;background:#111;color:#eee}}\
+             figure{{display:inline-block;margin:0.5rem;vertical-align:top;max-width:20rem}}\
+             img{{width:100%;image-rendering:pixelated;border:1px solid #333}}\
+             figcaption{{font-size:0.9rem;color:#bbb}} a{{color:#8cf}}</style></head><body>\n<h1>{t}</h1>\n",
+            t = escape(&self.title)
+        );
+        for s in &self.sections {
+            let _ = write!(
+                h,
+                "<section><h2>{}</h2><p>{}</p>\n",
+                escape(&s.title),
+                escape(&s.text)
+            );
+            for f in &s.figures {
+                let _ = writeln!(
+                    h,
+                    "<figure><a href=\"{src}\"><img src=\"{src}\" alt=\"{cap}\"></a><figcaption>{cap} · <a href=\"{exr}\">EXR</a></figcaption></figure>",
+                    src = escape(&f.src),
+                    exr = escape(&f.exr),
+                    cap = escape(&f.caption)
+                );
+            }
+            h.push_str("</section>\n");
+        }
+        h.push_str("</body></html>\n");
+        h
+    }
+
+    /// Writes `dir/index.html`.
+    pub fn write(&self, dir: &Path) -> Result<PathBuf> {
+        let path = dir.join("index.html");
+        std::fs::write(&path, self.to_html())
+            .with_context(|| format!("cannot write {}", path.display()))?;
+        Ok(path)
+    }
+}

@@ -1,0 +1,65 @@
+//! Direct lighting: light that reaches the camera after exactly one bounce.
+//!
+//! Lecture topic: what local illumination computes, and the first term of the
+//! rendering equation's recursion. With Mitsuba's depth convention this is
+//! `max_depth = 2`: emitters seen directly, plus light that travels
+//! light → surface → camera. Both ways of finding that light are used and
+//! combined with MIS (power heuristic): a sample on a light (next event
+//! estimation, best for small lights and rough surfaces) and a sample of the
+//! BRDF (best for large lights and glossy or mirror surfaces).
+
+use super::{Integrator, camera_ray, nee};
+use crate::brdf::TransportMode;
+use crate::film::Splat;
+use crate::math::{Color, UVec2};
+use crate::sampling::Sampler;
+use crate::scene::Scene;
+
+/// Direct lighting with next event estimation and BRDF sampling under MIS.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Direct;
+
+impl Integrator for Direct {
+    fn name(&self) -> &'static str {
+        "direct"
+    }
+
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _splats: &mut Vec<Splat>,
+    ) -> Color {
+        let ray = camera_ray(scene, pixel, sampler);
+        let Some(it) = scene.intersect(&ray) else {
+            return scene.escaped_radiance(ray.d);
+        };
+        // L_e seen directly (depth 1).
+        let mut l = scene.emitted(&it);
+        let brdf = scene.brdf(&it);
+
+        // Light sampling.
+        l += nee::sample_light(scene, &it, brdf, sampler, true);
+
+        // BRDF sampling: follow one direction and see whether it reaches a light.
+        let wo = it.frame.to_local(it.wo);
+        let (u_lobe, u) = (sampler.next_1d(), sampler.next_2d());
+        let Some(bs) = brdf.sample(wo, it.uv, u_lobe, u, TransportMode::Radiance) else {
+            return l;
+        };
+        let wi = it.frame.to_world(bs.wi);
+        let weight = bs.f * (bs.wi.z.abs() / bs.pdf_w);
+        let next_ray = it.spawn_ray(wi);
+        let next = scene.intersect(&next_ray);
+        if let Some(e) = nee::emitter_hit(scene, &next_ray, next.as_ref()) {
+            let w = if bs.is_delta {
+                1.0
+            } else {
+                nee::brdf_sample_weight(scene, it.p, bs.pdf_w, e.light, e.p, e.n, wi)
+            };
+            l += weight * e.le * w;
+        }
+        l
+    }
+}

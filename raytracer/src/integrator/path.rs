@@ -1,0 +1,138 @@
+//! Path tracing: one random walk per sample, from the camera towards the lights.
+//!
+//! Lecture topic: "Path tracing". Instead of the naive recursion's N rays at
+//! every hit (N^D rays per pixel), a path continues with exactly one
+//! direction per bounce; many paths per pixel average out the noise (and
+//! anti-alias the image for free). At every vertex the light arriving
+//! directly from the emitters is estimated twice — by sampling a light (next
+//! event estimation) and by the continuation ray happening to hit one — and
+//! the two are combined by multiple importance sampling (power heuristic).
+//!
+//! The estimator of one path `x_0 … x_k`, with throughput
+//! `β_k = Π f_r · |cos θ_i| / p(ω_i)`, adds `β_k · L_e` at each vertex; Russian
+//! roulette ends the path with probability `1 − q` after `rr_depth` bounces and
+//! divides the survivors' throughput by `q`, which keeps the estimate unbiased.
+//!
+//! Depth follows Mitsuba: with `max_depth = D`, a path has at most `D − 1`
+//! scattering vertices (D = 1: only emitters seen directly).
+
+use super::{Integrator, camera_ray, nee};
+use crate::brdf::TransportMode;
+use crate::film::Splat;
+use crate::math::{Color, UVec2};
+use crate::sampling::Sampler;
+use crate::scene::Scene;
+
+/// Which estimators of direct light the path tracer uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum DirectStrategy {
+    /// Light sampling and BRDF sampling combined by MIS (the default).
+    #[default]
+    Mis,
+    /// BRDF sampling only: light is found only when a path happens to hit it
+    /// (hopeless for small lights, impossible for point lights).
+    BrdfOnly,
+    /// Light sampling only, without MIS: the BRDF-sampled path counts emitters
+    /// only after a delta bounce (noisy on glossy surfaces under large lights).
+    LightOnly,
+}
+
+/// The path tracer.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PathTracer {
+    /// Maximum depth (Mitsuba's convention); `None` = unlimited.
+    pub max_depth: Option<u32>,
+    /// Russian roulette starts once this many bounces have been made.
+    pub rr_depth: u32,
+    pub strategy: DirectStrategy,
+}
+
+impl Default for PathTracer {
+    fn default() -> Self {
+        PathTracer {
+            max_depth: None,
+            rr_depth: 5,
+            strategy: DirectStrategy::Mis,
+        }
+    }
+}
+
+impl Integrator for PathTracer {
+    fn name(&self) -> &'static str {
+        match self.strategy {
+            DirectStrategy::Mis => "path",
+            DirectStrategy::BrdfOnly => "path-brdf",
+            DirectStrategy::LightOnly => "path-nee",
+        }
+    }
+
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _splats: &mut Vec<Splat>,
+    ) -> Color {
+        let max_depth = self.max_depth.unwrap_or(u32::MAX);
+        let use_nee = self.strategy != DirectStrategy::BrdfOnly;
+        let mut ray = camera_ray(scene, pixel, sampler);
+        let mut l = Color::ZERO;
+        let mut beta = Color::ONE;
+        // Relative IOR accumulated along the path (radiance is scaled by 1/η²
+        // through glass; roulette undoes that to judge the path fairly).
+        let mut eta_scale = 1.0f32;
+        // Density and delta flag of the BRDF sample that produced `ray`, and its
+        // origin, for the MIS weight of an emitter the ray hits.
+        let mut prev: Option<(crate::math::Vec3A, f32, bool)> = None;
+        let mut depth = 0u32;
+        if max_depth == 0 {
+            return l;
+        }
+        loop {
+            let hit = scene.intersect(&ray);
+            // Emitted light reached by the ray (counted while depth < max_depth).
+            if let Some(e) = nee::emitter_hit(scene, &ray, hit.as_ref()) {
+                let weight = match (&prev, self.strategy) {
+                    (None, _) | (Some((_, _, true)), _) | (Some(_), DirectStrategy::BrdfOnly) => {
+                        1.0
+                    }
+                    (Some(_), DirectStrategy::LightOnly) => 0.0,
+                    (Some((from, pdf, false)), DirectStrategy::Mis) => {
+                        nee::brdf_sample_weight(scene, *from, *pdf, e.light, e.p, e.n, ray.d)
+                    }
+                };
+                l += beta * e.le * weight;
+            }
+            let Some(it) = hit else { break };
+            if depth + 1 >= max_depth {
+                break;
+            }
+            let brdf = scene.brdf(&it);
+            if use_nee {
+                let mis = self.strategy == DirectStrategy::Mis;
+                l += beta * nee::sample_light(scene, &it, brdf, sampler, mis);
+            }
+            // Continue the path in one direction sampled from the BRDF.
+            let wo = it.frame.to_local(it.wo);
+            let (u_lobe, u) = (sampler.next_1d(), sampler.next_2d());
+            let Some(bs) = brdf.sample(wo, it.uv, u_lobe, u, TransportMode::Radiance) else {
+                break;
+            };
+            beta *= bs.f * (bs.wi.z.abs() / bs.pdf_w);
+            eta_scale *= bs.eta * bs.eta;
+            let wi = it.frame.to_world(bs.wi);
+            ray = it.spawn_ray(wi);
+            prev = Some((it.p, bs.pdf_w, bs.is_delta));
+            depth += 1;
+            // Russian roulette (unbiased: survivors are divided by q).
+            if depth >= self.rr_depth {
+                let q = (beta.max_element() * eta_scale).min(0.95);
+                if q <= 0.0 || sampler.next_1d() >= q {
+                    break;
+                }
+                beta /= q;
+            }
+        }
+        l
+    }
+}
