@@ -4,7 +4,9 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
 use clap::{Args, ValueEnum};
-use raytracer::integrator::{AmbientOcclusion, Direct, Integrator};
+use raytracer::integrator::{
+    AmbientOcclusion, Direct, DirectStrategy, Integrator, NaiveRecursive, PathTracer,
+};
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
 
@@ -17,17 +19,71 @@ pub enum IntegratorKind {
     Direct,
     /// Ambient occlusion: the fraction of the hemisphere that is open (not physically based).
     Ao,
+    /// Path tracing: one continuation per bounce, light sampling and BRDF sampling under MIS.
+    Path,
+    /// Path tracing with BRDF sampling only (a teaching baseline: lights are found by chance).
+    PathBrdf,
+    /// Path tracing with light sampling only, no MIS (a teaching baseline).
+    PathNee,
+    /// Naive recursive Monte Carlo: N rays at every hit (see --branching), N^D rays per sample.
+    Naive,
 }
 
 impl IntegratorKind {
-    pub fn build(self, ao_distance: f32) -> Box<dyn Integrator> {
+    pub fn build(self, args: &IntegratorArgs, scene: &Scene) -> Box<dyn Integrator> {
+        let max_depth = match args.max_depth {
+            Some(d) if d < 0 => None,
+            Some(d) => Some(d as u32),
+            None => scene.settings.max_depth,
+        };
+        let rr_depth = args.rr_depth.unwrap_or(scene.settings.rr_depth);
+        let path = |strategy| {
+            Box::new(PathTracer {
+                max_depth,
+                rr_depth,
+                strategy,
+            })
+        };
         match self {
             IntegratorKind::Direct => Box::new(Direct),
             IntegratorKind::Ao => Box::new(AmbientOcclusion {
-                distance: ao_distance,
+                distance: args.ao_distance,
             }),
+            IntegratorKind::Path => path(DirectStrategy::Mis),
+            IntegratorKind::PathBrdf => path(DirectStrategy::BrdfOnly),
+            IntegratorKind::PathNee => path(DirectStrategy::LightOnly),
+            IntegratorKind::Naive => {
+                let mut naive = NaiveRecursive::new(args.branching.clone(), max_depth.or(Some(4)));
+                naive.roulette_depth = args.roulette.then_some(rr_depth);
+                naive.cutoff = args.cutoff;
+                Box::new(naive)
+            }
         }
     }
+}
+
+/// Options of the integrators.
+#[derive(Args, Debug, Clone)]
+pub struct IntegratorArgs {
+    /// Maximum path depth, Mitsuba's convention: 1 = emitters seen directly, 2 = direct light,
+    /// D = at most D−1 bounces, −1 = unlimited (default: the scene's).
+    #[arg(long, allow_negative_numbers = true)]
+    pub max_depth: Option<i32>,
+    /// Russian roulette may end paths after this many bounces (default: the scene's).
+    #[arg(long)]
+    pub rr_depth: Option<u32>,
+    /// Branching factor of naive recursion, one per level (the last repeats), e.g. 16,4,2.
+    #[arg(long, value_delimiter = ',', default_value = "8")]
+    pub branching: Vec<u32>,
+    /// Naive recursion: end by Russian roulette (unbiased) from --rr-depth on.
+    #[arg(long)]
+    pub roulette: bool,
+    /// Naive recursion: stop once the product of BRDF weights is below this (the lecture's idea; biased).
+    #[arg(long)]
+    pub cutoff: Option<f32>,
+    /// Length of the occlusion rays of `--integrator ao`, in scene units (metres).
+    #[arg(long, default_value_t = 1.0)]
+    pub ao_distance: f32,
 }
 
 /// Render a scene with one integrator and write NAME.png (tone mapped, sRGB),
@@ -39,17 +95,19 @@ pub struct RenderArgs {
     /// The algorithm that estimates each pixel.
     #[arg(long, short, value_enum, default_value = "direct")]
     pub integrator: IntegratorKind,
+    #[command(flatten)]
+    pub integrator_args: IntegratorArgs,
     /// Exposure in stops for the PNG (+1 doubles the brightness); the EXR is never changed.
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     pub exposure: f32,
-    /// Length of the occlusion rays of `--integrator ao`, in scene units (metres).
-    #[arg(long, default_value_t = 1.0)]
-    pub ao_distance: f32,
 }
 
 pub fn run(args: &RenderArgs) -> Result<()> {
     let (scene, options) = args.scene.load("cornell")?;
-    let integrator = args.integrator.build(args.ao_distance);
+    if args.integrator_args.branching.contains(&0) {
+        anyhow::bail!("--branching factors must be at least 1");
+    }
+    let integrator = args.integrator.build(&args.integrator_args, &scene);
     let stem = format!("{}-{}", scene.name, integrator.name());
     render_to_files(
         &scene,
@@ -102,24 +160,16 @@ pub fn render_to_files(
     let stats = &result.stats;
     let seconds = stats.elapsed.as_secs_f64();
     println!(
-        "  {}  ({} spp, {}×{}, {:.2} s, {:.2} M samples/s{}{})",
+        "  wrote {} and .exr ({} spp, {seconds:.2} s)",
         png.display(),
-        options.spp,
-        scene.camera.width,
-        scene.camera.height,
-        seconds,
-        stats.samples_per_second() / 1e6,
-        if stats.nonfinite > 0 {
-            format!(", {} non-finite samples dropped", stats.nonfinite)
-        } else {
-            String::new()
-        },
-        if stats.interrupted {
-            ", INTERRUPTED: partial image written"
-        } else {
-            ""
-        },
+        options.spp
     );
+    if stats.nonfinite > 0 {
+        println!(
+            "  note: {} samples were NaN, infinite or negative and counted as zero",
+            stats.nonfinite
+        );
+    }
     if stats.interrupted {
         anyhow::bail!(
             "interrupted by Ctrl-C; what was rendered so far is in {}",

@@ -85,11 +85,16 @@ impl AreaLight {
         }
     }
 
-    /// Whether a receiver at `p` is inside a sphere light (then it is
-    /// sampled by area, not by cone).
+    /// Whether a receiver at `p` is inside a sphere light, or so close to its
+    /// surface that rounding could put it on either side (then it is sampled
+    /// by area, not by cone). Area sampling is unbiased from anywhere; the
+    /// cone is only a better choice from clearly outside. A receiver *on* the
+    /// sphere (the furnace: the light shining on its own inner wall) would
+    /// otherwise be taken for an outside point by rounding, and the cone's
+    /// nearest intersection would be the receiver itself.
     #[inline]
     fn inside_sphere(s: &Sphere, p: Vec3A) -> bool {
-        (p - s.center).length_squared() <= s.radius * s.radius
+        (p - s.center).length_squared() <= s.radius * s.radius * (1.0 + 1e-3)
     }
 
     /// Next event estimation from the receiver `p` (see [`crate::light::Light::sample_li`]).

@@ -1,0 +1,153 @@
+//! Furnace tests: scenes whose exact answer is known.
+//!
+//! `furnace`: the camera inside a closed sphere whose Lambertian wall has
+//! albedo ρ = 0.5 and emits L_e = 0.5 everywhere. The radiance is the same at
+//! every point and direction, so the rendering equation collapses to the
+//! series L = L_e (1 + ρ + ρ² + …): with Mitsuba's max depth D (at most D − 1
+//! bounces) every pixel is exactly `0.5 (1 − 0.5^D)/(1 − 0.5) = 1 − 0.5^D`,
+//! and 1 with unlimited depth. `white-furnace`: a sphere of albedo 1 in a
+//! uniform environment of radiance 1 reflects exactly what it receives, so it
+//! is invisible (every pixel 1).
+//!
+//! Each check is a z-test: the image mean against the exact value, with the
+//! standard error computed from the film's own per-pixel variance. The
+//! tolerance of 5 standard errors gives a false-failure probability below
+//! 6e-7 per check (normal approximation; each mean averages ≥ 16k samples).
+
+use raytracer::integrator::{DirectStrategy, Integrator, NaiveRecursive, PathTracer};
+use raytracer::render::{RenderOptions, render};
+use raytracer::scene::Scene;
+
+/// Mean over all pixels and channels, and its standard error.
+fn mean_and_standard_error(
+    scene: &Scene,
+    integrator: &dyn Integrator,
+    spp: u32,
+    seed: u64,
+) -> (f64, f64) {
+    let options = RenderOptions {
+        spp,
+        seed,
+        threads: None,
+        progress: false,
+        ..RenderOptions::default()
+    };
+    let film = render(scene, integrator, &options).film;
+    let (image, variance) = (film.image(), film.variance_image());
+    let n = image.pixels.len() as f64;
+    // Channels are equal in a grey furnace: use the first, as independent pixels.
+    let mean = image.pixels.iter().map(|c| c.x as f64).sum::<f64>() / n;
+    let var_of_mean = variance.pixels.iter().map(|c| c.x as f64).sum::<f64>() / (n * n);
+    (mean, var_of_mean.sqrt())
+}
+
+fn small(name: &str) -> Scene {
+    let mut scene = Scene::builtin(name).unwrap();
+    scene.set_resolution(16, 16);
+    scene
+}
+
+fn assert_z(what: &str, (mean, se): (f64, f64), exact: f64) {
+    let z = (mean - exact) / se.max(1e-9);
+    assert!(
+        z.abs() < 5.0,
+        "{what}: mean {mean:.6} vs exact {exact} (standard error {se:.2e}, z = {z:.1})"
+    );
+}
+
+#[test]
+fn furnace_converges_to_one_minus_half_to_the_depth() {
+    let scene = small("furnace");
+    for strategy in [
+        DirectStrategy::Mis,
+        DirectStrategy::BrdfOnly,
+        DirectStrategy::LightOnly,
+    ] {
+        for depth in [1u32, 2, 3, 6] {
+            let pt = PathTracer {
+                max_depth: Some(depth),
+                rr_depth: 100,
+                strategy,
+            };
+            let exact = 1.0 - 0.5f64.powi(depth as i32);
+            let got = mean_and_standard_error(&scene, &pt, 64, 17);
+            if depth == 1 {
+                // Only L_e is seen: no randomness at all.
+                assert!(
+                    (got.0 - 0.5).abs() < 1e-6,
+                    "{strategy:?} depth 1: {}",
+                    got.0
+                );
+            } else {
+                assert_z(&format!("{strategy:?}, max depth {depth}"), got, exact);
+            }
+        }
+        let unlimited = PathTracer {
+            max_depth: None,
+            rr_depth: 3,
+            strategy,
+        };
+        assert_z(
+            &format!("{strategy:?}, unlimited depth"),
+            mean_and_standard_error(&scene, &unlimited, 128, 5),
+            1.0,
+        );
+    }
+}
+
+#[test]
+fn white_furnace_sphere_is_invisible() {
+    let scene = small("white-furnace");
+    for strategy in [
+        DirectStrategy::Mis,
+        DirectStrategy::BrdfOnly,
+        DirectStrategy::LightOnly,
+    ] {
+        let pt = PathTracer {
+            max_depth: None,
+            rr_depth: 5,
+            strategy,
+        };
+        assert_z(
+            &format!("{strategy:?}"),
+            mean_and_standard_error(&scene, &pt, 64, 3),
+            1.0,
+        );
+    }
+}
+
+#[test]
+fn naive_recursion_with_roulette_gives_the_furnace_value() {
+    let scene = small("furnace");
+    let mut naive = NaiveRecursive::new(vec![2], None);
+    naive.roulette_depth = Some(1);
+    assert_z(
+        "naive, branching 2, roulette",
+        mean_and_standard_error(&scene, &naive, 32, 8),
+        1.0,
+    );
+    let naive = NaiveRecursive::new(vec![3, 2], Some(4));
+    assert_z(
+        "naive, branching 3,2, max depth 4",
+        mean_and_standard_error(&scene, &naive, 32, 8),
+        1.0 - 0.5f64.powi(4),
+    );
+}
+
+/// The lecture's throughput cutoff is biased: it drops light, and the
+/// furnace shows it. Each level multiplies the product of weights by
+/// ρ/N = 0.5/2 (cosine sampling makes every weight exactly ρ), so with a
+/// cutoff of 0.2 the hits at depth 2 (product 1/16) no longer recurse: only
+/// three terms of the series remain, and the image converges to 1 − 0.5³
+/// instead of 1.
+#[test]
+fn naive_cutoff_is_biased() {
+    let scene = small("furnace");
+    let mut naive = NaiveRecursive::new(vec![2], None);
+    naive.cutoff = Some(0.2);
+    assert_z(
+        "naive with cutoff 0.2",
+        mean_and_standard_error(&scene, &naive, 32, 8),
+        0.875,
+    );
+}
