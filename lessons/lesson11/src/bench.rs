@@ -1,10 +1,8 @@
 //! `lesson11 bench`: the figures behind every speed claim of the README.
 
-use std::time::Instant;
-
 use anyhow::Result;
 use clap::Args;
-use raytracer::integrator::Direct;
+use raytracer::integrator::{Direct, DirectStrategy, Integrator, PathTracer};
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
 
@@ -38,32 +36,39 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     if !args.no_rays {
         crate::bench_rays::run(&threads)?;
     }
-    println!(
-        "\nDirect lighting (next event estimation + BRDF sampling, MIS) on `cornell`, 256×256, {} spp",
-        args.spp
-    );
-    let t = Instant::now();
     let scene = Scene::builtin("cornell")?;
-    println!(
-        "  scene load + BVH build: {:.3} ms",
-        t.elapsed().as_secs_f64() * 1e3
-    );
-    println!("  {:>8} {:>12} {:>18}", "threads", "seconds", "M samples/s");
-    for &n in &threads {
-        let options = RenderOptions {
-            spp: args.spp,
-            seed: 1,
-            threads: Some(n),
-            progress: false,
-            ..RenderOptions::default()
-        };
-        let result = render(&scene, &Direct, &options);
-        println!(
-            "  {:>8} {:>12.3} {:>18.2}",
-            n,
-            result.stats.elapsed.as_secs_f64(),
-            result.stats.samples_per_second() / 1e6
-        );
+    let direct = Direct;
+    let path = PathTracer {
+        max_depth: Some(65),
+        rr_depth: 5,
+        strategy: DirectStrategy::Mis,
+    };
+    let cases: [(&str, &dyn Integrator); 2] = [
+        ("direct lighting (light + BRDF sampling, MIS)", &direct),
+        (
+            "path tracing, max depth 65, roulette from depth 5 (Mitsuba's settings)",
+            &path,
+        ),
+    ];
+    for (what, integrator) in cases {
+        println!("\n`cornell` 256×256, {} spp: {what}", args.spp);
+        println!("  {:>8} {:>10} {:>14}", "threads", "seconds", "M samples/s");
+        for &n in &threads {
+            let options = RenderOptions {
+                spp: args.spp,
+                seed: 1,
+                threads: Some(n),
+                progress: false,
+                ..RenderOptions::default()
+            };
+            let result = render(&scene, integrator, &options);
+            println!(
+                "  {:>8} {:>10.3} {:>14.3}",
+                n,
+                result.stats.elapsed.as_secs_f64(),
+                result.stats.samples_per_second() / 1e6
+            );
+        }
     }
     Ok(())
 }
