@@ -39,6 +39,18 @@ fn camera_rays() -> Vec<Ray> {
     rays
 }
 
+/// The same rays grouped in packets of 2×2 pixels.
+fn packets(rays: &[Ray]) -> Vec<[Ray; 4]> {
+    let mut out = Vec::with_capacity(rays.len() / 4);
+    for j in (0..RES).step_by(2) {
+        for i in (0..RES).step_by(2) {
+            let at = |di: usize, dj: usize| rays[(j + dj) * RES + i + di];
+            out.push([at(0, 0), at(1, 0), at(0, 1), at(1, 1)]);
+        }
+    }
+    out
+}
+
 /// CPU time of the calling thread in seconds (Linux: `/proc/thread-self/schedstat`,
 /// whose first field is nanoseconds on a CPU), to see through a busy machine.
 fn thread_cpu_time() -> Option<f64> {
@@ -103,6 +115,34 @@ fn throughput(
     (n / wall, cpu.filter(|_| single).map(|c| n / c), hits)
 }
 
+/// Closest-hit throughput of 2×2 packets ([`Geometry::intersect4`]).
+fn throughput4(
+    pool: &rayon::ThreadPool,
+    g: &Geometry,
+    packets: &[[Ray; 4]],
+) -> (f64, Option<f64>, usize) {
+    let (wall, cpu, hits) = best_of(pool, || {
+        packets
+            .par_chunks(CHUNK / 4)
+            .map(|chunk| {
+                let mut n = 0;
+                let mut sum = 0.0f32;
+                for p in chunk {
+                    for h in g.intersect4(p).iter().flatten() {
+                        n += 1;
+                        sum += h.t;
+                    }
+                }
+                std::hint::black_box(sum);
+                n
+            })
+            .sum::<usize>()
+    });
+    let n = 4.0 * packets.len() as f64;
+    let single = pool.current_num_threads() == 1;
+    (n / wall, cpu.filter(|_| single).map(|c| n / c), hits)
+}
+
 /// A number with 3 significant digits.
 fn sig3(x: f64) -> String {
     if x == 0.0 || !x.is_finite() {
@@ -113,6 +153,9 @@ fn sig3(x: f64) -> String {
 }
 
 fn measure(name: &str, g: &Geometry, rays: &[Ray], threads: &[usize]) -> anyhow::Result<()> {
+    let packets = packets(rays);
+    let per_cpu =
+        |x: Option<f64>| x.map_or(String::new(), |c| format!(" ({}/CPU-s)", sig3(c / 1e6)));
     for &n in threads {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(n)
@@ -120,20 +163,19 @@ fn measure(name: &str, g: &Geometry, rays: &[Ray], threads: &[usize]) -> anyhow:
             .context("cannot start the thread pool")?;
         let (closest, closest_cpu, hits) = throughput(&pool, g, rays, false);
         let (any, any_cpu, hits_any) = throughput(&pool, g, rays, true);
+        let (packet, packet_cpu, hits_packet) = throughput4(&pool, g, &packets);
         anyhow::ensure!(
-            hits == hits_any,
-            "closest-hit and any-hit disagree: {hits} vs {hits_any}"
+            hits == hits_any && hits == hits_packet,
+            "closest-hit, any-hit and packets disagree: {hits}, {hits_any}, {hits_packet} hits"
         );
-        let cpu = match (closest_cpu, any_cpu) {
-            (Some(c), Some(a)) => {
-                format!("  [per CPU-second: {} / {}]", sig3(c / 1e6), sig3(a / 1e6))
-            }
-            _ => String::new(),
-        };
         println!(
-            "  {name:<20} threads {n:>2}: closest hit {:>6} Mrays/s, any hit {:>6} Mrays/s, hits {hits} ({}%){cpu}",
+            "  {name:<20} {n:>2} thread(s): closest {:>5}{}, any {:>5}{}, 2x2 packets {:>5}{} Mrays/s; hits {hits} ({}%)",
             sig3(closest / 1e6),
+            per_cpu(closest_cpu),
             sig3(any / 1e6),
+            per_cpu(any_cpu),
+            sig3(packet / 1e6),
+            per_cpu(packet_cpu),
             sig3(100.0 * hits as f64 / rays.len() as f64),
         );
     }

@@ -15,6 +15,7 @@ pub mod aabb;
 pub mod bvh;
 pub mod bvh4;
 pub mod mesh;
+mod packet;
 pub mod quad;
 pub mod sphere;
 pub mod transform;
@@ -98,6 +99,8 @@ struct PrimSource {
 pub struct Geometry {
     shapes: Vec<Shape>,
     bounds: Aabb,
+    /// The binary tree (its `order` dropped), traversed by ray packets.
+    binary: Bvh,
     bvh: Bvh4,
     prims: Vec<triangle::PrimRecord>,
     sources: Vec<PrimSource>,
@@ -174,7 +177,7 @@ impl Geometry {
             }
         }
         let bounds: Vec<Aabb> = records.par_iter().map(padded_bounds).collect();
-        let binary = Bvh::build(&bounds);
+        let mut binary = Bvh::build(&bounds);
         let prims = binary
             .order
             .par_iter()
@@ -185,10 +188,13 @@ impl Geometry {
             .par_iter()
             .map(|&i| sources[i as usize])
             .collect();
+        let bvh = Bvh4::from_binary(&binary);
+        binary.order = Vec::new();
         Geometry {
             shapes,
             bounds: binary.bounds(),
-            bvh: Bvh4::from_binary(&binary),
+            binary,
+            bvh,
             prims,
             sources,
         }

@@ -379,6 +379,45 @@ fn binary_bvh_matches_brute_force() {
     }
 }
 
+/// Packets give each ray exactly its single-ray hit, for coherent camera
+/// rays and for random rays through a soup of triangles, spheres and quads.
+#[test]
+fn packets_match_single_rays() {
+    let mut shapes = vec![
+        Shape::Mesh(Arc::new(soup(3000, 0.1, 4))),
+        Shape::Mesh(Arc::new(Mesh::icosphere(3))),
+        Shape::Sphere(Sphere {
+            center: Vec3A::new(0.5, 0.5, 0.0),
+            radius: 0.3,
+        }),
+    ];
+    shapes.extend(cornell_walls().into_iter().take(3));
+    let g = Geometry::new(shapes);
+    for i in 0..2000u64 {
+        let mut s = Sampler::new(12, i, 0);
+        let coherent = i % 2 == 0;
+        let base = Vec3A::new(0.0, 0.0, 3.0) + uniform_box(&mut s, 0.5);
+        let rays: [Ray; 4] = std::array::from_fn(|k| {
+            if coherent {
+                let d = Vec3A::new(s.next_1d() * 0.02 - 0.01, s.next_1d() * 0.02 - 0.01, 0.0)
+                    + (uniform_box(&mut Sampler::new(13, i, 0), 0.6) - base).normalize();
+                Ray {
+                    o: base,
+                    d: d.normalize(),
+                    t_max: if k == 3 { 2.5 } else { f32::INFINITY },
+                }
+            } else {
+                let o = uniform_box(&mut s, 1.5);
+                Ray::new(o, uniform_sphere(&mut s))
+            }
+        });
+        let packet = g.intersect4(&rays);
+        for k in 0..4 {
+            assert_eq!(packet[k], g.intersect(&rays[k]), "packet {i} ray {k}");
+        }
+    }
+}
+
 /// Where a primary ray's time goes (run by hand with `--ignored --nocapture`):
 /// traversal alone versus traversal with the primitive tests.
 #[test]
