@@ -97,37 +97,75 @@ fn triangle4(v: [Vec3A; 3], r: &Rays4, t_max: Vec4) -> (BVec4A, Vec4, Vec4, Vec4
     (ok, t, w1 * inv, w2 * inv)
 }
 
+impl Rays4 {
+    fn new(rays: &[Ray]) -> Rays4 {
+        let tiny = Vec3A::splat(1e-30);
+        let lane =
+            |f: &dyn Fn(&Ray) -> f32| Vec4::new(f(&rays[0]), f(&rays[1]), f(&rays[2]), f(&rays[3]));
+        let inv = |r: &Ray| Vec3A::select(r.d.abs().cmplt(tiny), tiny.copysign(r.d), r.d).recip();
+        Rays4 {
+            o: [lane(&|r| r.o.x), lane(&|r| r.o.y), lane(&|r| r.o.z)],
+            d: [lane(&|r| r.d.x), lane(&|r| r.d.y), lane(&|r| r.d.z)],
+            inv_d: [
+                lane(&|r| inv(r).x),
+                lane(&|r| inv(r).y),
+                lane(&|r| inv(r).z),
+            ],
+        }
+    }
+}
+
+/// Entry distances of `G` groups of four rays into `node`, and whether any
+/// ray enters it.
+#[inline(always)]
+fn enter<const G: usize>(node: &BvhNode, r: &[Rays4; G], t_max: &[Vec4; G]) -> ([Vec4; G], bool) {
+    let mut any = false;
+    let t = std::array::from_fn(|g| {
+        let t = enter4(node, &r[g], t_max[g]);
+        any |= t.cmplt(Vec4::INFINITY).any();
+        t
+    });
+    (t, any)
+}
+
 impl Geometry {
     /// The closest hits of four rays (as four calls of
     /// [`Geometry::intersect`], faster when the rays are coherent).
     pub fn intersect4(&self, rays: &[Ray; 4]) -> [Option<Hit>; 4] {
-        let mut out = [None; 4];
+        self.intersect_packet::<1, 4>(rays)
+    }
+
+    /// The closest hits of sixteen rays, e.g. a 4×4 pixel block (as sixteen
+    /// calls of [`Geometry::intersect`]). Each group of four consecutive rays
+    /// shares SIMD lanes, so the most coherent rays should be neighbours.
+    pub fn intersect16(&self, rays: &[Ray; 16]) -> [Option<Hit>; 16] {
+        self.intersect_packet::<4, 16>(rays)
+    }
+
+    /// `N = 4·G` rays in `G` groups of four lanes.
+    fn intersect_packet<const G: usize, const N: usize>(
+        &self,
+        rays: &[Ray; N],
+    ) -> [Option<Hit>; N] {
+        debug_assert_eq!(N, 4 * G);
+        let mut out = [None; N];
         let nodes = &self.binary.nodes[..];
         if nodes.is_empty() {
             return out;
         }
-        let tiny = Vec3A::splat(1e-30);
-        let lane =
-            |f: &dyn Fn(&Ray) -> f32| Vec4::new(f(&rays[0]), f(&rays[1]), f(&rays[2]), f(&rays[3]));
-        let inv: [Vec3A; 4] =
-            rays.map(|r| Vec3A::select(r.d.abs().cmplt(tiny), tiny.copysign(r.d), r.d).recip());
-        let r = Rays4 {
-            o: [lane(&|r| r.o.x), lane(&|r| r.o.y), lane(&|r| r.o.z)],
-            d: [lane(&|r| r.d.x), lane(&|r| r.d.y), lane(&|r| r.d.z)],
-            inv_d: [
-                Vec4::new(inv[0].x, inv[1].x, inv[2].x, inv[3].x),
-                Vec4::new(inv[0].y, inv[1].y, inv[2].y, inv[3].y),
-                Vec4::new(inv[0].z, inv[1].z, inv[2].z, inv[3].z),
-            ],
-        };
-        let mut t_max = lane(&|r| r.t_max);
-        let (mut prim, mut b1, mut b2) = ([u32::MAX; 4], Vec4::ZERO, Vec4::ZERO);
+        let r: [Rays4; G] = std::array::from_fn(|g| Rays4::new(&rays[4 * g..4 * g + 4]));
+        let mut t_max: [Vec4; G] = std::array::from_fn(|g| {
+            Vec4::from_array(std::array::from_fn(|k| rays[4 * g + k].t_max))
+        });
+        let mut b1 = [Vec4::ZERO; G];
+        let mut b2 = [Vec4::ZERO; G];
+        let mut prim = [u32::MAX; N];
 
-        if enter4(&nodes[0], &r, t_max).cmplt(Vec4::INFINITY).bitmask() == 0 {
+        if !enter(&nodes[0], &r, &t_max).1 {
             return out;
         }
         // Pending subtrees with the rays' entry distances.
-        let mut stack = [(0u32, Vec4::ZERO); STACK];
+        let mut stack = [(0u32, [Vec4::ZERO; G]); STACK];
         let mut sp = 0usize;
         let mut index = 0usize;
         loop {
@@ -139,23 +177,26 @@ impl Geometry {
                     let rec = &self.prims[p as usize];
                     if rec.kind() == KIND_TRIANGLE {
                         let v = [rec.a, rec.b, rec.c].map(Vec3A::from_vec4);
-                        let (m, t, u, w) = triangle4(v, &r, t_max);
-                        let mut mask = m.bitmask();
-                        if mask != 0 {
-                            t_max = Vec4::select(m, t, t_max);
-                            b1 = Vec4::select(m, u, b1);
-                            b2 = Vec4::select(m, w, b2);
-                            while mask != 0 {
-                                prim[mask.trailing_zeros() as usize] = p;
-                                mask &= mask - 1;
+                        for g in 0..G {
+                            let (m, t, u, w) = triangle4(v, &r[g], t_max[g]);
+                            let mut mask = m.bitmask();
+                            if mask != 0 {
+                                t_max[g] = Vec4::select(m, t, t_max[g]);
+                                b1[g] = Vec4::select(m, u, b1[g]);
+                                b2[g] = Vec4::select(m, w, b2[g]);
+                                while mask != 0 {
+                                    prim[4 * g + mask.trailing_zeros() as usize] = p;
+                                    mask &= mask - 1;
+                                }
                             }
                         }
                     } else {
                         for (k, ray) in rays.iter().enumerate() {
-                            if let Some((t, uv)) = rec.intersect(ray.o, ray.d, t_max[k]) {
-                                t_max[k] = t;
-                                b1[k] = uv.x;
-                                b2[k] = uv.y;
+                            let (g, l) = (k / 4, k % 4);
+                            if let Some((t, uv)) = rec.intersect(ray.o, ray.d, t_max[g][l]) {
+                                t_max[g][l] = t;
+                                b1[g][l] = uv.x;
+                                b2[g][l] = uv.y;
                                 prim[k] = p;
                             }
                         }
@@ -163,19 +204,13 @@ impl Geometry {
                 }
             } else {
                 let c = node.offset() as usize;
-                let (ta, tb) = (
-                    enter4(&nodes[c], &r, t_max),
-                    enter4(&nodes[c + 1], &r, t_max),
-                );
-                let (hit_a, hit_b) = (
-                    ta.cmplt(Vec4::INFINITY).bitmask() != 0,
-                    tb.cmplt(Vec4::INFINITY).bitmask() != 0,
-                );
+                let (ta, hit_a) = enter(&nodes[c], &r, &t_max);
+                let (tb, hit_b) = enter(&nodes[c + 1], &r, &t_max);
                 if hit_a && hit_b {
                     // Front to back by the split axis and the direction of
                     // the first ray (the rays of a packet mostly agree).
                     let axis = node.axis();
-                    let (near, far, t_far) = if r.d[axis].x < 0.0 {
+                    let (near, far, t_far) = if r[0].d[axis].x < 0.0 {
                         (c + 1, c, ta)
                     } else {
                         (c, c + 1, tb)
@@ -193,11 +228,12 @@ impl Geometry {
             loop {
                 if sp == 0 {
                     for (k, o) in out.iter_mut().enumerate() {
+                        let (g, l) = (k / 4, k % 4);
                         if prim[k] != u32::MAX {
                             *o = Some(Hit {
-                                t: t_max[k],
+                                t: t_max[g][l],
                                 prim: prim[k],
-                                uv: Vec2::new(b1[k], b2[k]),
+                                uv: Vec2::new(b1[g][l], b2[g][l]),
                             });
                         }
                     }
@@ -205,7 +241,7 @@ impl Geometry {
                 }
                 sp -= 1;
                 let (i, t) = stack[sp];
-                if t.cmplt(t_max).bitmask() != 0 {
+                if (0..G).any(|g| t[g].cmplt(t_max[g]).any()) {
                     index = i as usize;
                     break;
                 }

@@ -415,6 +415,20 @@ fn packets_match_single_rays() {
         for k in 0..4 {
             assert_eq!(packet[k], g.intersect(&rays[k]), "packet {i} ray {k}");
         }
+        // Sixteen rays: these four, and three more fours shifted a little.
+        let rays16: [Ray; 16] = std::array::from_fn(|k| {
+            let mut r = rays[k % 4];
+            r.o += Vec3A::splat(0.003 * (k / 4) as f32);
+            r
+        });
+        let packet = g.intersect16(&rays16);
+        for k in 0..16 {
+            assert_eq!(
+                packet[k],
+                g.intersect(&rays16[k]),
+                "packet {i} ray {k} of 16"
+            );
+        }
     }
 }
 
