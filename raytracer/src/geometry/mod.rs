@@ -6,7 +6,9 @@
 //! [`Geometry::intersect`] and [`Geometry::occluded`].
 //!
 //! All primitives of a scene (triangles of every mesh, spheres, quads) live in
-//! one binned-SAH BVH. A [`Hit`] is what traversal returns (distance, primitive,
+//! one binned-SAH BVH ([`bvh`], traversed four-wide by [`bvh4`], or by ray
+//! packets). Triangles use a watertight test ([`triangle`]): rays do not
+//! slip through the shared edges of a mesh. A [`Hit`] is what traversal returns (distance, primitive,
 //! two surface parameters); [`Geometry::surface_point`] turns it into a
 //! [`SurfacePoint`] with position, normals and texture coordinates only for the
 //! hit that is finally kept.
@@ -89,8 +91,11 @@ struct PrimSource {
 /// triangle of every mesh, every sphere, every quad).
 ///
 /// The binary SAH tree ([`Bvh`]) is collapsed into a four-wide one
-/// ([`Bvh4`]) for traversal: about twice the primary-ray throughput of the
-/// binary tree on the benchmark of `lesson11 bench-rays`.
+/// ([`Bvh4`]) for single rays (about 1.4× the throughput of the binary tree
+/// on the primary rays of `lesson11 bench-rays`); coherent rays can also be
+/// traced four or sixteen at a time through the binary tree
+/// ([`Geometry::intersect4`], [`Geometry::intersect16`]: about 1.7-1.9× the
+/// single-ray throughput for primary rays of a mesh of 80k triangles).
 ///
 /// Primitive data is stored in BVH leaf order ([`triangle::PrimRecord`]); a
 /// [`Hit::prim`] is an index into that order, and [`Geometry::surface_point`]
