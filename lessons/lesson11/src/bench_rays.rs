@@ -14,7 +14,7 @@ use std::time::Instant;
 
 use anyhow::Context as _;
 use rayon::prelude::*;
-use raytracer::geometry::{Geometry, Mesh, Shape};
+use raytracer::geometry::{Geometry, Hit, Mesh, Shape};
 use raytracer::math::{Ray, Vec3A};
 
 const RES: usize = 1000;
@@ -37,6 +37,25 @@ fn camera_rays() -> Vec<Ray> {
         }
     }
     rays
+}
+
+/// The same rays grouped in packets of 2×2 pixels (`N = 4`) or of 4×4
+/// pixels made of four 2×2 groups (`N = 16`).
+fn packets<const N: usize>(rays: &[Ray]) -> Vec<[Ray; N]> {
+    let side = if N == 16 { 4 } else { 2 };
+    let mut out = Vec::with_capacity(rays.len() / N);
+    for j in (0..RES).step_by(side) {
+        for i in (0..RES).step_by(side) {
+            out.push(std::array::from_fn(|k| {
+                // k = 4·group + lane; groups and lanes both run over 2×2.
+                let (group, lane) = (k / 4, k % 4);
+                let di = 2 * (group % 2) + lane % 2;
+                let dj = 2 * (group / 2) + lane / 2;
+                rays[(j + dj) * RES + i + di]
+            }));
+        }
+    }
+    out
 }
 
 /// CPU time of the calling thread in seconds (Linux: `/proc/thread-self/schedstat`,
@@ -103,6 +122,34 @@ fn throughput(
     (n / wall, cpu.filter(|_| single).map(|c| n / c), hits)
 }
 
+/// Closest-hit throughput of packets traced by `trace`.
+fn throughput_packets<const N: usize>(
+    pool: &rayon::ThreadPool,
+    packets: &[[Ray; N]],
+    trace: impl Fn(&[Ray; N]) -> [Option<Hit>; N] + Sync,
+) -> (f64, Option<f64>, usize) {
+    let (wall, cpu, hits) = best_of(pool, || {
+        packets
+            .par_chunks((CHUNK / N).max(1))
+            .map(|chunk| {
+                let mut n = 0;
+                let mut sum = 0.0f32;
+                for p in chunk {
+                    for h in trace(p).iter().flatten() {
+                        n += 1;
+                        sum += h.t;
+                    }
+                }
+                std::hint::black_box(sum);
+                n
+            })
+            .sum::<usize>()
+    });
+    let n = (N * packets.len()) as f64;
+    let single = pool.current_num_threads() == 1;
+    (n / wall, cpu.filter(|_| single).map(|c| n / c), hits)
+}
+
 /// A number with 3 significant digits.
 fn sig3(x: f64) -> String {
     if x == 0.0 || !x.is_finite() {
@@ -113,6 +160,9 @@ fn sig3(x: f64) -> String {
 }
 
 fn measure(name: &str, g: &Geometry, rays: &[Ray], threads: &[usize]) -> anyhow::Result<()> {
+    let packets4 = packets::<4>(rays);
+    let packets16 = packets::<16>(rays);
+    let per_cpu = |x: Option<f64>| x.map_or(String::new(), |c| format!(" ({})", sig3(c / 1e6)));
     for &n in threads {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(n)
@@ -120,20 +170,22 @@ fn measure(name: &str, g: &Geometry, rays: &[Ray], threads: &[usize]) -> anyhow:
             .context("cannot start the thread pool")?;
         let (closest, closest_cpu, hits) = throughput(&pool, g, rays, false);
         let (any, any_cpu, hits_any) = throughput(&pool, g, rays, true);
+        let (p4, p4_cpu, hits4) = throughput_packets(&pool, &packets4, |p| g.intersect4(p));
+        let (p16, p16_cpu, hits16) = throughput_packets(&pool, &packets16, |p| g.intersect16(p));
         anyhow::ensure!(
-            hits == hits_any,
-            "closest-hit and any-hit disagree: {hits} vs {hits_any}"
+            hits == hits_any && hits == hits4 && hits == hits16,
+            "single rays, any-hit and packets disagree: {hits}, {hits_any}, {hits4}, {hits16} hits"
         );
-        let cpu = match (closest_cpu, any_cpu) {
-            (Some(c), Some(a)) => {
-                format!("  [per CPU-second: {} / {}]", sig3(c / 1e6), sig3(a / 1e6))
-            }
-            _ => String::new(),
-        };
         println!(
-            "  {name:<20} threads {n:>2}: closest hit {:>6} Mrays/s, any hit {:>6} Mrays/s, hits {hits} ({}%){cpu}",
+            "  {name:<20} {n:>2} thread(s): closest {:>5}{}, any {:>5}{}, packets 2x2 {:>5}{}, 4x4 {:>5}{}; hits {hits} ({}%)",
             sig3(closest / 1e6),
+            per_cpu(closest_cpu),
             sig3(any / 1e6),
+            per_cpu(any_cpu),
+            sig3(p4 / 1e6),
+            per_cpu(p4_cpu),
+            sig3(p16 / 1e6),
+            per_cpu(p16_cpu),
             sig3(100.0 * hits as f64 / rays.len() as f64),
         );
     }
@@ -164,7 +216,13 @@ pub fn run(threads: &[usize]) -> anyhow::Result<()> {
         "ray throughput: {RES}x{RES} primary rays, camera (0,0,3) -> -z, fov 40 deg; machine threads: {all}"
     );
     println!(
-        "(best of {REPS}; Mitsuba 3 llvm_ad_rgb on this case: 9.4-10.0 Mrays/s on 1 thread, 18.3 on 2)"
+        "Mrays/s, best of {REPS}; in parentheses: per CPU-second of the thread (a busy machine does not lower it)"
+    );
+    println!(
+        "closest = Geometry::intersect, any = occluded, packets = intersect4 / intersect16 (closest hit)"
+    );
+    println!(
+        "reference, case (a): Mitsuba 3 llvm_ad_rgb 9.4-10.0 Mrays/s on 1 thread, 18.3 on 2; Embree 4 single rays 6-7"
     );
     let rays = camera_rays();
 

@@ -232,9 +232,9 @@ impl Binner {
                 min: r.min(),
                 max: r.max(),
             };
-            for a in 0..3 {
-                bins.bounds[a][k[a]] = bins.bounds[a][k[a]].union(b);
-                bins.counts[a][k[a]] += 1;
+            for (a, &ka) in k.iter().enumerate() {
+                bins.bounds[a][ka] = bins.bounds[a][ka].union(b);
+                bins.counts[a][ka] += 1;
             }
         }
         bins
@@ -315,10 +315,10 @@ fn build_node(refs: &mut [PrimRef], first: u32, depth: u32) -> BuildNode {
                 right_cost[i] = acc.surface_area() * cnt as f32;
             }
             let (mut acc, mut cnt) = (Aabb::EMPTY, 0u32);
-            for i in 1..BINS {
+            for (i, &right) in right_cost.iter().enumerate().skip(1) {
                 acc = acc.union(bins.bounds[a][i - 1]);
                 cnt += bins.counts[a][i - 1];
-                let cost = acc.surface_area() * cnt as f32 + right_cost[i];
+                let cost = acc.surface_area() * cnt as f32 + right;
                 if cnt > 0 && (cnt as usize) < n && cost < best.0 {
                     best = (cost, a, i);
                 }

@@ -64,6 +64,9 @@ impl Mesh {
             path: name.to_string(),
             message,
         };
+        // `..Default::default()` covers fields that optional tobj features
+        // add (another crate of the workspace might enable them).
+        #[allow(clippy::needless_update)]
         let options = tobj::LoadOptions {
             single_index: true,
             triangulate: true,

@@ -353,50 +353,123 @@ fn transformed_cube_matches_mitsuba() {
     assert!((area - 2.16).abs() < 1e-4);
 }
 
+/// The binary tree (which the four-wide one is collapsed from) finds the
+/// same closest hits as brute force.
+#[test]
+fn binary_bvh_matches_brute_force() {
+    let g = Geometry::new(vec![Shape::Mesh(Arc::new(soup(5000, 0.05, 1)))]);
+    let bounds: Vec<Aabb> = g.prims.iter().map(padded_bounds).collect();
+    let bvh = Bvh::build(&bounds);
+    for i in 0..500u64 {
+        let mut s = Sampler::new(9, i, 0);
+        let o = uniform_box(&mut s, 1.5);
+        let ray = Ray::new(o, (uniform_box(&mut s, 1.0) - o).normalize());
+        let mut best = None;
+        bvh.traverse(ray.o, ray.d, ray.t_max, |first, count, t_max| {
+            for k in first..first + count {
+                let prim = bvh.order[k as usize];
+                if let Some((t, _)) = g.prims[prim as usize].intersect(ray.o, ray.d, *t_max) {
+                    *t_max = t;
+                    best = Some(t);
+                }
+            }
+            false
+        });
+        assert_eq!(best, g.intersect_brute_force(&ray).map(|h| h.t), "ray {i}");
+    }
+}
+
+/// Packets give each ray exactly its single-ray hit, for coherent camera
+/// rays and for random rays through a soup of triangles, spheres and quads.
+#[test]
+fn packets_match_single_rays() {
+    let mut shapes = vec![
+        Shape::Mesh(Arc::new(soup(3000, 0.1, 4))),
+        Shape::Mesh(Arc::new(Mesh::icosphere(3))),
+        Shape::Sphere(Sphere {
+            center: Vec3A::new(0.5, 0.5, 0.0),
+            radius: 0.3,
+        }),
+    ];
+    shapes.extend(cornell_walls().into_iter().take(3));
+    let g = Geometry::new(shapes);
+    for i in 0..2000u64 {
+        let mut s = Sampler::new(12, i, 0);
+        let coherent = i % 2 == 0;
+        let base = Vec3A::new(0.0, 0.0, 3.0) + uniform_box(&mut s, 0.5);
+        let rays: [Ray; 4] = std::array::from_fn(|k| {
+            if coherent {
+                let d = Vec3A::new(s.next_1d() * 0.02 - 0.01, s.next_1d() * 0.02 - 0.01, 0.0)
+                    + (uniform_box(&mut Sampler::new(13, i, 0), 0.6) - base).normalize();
+                Ray {
+                    o: base,
+                    d: d.normalize(),
+                    t_max: if k == 3 { 2.5 } else { f32::INFINITY },
+                }
+            } else {
+                let o = uniform_box(&mut s, 1.5);
+                Ray::new(o, uniform_sphere(&mut s))
+            }
+        });
+        let packet = g.intersect4(&rays);
+        for k in 0..4 {
+            assert_eq!(packet[k], g.intersect(&rays[k]), "packet {i} ray {k}");
+        }
+        // Sixteen rays: these four, and three more fours shifted a little.
+        let rays16: [Ray; 16] = std::array::from_fn(|k| {
+            let mut r = rays[k % 4];
+            r.o += Vec3A::splat(0.003 * (k / 4) as f32);
+            r
+        });
+        let packet = g.intersect16(&rays16);
+        for k in 0..16 {
+            assert_eq!(
+                packet[k],
+                g.intersect(&rays16[k]),
+                "packet {i} ray {k} of 16"
+            );
+        }
+    }
+}
+
+/// Where a primary ray's time goes (run by hand with `--ignored --nocapture`):
+/// traversal alone versus traversal with the primitive tests.
 #[test]
 #[ignore]
-fn debug_stats() {
+fn profile_primary_rays() {
     let g = Geometry::new(vec![Shape::Mesh(Arc::new(Mesh::icosphere(6)))]);
-    let (mut leaves, mut tris) = (0usize, 0usize);
-    for n in &g.bvh.nodes[2..] {
-        if n.count() > 0 {
-            leaves += 1;
-            tris += n.count() as usize;
-        }
-    }
-    println!(
-        "nodes {} leaves {} avg leaf {}",
-        g.bvh.nodes.len(),
-        leaves,
-        tris as f32 / leaves as f32
-    );
     let t = 20f32.to_radians().tan();
-    let (mut nl, mut nt, mut nrays) = (0usize, 0usize, 0usize);
-    for j in (0..1000).step_by(7) {
-        for i in (0..1000).step_by(7) {
-            let s = |k: usize| (k as f32 + 0.5) / 1000.0 * 2.0 - 1.0;
-            let d = Vec3A::new(s(i) * t, -s(j) * t, -1.0).normalize();
-            let mut t_max = f32::INFINITY;
-            g.bvh
-                .traverse(Vec3A::new(0.0, 0.0, 3.0), d, t_max, |f, c, tm| {
-                    nl += 1;
-                    nt += c as usize;
-                    for k in f..f + c {
-                        if let Some((t, _)) =
-                            g.prims[k as usize].intersect(Vec3A::new(0.0, 0.0, 3.0), d, *tm)
-                        {
-                            *tm = t;
-                        }
-                    }
-                    false
-                });
-            t_max += 0.0;
-            nrays += 1;
+    let s = |k: usize| (k as f32 + 0.5) / 1000.0 * 2.0 - 1.0;
+    let rays: Vec<Ray> = (0..1_000_000)
+        .map(|k| {
+            Ray::new(
+                Vec3A::new(0.0, 0.0, 3.0),
+                Vec3A::new(s(k % 1000) * t, -s(k / 1000) * t, -1.0).normalize(),
+            )
+        })
+        .collect();
+    let (mut leaves, mut tris) = (0usize, 0usize);
+    let mut best = [f64::INFINITY; 2];
+    for _ in 0..5 {
+        let t0 = std::time::Instant::now();
+        for r in &rays {
+            g.bvh.traverse(r.o, r.d, r.t_max, |_, c, _| {
+                leaves += 1;
+                tris += c as usize;
+                false
+            });
         }
+        best[0] = best[0].min(t0.elapsed().as_secs_f64());
+        let t0 = std::time::Instant::now();
+        let hits = rays.iter().filter(|r| g.intersect(r).is_some()).count();
+        best[1] = best[1].min(t0.elapsed().as_secs_f64());
+        assert!(hits > 700_000);
     }
     println!(
-        "per ray: leaves {} tris {}",
-        nl as f32 / nrays as f32,
-        nt as f32 / nrays as f32
+        "traversal only (no culling by t): {:.0} ns/ray, {:.2} leaves and {:.2} primitives per ray; closest hit {:.0} ns/ray",
+        best[0] * 1e3,
+        leaves as f64 / 5e6,
+        tris as f64 / 5e6,
+        best[1] * 1e3
     );
 }
