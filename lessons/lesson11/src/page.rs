@@ -81,9 +81,9 @@ impl Page {
             t = escape(&self.title)
         );
         for s in &self.sections {
-            let _ = write!(
+            let _ = writeln!(
                 h,
-                "<section><h2>{}</h2><p>{}</p>\n",
+                "<section><h2>{}</h2><p>{}</p>",
                 escape(&s.title),
                 escape(&s.text)
             );
