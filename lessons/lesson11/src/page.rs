@@ -31,11 +31,46 @@ impl Figure {
     }
 }
 
+/// A table of numbers, shown on the page and written as CSV.
+pub struct Table {
+    pub caption: String,
+    pub header: Vec<String>,
+    pub rows: Vec<Vec<String>>,
+}
+
+impl Table {
+    pub fn new(caption: &str, header: &[&str]) -> Self {
+        Table {
+            caption: caption.into(),
+            header: header.iter().map(|h| h.to_string()).collect(),
+            rows: Vec::new(),
+        }
+    }
+
+    /// Writes the table as CSV (fields with commas or quotes are quoted).
+    pub fn write_csv(&self, path: &Path) -> Result<()> {
+        let field = |f: &str| {
+            if f.contains([',', '"', '\n']) {
+                format!("\"{}\"", f.replace('"', "\"\""))
+            } else {
+                f.to_string()
+            }
+        };
+        let mut text = String::new();
+        for row in std::iter::once(&self.header).chain(&self.rows) {
+            text.push_str(&row.iter().map(|f| field(f)).collect::<Vec<_>>().join(","));
+            text.push('\n');
+        }
+        std::fs::write(path, text).with_context(|| format!("cannot write {}", path.display()))
+    }
+}
+
 /// One chapter of the page.
 pub struct Section {
     pub title: String,
     pub text: String,
     pub figures: Vec<Figure>,
+    pub tables: Vec<Table>,
 }
 
 impl Section {
@@ -44,6 +79,7 @@ impl Section {
             title: title.into(),
             text: text.into(),
             figures: Vec::new(),
+            tables: Vec::new(),
         }
     }
 }
@@ -77,7 +113,7 @@ impl Page {
              body{{font-family:system-ui,sans-serif;max-width:72rem;margin:2rem auto;padding:0 1rem;background:#111;color:#eee}}\
              figure{{display:inline-block;margin:0.5rem;vertical-align:top;max-width:20rem}}\
              img{{width:100%;image-rendering:pixelated;border:1px solid #333}}\
-             figcaption{{font-size:0.9rem;color:#bbb}} a{{color:#8cf}}</style></head><body>\n<h1>{t}</h1>\n",
+             figcaption{{font-size:0.9rem;color:#bbb}} table{{border-collapse:collapse;margin:1rem 0}} td,th{{border:1px solid #444;padding:0.2rem 0.6rem;text-align:right}} caption{{text-align:left;color:#bbb}} a{{color:#8cf}}</style></head><body>\n<h1>{t}</h1>\n",
             t = escape(&self.title)
         );
         for s in &self.sections {
@@ -95,6 +131,21 @@ impl Page {
                     exr = escape(&f.exr),
                     cap = escape(&f.caption)
                 );
+            }
+            for t in &s.tables {
+                let _ = write!(h, "<table><caption>{}</caption><tr>", escape(&t.caption));
+                for c in &t.header {
+                    let _ = write!(h, "<th>{}</th>", escape(c));
+                }
+                h.push_str("</tr>\n");
+                for row in &t.rows {
+                    h.push_str("<tr>");
+                    for c in row {
+                        let _ = write!(h, "<td>{}</td>", escape(c));
+                    }
+                    h.push_str("</tr>\n");
+                }
+                h.push_str("</table>\n");
             }
             h.push_str("</section>\n");
         }

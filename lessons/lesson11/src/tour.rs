@@ -1,14 +1,35 @@
-//! The tour: every chapter of the lecture in order, with quick settings.
+//! The tour: every chapter of the lecture in order.
+//!
+//! `lesson11` without a command runs it: each chapter renders its pictures
+//! into `out/lesson11/NN-chapter/`, prints one line per picture, and adds a
+//! section to `out/lesson11/index.html`.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
 
 use anyhow::Result;
-use clap::Args;
-use raytracer::integrator::{AmbientOcclusion, Direct};
+use clap::{Args, ValueEnum};
+use raytracer::integrator::{
+    AmbientOcclusion, Direct, DirectStrategy, Integrator, NaiveRecursive, PathTracer,
+};
+use raytracer::render::{RenderOptions, render};
+use raytracer::scene::Scene;
 
-use crate::options::{SceneArgs, create_dir};
-use crate::page::{Figure, Page, Section};
+use crate::options::{create_dir, load_scene};
+use crate::page::{Figure, Page, Section, Table};
 use crate::render_cmd::render_to_files;
+
+/// How long the tour may take.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, Default)]
+pub enum Quality {
+    /// Tiny images, a few samples: checks that every chapter runs (seconds).
+    Tiny,
+    /// The default: every picture readable, the whole tour in about a minute.
+    #[default]
+    Quick,
+    /// Eight times the samples of `quick`, for slides and handouts.
+    Full,
+}
 
 /// Walk the lecture in order and write its pictures and out/lesson11/index.html.
 #[derive(Args, Debug, Clone)]
@@ -19,6 +40,9 @@ pub struct TourArgs {
     /// Worker threads (default: all cores).
     #[arg(long)]
     pub threads: Option<usize>,
+    /// How much time to spend: tiny, quick (the default) or full.
+    #[arg(long, value_enum, default_value = "quick")]
+    pub quality: Quality,
 }
 
 impl Default for TourArgs {
@@ -26,67 +50,287 @@ impl Default for TourArgs {
         TourArgs {
             out: PathBuf::from("out/lesson11"),
             threads: None,
+            quality: Quality::Quick,
         }
+    }
+}
+
+/// What every chapter needs: where to write, how hard to work.
+pub struct Tour {
+    pub out: PathBuf,
+    pub quality: Quality,
+    pub threads: Option<usize>,
+}
+
+impl Tour {
+    /// A built-in scene at the tour's quality, with `spp` samples at `quick`.
+    pub fn scene(&self, name: &str, spp: u32) -> Result<(Scene, RenderOptions)> {
+        let mut scene = load_scene(name)?;
+        let spp = match self.quality {
+            Quality::Tiny => {
+                let (w, h) = (scene.settings.width, scene.settings.height);
+                scene.set_resolution(32, (32 * h / w).max(1));
+                2.min(spp)
+            }
+            Quality::Quick => spp,
+            Quality::Full => spp * 8,
+        };
+        let options = RenderOptions {
+            spp,
+            seed: scene.settings.seed,
+            threads: self.threads,
+            label: name.to_string(),
+            ..RenderOptions::default()
+        };
+        Ok((scene, options))
+    }
+
+    /// The folder of chapter `dir`, created.
+    pub fn dir(&self, dir: &str) -> Result<PathBuf> {
+        let d = self.out.join(dir);
+        create_dir(&d)?;
+        Ok(d)
+    }
+
+    /// Renders and adds the picture to `section`.
+    pub fn picture(
+        &self,
+        section: &mut Section,
+        dir: &Path,
+        scene: &Scene,
+        integrator: &dyn Integrator,
+        options: &RenderOptions,
+        stem: &str,
+        caption: &str,
+    ) -> Result<()> {
+        let p = render_to_files(scene, integrator, options, dir, stem, 0.0)?;
+        section.figures.push(Figure::new(&self.out, &p, caption));
+        Ok(())
     }
 }
 
 pub fn run(args: &TourArgs) -> Result<()> {
     create_dir(&args.out)?;
-    let mut page = Page::new("Lecture 11: global illumination, rendered");
-
-    println!("00 · the renderer: scenes, direct light, ambient occlusion");
-    let dir = args.out.join("00-foundation");
-    let scene_args = |scene: &str, spp: u32| SceneArgs {
-        scene: Some(scene.to_string()),
-        spp: Some(spp),
+    let tour = Tour {
+        out: args.out.clone(),
+        quality: args.quality,
         threads: args.threads,
-        out: dir.clone(),
-        ..SceneArgs::default()
     };
-    let mut section = Section::new(
-        "00 · The renderer",
-        "The scenes every later chapter uses, lit by direct light only (one bounce) and shaded by \
-         ambient occlusion. Compare with the global illumination chapters: the ceiling of the Cornell \
-         box is black under direct light, because no light reaches it in one bounce.",
+    let start = Instant::now();
+    let mut page = Page::new("Lecture 11: stereoscopy and global illumination, rendered");
+    type Chapter = fn(&Tour) -> Result<Section>;
+    let chapters: [(&str, Chapter); 4] = [
+        ("gi-effects", gi_effects),
+        ("brdf", brdf),
+        ("rendering-equation", rendering_equation),
+        ("path", path),
+    ];
+    for (name, chapter) in chapters {
+        println!("\n== {name}");
+        page.sections.push(chapter(&tour)?);
+    }
+    let index = page.write(&args.out)?;
+    println!(
+        "\nThe tour took {:.1} s. Open {} to see every picture.",
+        start.elapsed().as_secs_f64(),
+        index.display()
     );
-    let (cornell, options) = scene_args("cornell", 64).load("cornell")?;
-    let p = render_to_files(&cornell, &Direct, &options, &dir, "cornell-direct", 0.0)?;
-    section.figures.push(Figure::new(
-        &args.out,
-        &p,
-        "Cornell box, direct light (max depth 2): the ceiling gets no light.",
-    ));
-    let (_, ao_options) = scene_args("cornell", 64).load("cornell")?;
-    let p = render_to_files(
-        &cornell,
-        &AmbientOcclusion { distance: 0.5 },
-        &ao_options,
+    Ok(())
+}
+
+/// Chapter 2: what direct light alone misses.
+fn gi_effects(tour: &Tour) -> Result<Section> {
+    let dir = tour.dir("02-gi-effects")?;
+    let mut s = Section::new(
+        "2 · Global illumination effects",
+        "The same Cornell box three ways. Direct light alone (one bounce) leaves the ceiling black and \
+         the shadows hard-edged and empty. Ambient occlusion darkens corners and contact regions but knows \
+         nothing of the light. Full global illumination (path tracing, unlimited depth) brings the indirect \
+         light: a lit ceiling, soft shadows, and colour bleeding — red and green tints on the white boxes.",
+    );
+    let (scene, options) = tour.scene("cornell", 64)?;
+    tour.picture(
+        &mut s,
         &dir,
-        "cornell-ao",
-        0.0,
-    )?;
-    section.figures.push(Figure::new(
-        &args.out,
-        &p,
-        "Ambient occlusion: darkened corners and contact shadows, no lights at all.",
-    ));
-    let (gallery, options) = scene_args("brdf-gallery", 32).load("brdf-gallery")?;
-    let p = render_to_files(
-        &gallery,
+        &scene,
         &Direct,
         &options,
-        &dir,
-        "brdf-gallery-direct",
-        0.0,
+        "cornell-direct",
+        "Direct light only (max depth 2).",
     )?;
-    section.figures.push(Figure::new(
-        &args.out,
-        &p,
-        "The BRDF gallery: Lambert, normalized Phong (n = 1, 10, 100, 1000), mirror, glass.",
-    ));
-    page.sections.push(section);
+    let ao = AmbientOcclusion { distance: 0.5 };
+    tour.picture(
+        &mut s,
+        &dir,
+        &scene,
+        &ao,
+        &options,
+        "cornell-ao",
+        "Ambient occlusion (rays of 0.5 m).",
+    )?;
+    let pt = PathTracer {
+        max_depth: None,
+        rr_depth: 5,
+        strategy: DirectStrategy::Mis,
+    };
+    tour.picture(
+        &mut s,
+        &dir,
+        &scene,
+        &pt,
+        &options,
+        "cornell-path",
+        "Global illumination: path tracing, unlimited depth.",
+    )?;
+    Ok(s)
+}
 
-    let index = page.write(&args.out)?;
-    println!("open {} to see every picture", index.display());
-    Ok(())
+/// Chapter 3: BRDFs.
+fn brdf(tour: &Tour) -> Result<Section> {
+    let dir = tour.dir("03-brdf")?;
+    let mut s = Section::new(
+        "3 · BRDFs",
+        "Lambert, normalized Phong with n = 1, 10, 100 and 1000, a perfect mirror and glass, lit by one \
+         area light and by each other (path tracing). As n grows the highlight narrows and brightens: the \
+         normalization (n+2)/2π keeps the reflected energy the same.",
+    );
+    let (scene, options) = tour.scene("brdf-gallery", 32)?;
+    let pt = PathTracer::default();
+    tour.picture(
+        &mut s,
+        &dir,
+        &scene,
+        &pt,
+        &options,
+        "brdf-gallery",
+        "The BRDF gallery, path traced.",
+    )?;
+    Ok(s)
+}
+
+/// Chapter 4: the rendering equation solved by naive recursion, and its cost.
+fn rendering_equation(tour: &Tour) -> Result<Section> {
+    let dir = tour.dir("04-rendering-equation")?;
+    let mut s = Section::new(
+        "4 · The rendering equation and its recursion",
+        "Naive recursive Monte Carlo shoots N rays at every hit and recurses: a pixel sample costs \
+         1 + N + N² + … rays, so the cost explodes with depth (the table counts the rays actually traced). \
+         Path tracing follows one ray per bounce and spends the same budget on more samples per pixel.",
+    );
+    let (mut scene, mut options) = tour.scene("cornell", 1)?;
+    if tour.quality != Quality::Tiny {
+        scene.set_resolution(96, 96);
+    }
+    options.progress = false;
+    let mut table = Table::new(
+        "Naive recursion on the Cornell box, 1 sample per pixel",
+        &[
+            "N (branching)",
+            "max depth D",
+            "rays per pixel (measured)",
+            "rays per pixel bound Σ N^d",
+            "seconds",
+        ],
+    );
+    let pixels = (scene.camera.width * scene.camera.height) as f64;
+    for n in [2u32, 4, 8] {
+        for d in [2u32, 3, 4] {
+            let naive = NaiveRecursive::new(vec![n], Some(d));
+            let result = render(&scene, &naive, &options);
+            table.rows.push(vec![
+                n.to_string(),
+                d.to_string(),
+                format!("{:.1}", naive.rays_traced() as f64 / pixels),
+                naive.rays_per_sample_bound().unwrap_or(0).to_string(),
+                format!("{:.3}", result.stats.elapsed.as_secs_f64()),
+            ]);
+        }
+    }
+    for row in &table.rows {
+        println!(
+            "  naive N={} D={}: {} rays per pixel, {} s",
+            row[0], row[1], row[2], row[4]
+        );
+    }
+    table.write_csv(&dir.join("naive-rays.csv"))?;
+    s.tables.push(table);
+    let naive = NaiveRecursive::new(vec![8], Some(4));
+    tour.picture(
+        &mut s,
+        &dir,
+        &scene,
+        &naive,
+        &options,
+        "naive-n8-d4",
+        "Naive recursion, N = 8, D = 4, 1 spp.",
+    )?;
+    let pt = PathTracer {
+        max_depth: Some(4),
+        rr_depth: 5,
+        strategy: DirectStrategy::BrdfOnly,
+    };
+    let mut equal = options.clone();
+    equal.spp = if tour.quality == Quality::Tiny { 2 } else { 64 };
+    tour.picture(
+        &mut s,
+        &dir,
+        &scene,
+        &pt,
+        &equal,
+        "path-d4",
+        "Path tracing (BRDF sampling only, as naive recursion), D = 4.",
+    )?;
+    Ok(s)
+}
+
+/// Chapter 5: path tracing, samples per pixel, and light sampling with MIS.
+fn path(tour: &Tour) -> Result<Section> {
+    let dir = tour.dir("05-path")?;
+    let mut s = Section::new(
+        "5 · Path tracing",
+        "One continuation per bounce and many samples per pixel: the noise falls as 1/√spp (each row of \
+         pictures quadruples the samples and halves the noise). Below, the three ways of finding light at \
+         equal samples: BRDF sampling only (lights are found by chance), light sampling only, and both \
+         combined by multiple importance sampling.",
+    );
+    let pt = PathTracer::default();
+    for spp in [1u32, 4, 16, 64] {
+        let (scene, mut options) = tour.scene("cornell", spp)?;
+        options.spp = options.spp.min(spp.max(1) * 8);
+        let stem = format!("cornell-path-{spp:03}spp");
+        tour.picture(
+            &mut s,
+            &dir,
+            &scene,
+            &pt,
+            &options,
+            &stem,
+            &format!("Path tracing, {spp} spp."),
+        )?;
+    }
+    let (scene, options) = tour.scene("cornell", 16)?;
+    for (strategy, stem, caption) in [
+        (
+            DirectStrategy::BrdfOnly,
+            "cornell-brdf-only",
+            "BRDF sampling only.",
+        ),
+        (
+            DirectStrategy::LightOnly,
+            "cornell-light-only",
+            "Light sampling only (no MIS).",
+        ),
+        (
+            DirectStrategy::Mis,
+            "cornell-mis",
+            "Light and BRDF sampling under MIS (power heuristic).",
+        ),
+    ] {
+        let pt = PathTracer {
+            strategy,
+            ..PathTracer::default()
+        };
+        tour.picture(&mut s, &dir, &scene, &pt, &options, stem, caption)?;
+    }
+    Ok(s)
 }
