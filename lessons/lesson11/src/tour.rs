@@ -4,7 +4,7 @@
 //! into `out/lesson11/NN-chapter/`, prints one line per picture, and adds a
 //! section to `out/lesson11/index.html`.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::Result;
@@ -85,28 +85,39 @@ impl Tour {
         Ok((scene, options))
     }
 
-    /// The folder of chapter `dir`, created.
-    pub fn dir(&self, dir: &str) -> Result<PathBuf> {
-        let d = self.out.join(dir);
-        create_dir(&d)?;
-        Ok(d)
+    /// Starts a chapter whose files go into `out/<folder>`.
+    pub fn chapter(&self, folder: &str, title: &str, text: &str) -> Result<Chapter> {
+        let dir = self.out.join(folder);
+        create_dir(&dir)?;
+        Ok(Chapter {
+            dir,
+            section: Section::new(title, text),
+        })
     }
 
-    /// Renders and adds the picture to `section`.
+    /// Renders and adds the picture to the chapter.
     pub fn picture(
         &self,
-        section: &mut Section,
-        dir: &Path,
+        chapter: &mut Chapter,
         scene: &Scene,
         integrator: &dyn Integrator,
         options: &RenderOptions,
         stem: &str,
         caption: &str,
     ) -> Result<()> {
-        let p = render_to_files(scene, integrator, options, dir, stem, 0.0)?;
-        section.figures.push(Figure::new(&self.out, &p, caption));
+        let p = render_to_files(scene, integrator, options, &chapter.dir, stem, 0.0)?;
+        chapter
+            .section
+            .figures
+            .push(Figure::new(&self.out, &p, caption));
         Ok(())
     }
+}
+
+/// A chapter being written: its folder and its section of the page.
+pub struct Chapter {
+    pub dir: PathBuf,
+    pub section: Section,
 }
 
 pub fn run(args: &TourArgs) -> Result<()> {
@@ -140,18 +151,17 @@ pub fn run(args: &TourArgs) -> Result<()> {
 
 /// Chapter 2: what direct light alone misses.
 fn gi_effects(tour: &Tour) -> Result<Section> {
-    let dir = tour.dir("02-gi-effects")?;
-    let mut s = Section::new(
+    let mut s = tour.chapter(
+        "02-gi-effects",
         "2 · Global illumination effects",
         "The same Cornell box three ways. Direct light alone (one bounce) leaves the ceiling black and \
          the shadows hard-edged and empty. Ambient occlusion darkens corners and contact regions but knows \
          nothing of the light. Full global illumination (path tracing, unlimited depth) brings the indirect \
          light: a lit ceiling, soft shadows, and colour bleeding — red and green tints on the white boxes.",
-    );
+    )?;
     let (scene, options) = tour.scene("cornell", 64)?;
     tour.picture(
         &mut s,
-        &dir,
         &scene,
         &Direct,
         &options,
@@ -161,7 +171,6 @@ fn gi_effects(tour: &Tour) -> Result<Section> {
     let ao = AmbientOcclusion { distance: 0.5 };
     tour.picture(
         &mut s,
-        &dir,
         &scene,
         &ao,
         &options,
@@ -175,48 +184,46 @@ fn gi_effects(tour: &Tour) -> Result<Section> {
     };
     tour.picture(
         &mut s,
-        &dir,
         &scene,
         &pt,
         &options,
         "cornell-path",
         "Global illumination: path tracing, unlimited depth.",
     )?;
-    Ok(s)
+    Ok(s.section)
 }
 
 /// Chapter 3: BRDFs.
 fn brdf(tour: &Tour) -> Result<Section> {
-    let dir = tour.dir("03-brdf")?;
-    let mut s = Section::new(
+    let mut s = tour.chapter(
+        "03-brdf",
         "3 · BRDFs",
         "Lambert, normalized Phong with n = 1, 10, 100 and 1000, a perfect mirror and glass, lit by one \
          area light and by each other (path tracing). As n grows the highlight narrows and brightens: the \
          normalization (n+2)/2π keeps the reflected energy the same.",
-    );
+    )?;
     let (scene, options) = tour.scene("brdf-gallery", 32)?;
     let pt = PathTracer::default();
     tour.picture(
         &mut s,
-        &dir,
         &scene,
         &pt,
         &options,
         "brdf-gallery",
         "The BRDF gallery, path traced.",
     )?;
-    Ok(s)
+    Ok(s.section)
 }
 
 /// Chapter 4: the rendering equation solved by naive recursion, and its cost.
 fn rendering_equation(tour: &Tour) -> Result<Section> {
-    let dir = tour.dir("04-rendering-equation")?;
-    let mut s = Section::new(
+    let mut s = tour.chapter(
+        "04-rendering-equation",
         "4 · The rendering equation and its recursion",
         "Naive recursive Monte Carlo shoots N rays at every hit and recurses: a pixel sample costs \
          1 + N + N² + … rays, so the cost explodes with depth (the table counts the rays actually traced). \
          Path tracing follows one ray per bounce and spends the same budget on more samples per pixel.",
-    );
+    )?;
     let (mut scene, mut options) = tour.scene("cornell", 1)?;
     if tour.quality != Quality::Tiny {
         scene.set_resolution(96, 96);
@@ -252,12 +259,11 @@ fn rendering_equation(tour: &Tour) -> Result<Section> {
             row[0], row[1], row[2], row[4]
         );
     }
-    table.write_csv(&dir.join("naive-rays.csv"))?;
-    s.tables.push(table);
+    table.write_csv(&s.dir.join("naive-rays.csv"))?;
+    s.section.tables.push(table);
     let naive = NaiveRecursive::new(vec![8], Some(4));
     tour.picture(
         &mut s,
-        &dir,
         &scene,
         &naive,
         &options,
@@ -273,26 +279,25 @@ fn rendering_equation(tour: &Tour) -> Result<Section> {
     equal.spp = if tour.quality == Quality::Tiny { 2 } else { 64 };
     tour.picture(
         &mut s,
-        &dir,
         &scene,
         &pt,
         &equal,
         "path-d4",
         "Path tracing (BRDF sampling only, as naive recursion), D = 4.",
     )?;
-    Ok(s)
+    Ok(s.section)
 }
 
 /// Chapter 5: path tracing, samples per pixel, and light sampling with MIS.
 fn path(tour: &Tour) -> Result<Section> {
-    let dir = tour.dir("05-path")?;
-    let mut s = Section::new(
+    let mut s = tour.chapter(
+        "05-path",
         "5 · Path tracing",
         "One continuation per bounce and many samples per pixel: the noise falls as 1/√spp (each row of \
          pictures quadruples the samples and halves the noise). Below, the three ways of finding light at \
          equal samples: BRDF sampling only (lights are found by chance), light sampling only, and both \
          combined by multiple importance sampling.",
-    );
+    )?;
     let pt = PathTracer::default();
     for spp in [1u32, 4, 16, 64] {
         let (scene, mut options) = tour.scene("cornell", spp)?;
@@ -300,7 +305,6 @@ fn path(tour: &Tour) -> Result<Section> {
         let stem = format!("cornell-path-{spp:03}spp");
         tour.picture(
             &mut s,
-            &dir,
             &scene,
             &pt,
             &options,
@@ -330,7 +334,7 @@ fn path(tour: &Tour) -> Result<Section> {
             strategy,
             ..PathTracer::default()
         };
-        tour.picture(&mut s, &dir, &scene, &pt, &options, stem, caption)?;
+        tour.picture(&mut s, &scene, &pt, &options, stem, caption)?;
     }
-    Ok(s)
+    Ok(s.section)
 }
