@@ -545,7 +545,7 @@ pub fn connect_to_camera(
 
 /// Veach's MIS weight (power heuristic) of strategy `(s, t)` for the path
 /// `light[0..s] camera[t−1..0]`. `sampled` replaces `light[0]` (if `s = 1`:
-/// the resampled light point) or `camera[0]` (if `t = 1`: the lens point of
+/// the resampled light point, t ≥ 2) or `camera[0]` (if `t = 1`: the lens point of
 /// the connection). The connection changes four reverse densities — those of
 /// the two endpoints and their predecessors, which now depend on the other
 /// subpath — so they are set here and restored afterwards.
@@ -573,10 +573,11 @@ pub fn mis_weight(
         t.checked_sub(2).map(|i| camera[i]),
     ];
     if let Some(v) = sampled {
-        if s == 1 {
-            light[0] = v;
-        } else if t == 1 {
+        // (1, 1) resamples the lens point, not the light point.
+        if t == 1 {
             camera[0] = v;
+        } else if s == 1 {
+            light[0] = v;
         }
     }
     // Endpoints are connected deterministically: not deltas for the sums.
