@@ -8,7 +8,12 @@ fn main() {
     let d: u32 = args[2].parse().unwrap();
     let mut scene = Scene::builtin(name).unwrap();
     scene.set_resolution(16, 16);
-    let o = RenderOptions { spp: 64, seed: 1, progress: false, ..Default::default() };
+    let o = RenderOptions {
+        spp: 64,
+        seed: 1,
+        progress: false,
+        ..Default::default()
+    };
     for ((s, t), w, u) in render_strategies(&scene, &o, d) {
         println!("s={s} t={t} weighted {} unweighted {}", mean(&w), mean(&u));
     }

@@ -206,7 +206,7 @@ impl Bdpt {
         // The environment seen by an escaping camera path: strategy
         // (0, n_C + 1), the only one that generates such paths (weight 1).
         if let Some((beta, d)) = cam.escaped
-            && n_camera + 1 <= max_vertices
+            && n_camera < max_vertices
             && keep(0, n_camera + 1)
         {
             l += beta * scene.escaped_radiance(d);

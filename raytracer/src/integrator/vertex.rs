@@ -370,7 +370,10 @@ pub fn random_walk(
     while n < max_vertices {
         let Some(it) = scene.intersect(&ray) else {
             let escaped = (mode == TransportMode::Radiance).then_some((beta, ray.d));
-            return WalkEnd { vertices: n, escaped };
+            return WalkEnd {
+                vertices: n,
+                escaped,
+            };
         };
         let mut v = Vertex::surface(scene, it, beta);
         v.pdf_fwd = convert_density(pdf_w, &path[n - 1], &v);
@@ -486,7 +489,13 @@ pub fn light_subpath(
         return 0;
     }
     let pdf_origin = pmf * e.pdf_a;
-    path[0] = Vertex::light(index, e.ray.o, e.n, Color::splat(1.0 / pdf_origin), pdf_origin);
+    path[0] = Vertex::light(
+        index,
+        e.ray.o,
+        e.n,
+        Color::splat(1.0 / pdf_origin),
+        pdf_origin,
+    );
     if max_vertices < 2 {
         return 1;
     }
@@ -526,11 +535,7 @@ pub fn visible(scene: &Scene, a: &Vertex, b: &Vertex) -> bool {
 /// `camera.sample_wi` returns `p_ω = d² / (cos θ_lens · A_lens)` (the lens
 /// density per unit solid angle at `q`). Visibility-tested. `None` if the
 /// point is off the film, behind the camera or in shadow.
-pub fn connect_to_camera(
-    scene: &Scene,
-    q: &Vertex,
-    u_lens: Vec2,
-) -> Option<(CameraSample, Color)> {
+pub fn connect_to_camera(scene: &Scene, q: &Vertex, u_lens: Vec2) -> Option<(CameraSample, Color)> {
     if !q.is_connectible(scene) {
         return None;
     }
@@ -562,7 +567,10 @@ pub fn mis_weight(
     t: usize,
     sampled: Option<Vertex>,
 ) -> f32 {
-    debug_assert!(t >= 1 && s + t >= 2, "strategy ({s}, {t}) has no camera vertex");
+    debug_assert!(
+        t >= 1 && s + t >= 2,
+        "strategy ({s}, {t}) has no camera vertex"
+    );
     // Save what we change.
     let saved_l: [Option<Vertex>; 2] = [
         s.checked_sub(1).map(|i| light[i]),
