@@ -27,13 +27,18 @@ pub trait Integrator: Sync {
 }
 
 mod ao;
+pub mod bdpt;
 mod direct;
+mod light_tracing;
 mod naive;
 pub mod nee;
 mod path;
+pub mod vertex;
 
 pub use ao::AmbientOcclusion;
+pub use bdpt::{Bdpt, StrategyFilter, render_strategies};
 pub use direct::Direct;
+pub use light_tracing::LightTracer;
 pub use naive::NaiveRecursive;
 pub use path::{DirectStrategy, PathTracer};
 

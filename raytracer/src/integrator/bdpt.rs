@@ -1,0 +1,290 @@
+//! Bidirectional path tracing (Veach and Guibas 1994; Veach's thesis, ch. 10).
+//!
+//! Lecture topic: "Bidirectional path tracing". Each pixel sample builds a
+//! camera subpath `z_0 … z_{n_C−1}` and a light subpath `y_0 … y_{n_L−1}` and
+//! joins every prefix pair: the strategy `(s, t)` uses `s` light and `t`
+//! camera vertices and forms the path `y_0 … y_{s−1} z_{t−1} … z_0`:
+//!
+//! - `s = 0`: the camera subpath itself hits a light, `C = β_z · L_e`
+//!   (what a path tracer without next event estimation does);
+//! - `s = 1`: next event estimation — the light vertex is *resampled* from
+//!   `z_{t−1}` with `sample_li` (as pbrt does; it is a better point than
+//!   `y_0`), `C = β_z f_r |cos θ| L_i / (P(light) p_ω)`;
+//! - `t = 1`: light tracing — `y_{s−1}` joined to a new lens point and
+//!   splatted where it lands ([`vertex::connect_to_camera`]);
+//! - otherwise: `C = β_y f_r(y_{s−2} → y_{s−1} → z_{t−1}) G(y_{s−1}, z_{t−1})
+//!   f_r(y_{s−1} → z_{t−1} → z_{t−2}) β_z`, with the geometry term
+//!   `G = V |cos θ_y| |cos θ_z| / d²`.
+//!
+//! Every `C` is weighted by the power heuristic over all strategies that
+//! could have generated the same path ([`vertex::mis_weight`]), so the sum
+//! over `(s, t)` is an unbiased estimate that keeps the best of each: NEE for
+//! small lights, light tracing for caustics seen through diffuse surfaces,
+//! hitting for large lights and glossy paths.
+//!
+//! Depth: paths of at most `D + 1` vertices for Mitsuba's `max_depth = D`, so
+//! `s + t ≤ D + 1`; the camera subpath keeps at most `D + 1` vertices, the
+//! light subpath at most `D`.
+//!
+//! For the lesson, [`render_strategies`] renders the contribution of each
+//! `(s, t)` separately, weighted and unweighted (pbrt's `visualizestrategies`).
+
+use super::Integrator;
+use super::vertex::{
+    self, EMPTY_VERTEX, MAX_VERTICES, Subpath, Vertex, mis_weight, path_vertices, visible,
+};
+use crate::film::{Image, Splat};
+use crate::math::{Color, UVec2, Vec2};
+use crate::render::{RenderOptions, render_pixels};
+use crate::sampling::Sampler;
+use crate::scene::Scene;
+
+/// Which contributions a [`Bdpt`] keeps (for the per-strategy images).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StrategyFilter {
+    /// Light vertices.
+    pub s: u32,
+    /// Camera vertices.
+    pub t: u32,
+    /// Multiply by the MIS weight (false: the strategy's own unweighted
+    /// estimate of all paths it can generate).
+    pub weighted: bool,
+}
+
+/// Bidirectional path tracing.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bdpt {
+    /// Maximum depth (Mitsuba's convention); `None` = unlimited.
+    pub max_depth: Option<u32>,
+    /// Russian roulette starts once this many bounces have been made.
+    pub rr_depth: u32,
+    /// `None`: the full estimator. `Some`: only one strategy (lesson images).
+    pub strategy_images: Option<StrategyFilter>,
+}
+
+impl Default for Bdpt {
+    fn default() -> Self {
+        Bdpt {
+            max_depth: None,
+            rr_depth: 5,
+            strategy_images: None,
+        }
+    }
+}
+
+/// The value of one connection: its unweighted contribution, where it lands
+/// (`Some` raster position for `t = 1`, which is splatted) and the resampled
+/// vertex that replaces `y_0` (`s = 1`) or `z_0` (`t = 1`) in the MIS weight.
+struct Connection {
+    value: Color,
+    raster: Option<Vec2>,
+    sampled: Option<Vertex>,
+}
+
+/// The unweighted contribution of strategy `(s, t)`; `None` if it is zero.
+fn connect(
+    scene: &Scene,
+    light: &Subpath,
+    camera: &Subpath,
+    s: usize,
+    t: usize,
+    sampler: &mut Sampler,
+) -> Option<Connection> {
+    let pt = &camera[t - 1];
+    if s == 0 {
+        // The camera path hit an emitter: C = β_z · L_e(z_{t−1} → z_{t−2}).
+        let value = pt.beta * pt.le_towards(scene, &camera[t - 2]);
+        return (value != Color::ZERO).then_some(Connection {
+            value,
+            raster: None,
+            sampled: None,
+        });
+    }
+    if t == 1 {
+        // Light tracing: y_{s−1} joined to the lens.
+        let (cs, value) = vertex::connect_to_camera(scene, &light[s - 1], sampler.next_2d())?;
+        return Some(Connection {
+            value,
+            raster: Some(cs.raster),
+            sampled: Some(Vertex::camera(cs.p_lens, Color::ZERO)),
+        });
+    }
+    if !pt.is_connectible(scene) {
+        return None;
+    }
+    if s == 1 {
+        // Next event estimation: a fresh light point seen from z_{t−1}.
+        let u_choice = sampler.next_1d();
+        let u = sampler.next_2d();
+        let (index, l, pmf) = scene.choose_light(u_choice)?;
+        if l.is_environment() {
+            // Not a strategy here (see `vertex`): environment light comes
+            // only through escaping camera paths.
+            return None;
+        }
+        let ls = l.sample_li(pt.p(), u)?;
+        if ls.pdf_w <= 0.0 || ls.li == Color::ZERO {
+            return None;
+        }
+        // C = β_z f_r |cos θ_z| L_i / (P(light) p_ω).
+        let value = pt.beta * pt.f(scene, ls.wi) * (pt.abs_cos(ls.wi) / (pmf * ls.pdf_w)) * ls.li;
+        if value == Color::ZERO {
+            return None;
+        }
+        // For MIS the resampled point counts with the density of a light
+        // path's origin, P(light) p_A (pbrt does the same): the weights of
+        // all strategies use the same densities, so they still sum to one.
+        let mut y = Vertex::light(index, ls.p, ls.n, Color::ZERO, 0.0);
+        y.pdf_fwd = y.pdf_light_origin(scene);
+        if !visible(scene, pt, &y) {
+            return None;
+        }
+        return Some(Connection {
+            value,
+            raster: None,
+            sampled: Some(y),
+        });
+    }
+    // General connection: C = β_y f_y G f_z β_z with G = |cos θ_y| |cos θ_z| / d².
+    let qs = &light[s - 1];
+    if !qs.is_connectible(scene) {
+        return None;
+    }
+    let d = pt.p() - qs.p();
+    let d2 = d.length_squared();
+    if d2 == 0.0 {
+        return None;
+    }
+    let w = d / d2.sqrt(); // from y_{s−1} towards z_{t−1}
+    let g = qs.abs_cos(w) * pt.abs_cos(w) / d2;
+    let value = qs.beta * qs.f(scene, w) * pt.f(scene, -w) * pt.beta * g;
+    if value == Color::ZERO || !visible(scene, qs, pt) {
+        return None;
+    }
+    Some(Connection {
+        value,
+        raster: None,
+        sampled: None,
+    })
+}
+
+impl Bdpt {
+    /// One pixel sample: builds both subpaths and sums every strategy (or the
+    /// one selected by `strategy_images`).
+    fn estimate(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        splats: &mut Vec<Splat>,
+    ) -> Color {
+        let max_vertices = path_vertices(self.max_depth); // D + 1
+        let mut camera: Subpath = [EMPTY_VERTEX; MAX_VERTICES];
+        let mut light: Subpath = [EMPTY_VERTEX; MAX_VERTICES];
+        let cam = vertex::camera_subpath(
+            scene,
+            pixel,
+            sampler,
+            &mut camera,
+            max_vertices,
+            self.rr_depth,
+        );
+        let n_light = vertex::light_subpath(
+            scene,
+            sampler,
+            &mut light,
+            max_vertices.saturating_sub(1),
+            self.rr_depth,
+        );
+        let n_camera = cam.vertices;
+        let keep = |s: usize, t: usize| {
+            self.strategy_images
+                .is_none_or(|f| f.s as usize == s && f.t as usize == t)
+        };
+        let weighted = self.strategy_images.is_none_or(|f| f.weighted);
+        let mut l = Color::ZERO;
+        // The environment seen by an escaping camera path: strategy
+        // (0, n_C + 1), the only one that generates such paths (weight 1).
+        if let Some((beta, d)) = cam.escaped
+            && n_camera < max_vertices
+            && keep(0, n_camera + 1)
+        {
+            l += beta * scene.escaped_radiance(d);
+        }
+        for t in 1..=n_camera {
+            for s in 0..=n_light {
+                if s + t < 2 || s + t > max_vertices || !keep(s, t) {
+                    continue;
+                }
+                let Some(c) = connect(scene, &light, &camera, s, t, sampler) else {
+                    continue;
+                };
+                let w = if weighted {
+                    mis_weight(scene, &mut light, &mut camera, s, t, c.sampled)
+                } else {
+                    1.0
+                };
+                let value = c.value * w;
+                match c.raster {
+                    Some(raster) => splats.push(Splat { raster, value }),
+                    None => l += value,
+                }
+            }
+        }
+        l
+    }
+}
+
+impl Integrator for Bdpt {
+    fn name(&self) -> &'static str {
+        "bdpt"
+    }
+
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        splats: &mut Vec<Splat>,
+    ) -> Color {
+        self.estimate(scene, pixel, sampler, splats)
+    }
+}
+
+/// One image per strategy `(s, t)` with `s + t ≤ D + 1` (`t ≥ 1`,
+/// `max_depth = D`, paths of at least two vertices): `((s, t), weighted,
+/// unweighted)`. The weighted images add up to the BDPT image; an unweighted
+/// image is that strategy's own estimate of all the paths it can generate
+/// (noisy where it is a poor strategy, black where it is impossible). Two
+/// renders per strategy with `options`; keep the image small.
+pub fn render_strategies(
+    scene: &Scene,
+    options: &RenderOptions,
+    max_depth: u32,
+) -> Vec<((u32, u32), Image, Image)> {
+    let mut out = Vec::new();
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    for n in 2..=max_depth + 1 {
+        for t in 1..=n {
+            let s = n - t;
+            let image = |weighted: bool| {
+                let bdpt = Bdpt {
+                    max_depth: Some(max_depth),
+                    rr_depth: u32::MAX,
+                    strategy_images: Some(StrategyFilter { s, t, weighted }),
+                };
+                let options = RenderOptions {
+                    label: format!("bdpt s={s} t={t}"),
+                    ..options.clone()
+                };
+                render_pixels(w, h, &options, |pixel, sampler, splats| {
+                    bdpt.sample(scene, pixel, sampler, splats)
+                })
+                .film
+                .image()
+            };
+            out.push(((s, t), image(true), image(false)));
+        }
+    }
+    out
+}
