@@ -7,6 +7,7 @@
 
 mod bench;
 mod bench_rays;
+mod chapters;
 mod options;
 mod page;
 mod render_cmd;

@@ -5,7 +5,8 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result};
 use clap::{Args, ValueEnum};
 use raytracer::integrator::{
-    AmbientOcclusion, Direct, DirectStrategy, Integrator, NaiveRecursive, PathTracer,
+    AmbientOcclusion, Bdpt, Direct, DirectStrategy, Integrator, LightTracer, NaiveRecursive,
+    PathTracer,
 };
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
@@ -27,6 +28,10 @@ pub enum IntegratorKind {
     PathNee,
     /// Naive recursive Monte Carlo: N rays at every hit (see --branching), N^D rays per sample.
     Naive,
+    /// Light tracing: paths start on the lights and every vertex is connected to the camera.
+    Light,
+    /// Bidirectional path tracing: camera and light subpaths, every connection, MIS over all of them.
+    Bdpt,
 }
 
 impl IntegratorKind {
@@ -58,6 +63,15 @@ impl IntegratorKind {
                 naive.cutoff = args.cutoff;
                 Box::new(naive)
             }
+            IntegratorKind::Light => Box::new(LightTracer {
+                max_depth,
+                rr_depth,
+            }),
+            IntegratorKind::Bdpt => Box::new(Bdpt {
+                max_depth,
+                rr_depth,
+                strategy_images: None,
+            }),
         }
     }
 }

@@ -130,11 +130,14 @@ pub fn run(args: &TourArgs) -> Result<()> {
     let start = Instant::now();
     let mut page = Page::new("Lecture 11: stereoscopy and global illumination, rendered");
     type Chapter = fn(&Tour) -> Result<Section>;
-    let chapters: [(&str, Chapter); 4] = [
+    let chapters: [(&str, Chapter); 7] = [
         ("gi-effects", gi_effects),
         ("brdf", brdf),
         ("rendering-equation", rendering_equation),
         ("path", path),
+        ("light", crate::chapters::light),
+        ("bdpt", crate::chapters::bdpt),
+        ("compare", crate::chapters::compare),
     ];
     for (name, chapter) in chapters {
         println!("\n== {name}");

@@ -1,0 +1,240 @@
+//! The chapters after path tracing: light tracing, bidirectional path
+//! tracing, and the comparison of all the algorithms at equal time.
+
+use std::time::Instant;
+
+use anyhow::Result;
+use raytracer::film::Image;
+use raytracer::integrator::{
+    Bdpt, DirectStrategy, Integrator, LightTracer, NaiveRecursive, PathTracer, render_strategies,
+};
+use raytracer::metrics::rmse;
+use raytracer::render::{RenderOptions, render};
+use raytracer::scene::Scene;
+
+use crate::page::{Figure, Section, Table};
+use crate::render_cmd::Picture;
+use crate::tour::{Quality, Tour};
+
+/// Chapter 6: light tracing, and the caustic only light paths can find.
+pub fn light(tour: &Tour) -> Result<Section> {
+    let mut c = tour.chapter(
+        "06-light",
+        "6 · Light tracing",
+        "Paths start on the lights and every vertex is connected to the camera lens, weighted by the \
+         camera's importance W_e, and splatted wherever it lands on the film. Under a point light, the \
+         caustic a glass ball focuses onto the floor is found by light tracing and by bidirectional \
+         tracing; a path tracer cannot find it (its paths would have to hit the point light through \
+         the glass), which is the lecture's remark about point lights and non-glossy refraction.",
+    )?;
+    let (scene, options) = tour.scene("cornell", 64)?;
+    let lt = LightTracer::default();
+    tour.picture(
+        &mut c,
+        &scene,
+        &lt,
+        &options,
+        "cornell-light",
+        "Cornell box, light tracing.",
+    )?;
+    let (scene, options) = tour.scene("caustic", 64)?;
+    let max_depth = Some(8);
+    let pt = PathTracer {
+        max_depth,
+        ..PathTracer::default()
+    };
+    let lt = LightTracer {
+        max_depth,
+        ..LightTracer::default()
+    };
+    let bd = Bdpt {
+        max_depth,
+        ..Bdpt::default()
+    };
+    tour.picture(
+        &mut c,
+        &scene,
+        &pt,
+        &options,
+        "caustic-path",
+        "Path tracing: no caustic under the ball.",
+    )?;
+    tour.picture(
+        &mut c,
+        &scene,
+        &lt,
+        &options,
+        "caustic-light",
+        "Light tracing: the caustic appears.",
+    )?;
+    tour.picture(
+        &mut c,
+        &scene,
+        &bd,
+        &options,
+        "caustic-bdpt",
+        "Bidirectional path tracing: caustic and the rest.",
+    )?;
+    Ok(c.section)
+}
+
+/// Chapter 7: bidirectional path tracing and its strategies.
+pub fn bdpt(tour: &Tour) -> Result<Section> {
+    let mut c = tour.chapter(
+        "07-bdpt",
+        "7 · Bidirectional path tracing",
+        "A camera subpath and a light subpath, joined in every possible way: s light vertices and t camera \
+         vertices give the strategy (s, t). s = 0 is a camera path that hits a light, s = 1 next event \
+         estimation, t = 1 light tracing. Multiple importance sampling (power heuristic) weights every \
+         strategy where it is good. Below: each strategy's own estimate (unweighted) and its share after \
+         MIS (weighted); the weighted images add up to the bidirectional image.",
+    )?;
+    let (scene, options) = tour.scene("cornell", 64)?;
+    let bd = Bdpt::default();
+    tour.picture(
+        &mut c,
+        &scene,
+        &bd,
+        &options,
+        "cornell-bdpt",
+        "Cornell box, bidirectional path tracing.",
+    )?;
+    let (mut scene, mut options) = tour.scene("cornell", 16)?;
+    if tour.quality != Quality::Tiny {
+        scene.set_resolution(96, 96);
+    }
+    options.progress = false;
+    let max_depth = 3;
+    for ((s, t), weighted, unweighted) in render_strategies(&scene, &options, max_depth) {
+        for (image, kind) in [(&unweighted, "unweighted"), (&weighted, "weighted")] {
+            let stem = format!("strategy-s{s}-t{t}-{kind}");
+            let picture = write_image(&c.dir, &stem, image, options.spp)?;
+            c.section.figures.push(Figure::new(
+                &tour.out,
+                &picture,
+                &format!("s = {s}, t = {t}, {kind}."),
+            ));
+        }
+    }
+    println!(
+        "  wrote the {} strategy images of max depth {max_depth}",
+        c.section.figures.len() - 1
+    );
+    Ok(c.section)
+}
+
+fn write_image(dir: &std::path::Path, stem: &str, image: &Image, spp: u32) -> Result<Picture> {
+    let png = dir.join(format!("{stem}.png"));
+    let exr = dir.join(format!("{stem}.exr"));
+    image.write_png(&png, 0.0)?;
+    image.write_exr(&exr)?;
+    Ok(Picture {
+        png,
+        exr,
+        seconds: 0.0,
+        spp,
+    })
+}
+
+/// Renders `integrator` for about `seconds`: a short trial render measures
+/// the time per sample per pixel, then the real render takes the samples that fit.
+fn render_for(
+    scene: &Scene,
+    integrator: &dyn Integrator,
+    base: &RenderOptions,
+    seconds: f64,
+) -> (Image, u32, f64) {
+    let trial = RenderOptions {
+        spp: 1,
+        progress: false,
+        ..base.clone()
+    };
+    let t = Instant::now();
+    let _ = render(scene, integrator, &trial);
+    let per_spp = t.elapsed().as_secs_f64().max(1e-4);
+    let spp = ((seconds / per_spp) as u32).clamp(1, 1 << 16);
+    let options = RenderOptions {
+        spp,
+        progress: false,
+        ..base.clone()
+    };
+    let result = render(scene, integrator, &options);
+    (result.film.image(), spp, result.stats.elapsed.as_secs_f64())
+}
+
+/// Chapter 8: every algorithm at equal time against a high-sample reference.
+pub fn compare(tour: &Tour) -> Result<Section> {
+    let mut c = tour.chapter(
+        "08-compare",
+        "8 · Comparison at equal time",
+        "Each algorithm gets the same time and the same maximum depth (5); the error is the RMSE against a \
+         bidirectional reference with many samples. In the door scene the only light is in the next room: path tracing must find it \
+         through the gap by chance, bidirectional tracing connects the two rooms directly. On the Cornell \
+         box, naive recursion spends its rays on the N^D tree of one pixel sample, path tracing on more \
+         samples per pixel.",
+    )?;
+    let budget = match tour.quality {
+        Quality::Tiny => 0.05,
+        Quality::Quick => 2.0,
+        Quality::Full => 15.0,
+    };
+    let mut table = Table::new(
+        "Equal-time comparison (RMSE against the reference; lower is better)",
+        &["scene", "algorithm", "spp", "seconds", "RMSE"],
+    );
+    for (name, reference_spp) in [("door", 256u32), ("cornell", 256)] {
+        let (mut scene, base) = tour.scene(name, reference_spp)?;
+        if tour.quality != Quality::Tiny {
+            let (w, h) = (scene.settings.width, scene.settings.height);
+            scene.set_resolution(w.min(160), (h * w.min(160) / w).max(1));
+        }
+        let reference_options = RenderOptions {
+            progress: true,
+            label: format!("{name} reference"),
+            ..base.clone()
+        };
+        let reference = render(&scene, &Bdpt::default(), &reference_options)
+            .film
+            .image();
+        let mut naive = NaiveRecursive::new(vec![4], Some(5));
+        naive.roulette_depth = None;
+        let path = PathTracer::default();
+        let path_brdf = PathTracer {
+            strategy: DirectStrategy::BrdfOnly,
+            ..PathTracer::default()
+        };
+        let light = LightTracer::default();
+        let bdpt = Bdpt::default();
+        let mut algorithms: Vec<(&str, &dyn Integrator)> = vec![
+            ("path (MIS)", &path),
+            ("path (BRDF only)", &path_brdf),
+            ("light", &light),
+            ("bidirectional", &bdpt),
+        ];
+        if name == "cornell" {
+            algorithms.insert(0, ("naive N=4, D=5", &naive));
+        }
+        for (label, integrator) in algorithms {
+            let (image, spp, secs) = render_for(&scene, integrator, &base, budget);
+            let error = rmse(&image, &reference);
+            println!("  {name:8} {label:18} {spp:6} spp {secs:7.2} s  RMSE {error:.4}");
+            let stem = format!("{name}-{}", integrator.name());
+            let picture = write_image(&c.dir, &stem, &image, spp)?;
+            c.section.figures.push(Figure::new(
+                &tour.out,
+                &picture,
+                &format!("{name}, {label}, RMSE {error:.4}."),
+            ));
+            table.rows.push(vec![
+                name.into(),
+                label.into(),
+                spp.to_string(),
+                format!("{secs:.2}"),
+                format!("{error:.5}"),
+            ]);
+        }
+    }
+    table.write_csv(&c.dir.join("equal-time.csv"))?;
+    c.section.tables.push(table);
+    Ok(c.section)
+}
