@@ -302,7 +302,8 @@ radiance = 1
     /// refocused at 1.5 m, where the views' disparities (about 3 px between
     /// neighbours) blur it; and the in-focus refocus is as sharp as a single
     /// view, up to the noise averaging. Deterministic (fixed seed); the
-    /// margins are wide (measured ratio about 3).
+    /// margins are wide (measured: 0.061 at the wall, 0.0049 at 1.5 m,
+    /// 0.0033 at 12 m, 0.117 for one noisier view).
     #[test]
     fn refocusing_at_a_planes_depth_makes_it_sharpest() {
         let lf = wall_field(3, 0.6);
