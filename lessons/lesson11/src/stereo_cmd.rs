@@ -146,13 +146,13 @@ fn check(args: &StereoArgs) -> Result<()> {
         );
     }
     if !(0.0..=1.0).contains(&args.leakage) {
-        bail!(
-            "--leakage must lie in [0, 1], got {}",
-            args.leakage
-        );
+        bail!("--leakage must lie in [0, 1], got {}", args.leakage);
     }
     if args.lf_views > 0 && !(args.lf_aperture.is_finite() && args.lf_aperture >= 0.0) {
-        bail!("--lf-aperture must be a distance ≥ 0, got {}", args.lf_aperture);
+        bail!(
+            "--lf-aperture must be a distance ≥ 0, got {}",
+            args.lf_aperture
+        );
     }
     if args.lf_downscale == 0 {
         bail!("--lf-downscale must be at least 1");
@@ -261,16 +261,17 @@ pub fn render_section(args: &StereoArgs, page_root: &Path) -> Result<Section> {
     let convergence = rig.convergence_distance(&scene.camera.params);
     println!(
         "01 · stereo: {} eyes {} apart, zero parallax at {convergence:.3} ({}, {} spp)",
-        if rig.toe_in { "toed-in" } else { "parallel, off-axis" },
+        if rig.toe_in {
+            "toed-in"
+        } else {
+            "parallel, off-axis"
+        },
         rig.separation,
         integrator.name(),
         options.spp
     );
 
-    let mut section = Section::new(
-        "01 · Stereoscopy",
-        &section_text(args, convergence),
-    );
+    let mut section = Section::new("01 · Stereoscopy", &section_text(args, convergence));
 
     // The two eyes, same seed: identical random sequences.
     let mut eye_scene = scene.clone();

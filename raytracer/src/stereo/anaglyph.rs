@@ -264,7 +264,11 @@ mod tests {
             ("black | white", BLACK, WHITE),
             ("red | red", Vec3A::X, Vec3A::X),
             ("green | blue", Vec3A::Y, Vec3A::Z),
-            ("orange | grey", Vec3A::new(0.9, 0.4, 0.1), Vec3A::splat(0.5)),
+            (
+                "orange | grey",
+                Vec3A::new(0.9, 0.4, 0.1),
+                Vec3A::splat(0.5),
+            ),
         ];
         let mut table = String::new();
         for desat in [0.0, 1.0] {
@@ -304,7 +308,9 @@ mod tests {
         // And a saturated red object becomes visible to the cyan eye.
         let red = Vec3A::X;
         let seen = |a: f32| {
-            Anaglyph::RedCyan.mix(BLACK, red, a).dot(Anaglyph::RedCyan.filter(Eye::Right))
+            Anaglyph::RedCyan
+                .mix(BLACK, red, a)
+                .dot(Anaglyph::RedCyan.filter(Eye::Right))
         };
         assert_eq!(seen(0.0), 0.0);
         assert!(seen(1.0) > 0.3);

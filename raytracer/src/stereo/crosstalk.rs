@@ -71,7 +71,10 @@ mod tests {
         let right = Image::new(2, 1);
         let ana = Anaglyph::Grey.compose(&left, &right, 0.0);
         let [l0, r0] = eye_views(&ana, Anaglyph::Grey, 0.0);
-        assert!((l0.get(0, 0).x - 1.0).abs() < 1e-6, "left eye sees its white");
+        assert!(
+            (l0.get(0, 0).x - 1.0).abs() < 1e-6,
+            "left eye sees its white"
+        );
         assert_eq!(r0.get(0, 0), Vec3A::ZERO, "no ghost with ideal filters");
         let k = 0.1;
         let [_, r1] = eye_views(&ana, Anaglyph::Grey, k);
