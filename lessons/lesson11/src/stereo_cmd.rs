@@ -31,11 +31,11 @@ pub struct StereoArgs {
     pub integrator_args: IntegratorArgs,
     /// stereoSeparation: the full distance between the eyes in scene units; each eye
     /// moves by half of it (0.065 = a person's eyes in a scene in metres).
-    #[arg(long, default_value_t = 0.065)]
+    #[arg(long, default_value_t = 0.065, allow_negative_numbers = true)]
     pub separation: f32,
     /// Zero-parallax distance along the view direction: what lies there appears on the
     /// screen plane (default: the camera's focus distance).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub convergence: Option<f32>,
     /// Composites to write, comma-separated: red-cyan, half-color, grey, red-blue,
     /// red-green, amber-blue, green-magenta, dubois, side-by-side, cross-eyed, over-under,
