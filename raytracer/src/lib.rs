@@ -16,6 +16,7 @@
 //! | [`integrator`] | direct lighting, ambient occlusion, … | global illumination |
 //! | [`film`] | accumulation, splatting, PNG and EXR output | — |
 //! | [`render`] | the parallel, deterministic loop over pixels | — |
+//! | [`stereo`] | stereo rig, anaglyphs, side-by-side, crosstalk, light fields | stereoscopy |
 //!
 //! A scene is loaded (or taken from the built-in ones), an integrator
 //! estimates the radiance of each pixel sample, and the render loop gathers
@@ -40,3 +41,4 @@ pub mod metrics;
 pub mod render;
 pub mod sampling;
 pub mod scene;
+pub mod stereo;

@@ -12,6 +12,7 @@ mod options;
 mod page;
 mod render_cmd;
 mod scenes_cmd;
+mod stereo_cmd;
 mod tour;
 
 use std::process::ExitCode;
@@ -38,6 +39,8 @@ enum Command {
     Render(render_cmd::RenderArgs),
     /// List the built-in scenes, or write one out as a file to edit.
     Scenes(scenes_cmd::ScenesArgs),
+    /// Stereoscopy: two eyes, anaglyphs, side-by-side, crosstalk and a light field.
+    Stereo(stereo_cmd::StereoArgs),
     /// Measure the renderer: rays per second on big meshes, samples per second on the Cornell box.
     Bench(bench::BenchArgs),
 }
@@ -53,6 +56,7 @@ fn main() -> ExitCode {
         Command::Render(args) => render_cmd::run(&args),
         Command::Scenes(args) => scenes_cmd::run(&args),
         Command::Bench(args) => bench::run(&args),
+        Command::Stereo(args) => stereo_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,485 @@
+//! `lesson11 stereo`: the stereo rig, anaglyphs and the other ways to view a
+//! pair, crosstalk, and a light field (the first half of Lecture 11).
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use anyhow::{Context, Result, bail};
+use clap::Args;
+use raytracer::film::Image;
+use raytracer::render::RenderOptions;
+use raytracer::stereo::{Anaglyph, Composite, Eye, LightField, StereoRig, crosstalk};
+
+use crate::options::{SceneArgs, create_dir};
+use crate::page::{Figure, Page, Section};
+use crate::render_cmd::{IntegratorArgs, IntegratorKind, render_to_files};
+
+/// Render a stereo pair from two eyes offset along the camera's rightDir by
+/// ±separation/2, and write the eye images, anaglyphs (red–cyan in colour,
+/// half-colour and grey, red–blue, red–green, amber–blue, green–magenta,
+/// Dubois), side-by-side / cross-eyed / over–under layouts, a crosstalk
+/// preview and a light field (contact sheet and refocused images) into
+/// OUT/01-stereo/, with an index.html that says what to look for.
+#[derive(Args, Debug, Clone)]
+pub struct StereoArgs {
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// The algorithm that estimates each pixel.
+    #[arg(long, short, value_enum, default_value = "path")]
+    pub integrator: IntegratorKind,
+    #[command(flatten)]
+    pub integrator_args: IntegratorArgs,
+    /// stereoSeparation: the full distance between the eyes in scene units; each eye
+    /// moves by half of it (0.065 = a person's eyes in a scene in metres).
+    #[arg(long, default_value_t = 0.065, allow_negative_numbers = true)]
+    pub separation: f32,
+    /// Zero-parallax distance along the view direction: what lies there appears on the
+    /// screen plane (default: the camera's focus distance).
+    #[arg(long, allow_negative_numbers = true)]
+    pub convergence: Option<f32>,
+    /// Composites to write, comma-separated: red-cyan, half-color, grey, red-blue,
+    /// red-green, amber-blue, green-magenta, dubois, side-by-side, cross-eyed, over-under,
+    /// left, right, or all.
+    #[arg(long, value_delimiter = ',', default_value = "all")]
+    pub mode: Vec<String>,
+    /// Desaturation of the anaglyphs, from 0 (colours unchanged) to 1 (grey): the remedy
+    /// for saturated scenes, where one eye would see holes.
+    #[arg(long, default_value_t = 0.0)]
+    pub desaturate: f32,
+    /// Turn the eyes towards the convergence point instead of shifting their frusta
+    /// (deliberately flawed: it causes vertical parallax).
+    #[arg(long)]
+    pub toe_in: bool,
+    /// Leakage of the anaglyph filters in the crosstalk preview (0 = perfect filters).
+    #[arg(long, default_value_t = 0.1)]
+    pub leakage: f32,
+    /// Light field: views per side of the N×N grid (0 = no light field).
+    #[arg(long, default_value_t = 5)]
+    pub lf_views: u32,
+    /// Light field: side of the square aperture the views cover, in scene units.
+    #[arg(long, default_value_t = 0.4)]
+    pub lf_aperture: f32,
+    /// Light field: the views are rendered this many times smaller than the eyes.
+    #[arg(long, default_value_t = 2)]
+    pub lf_downscale: u32,
+    /// Light field: samples per pixel of each view (default: a quarter of --spp, at least 1).
+    #[arg(long)]
+    pub lf_spp: Option<u32>,
+    /// Light field: depths to refocus at, comma-separated (default: half, once and
+    /// three times the convergence distance).
+    #[arg(long, value_delimiter = ',')]
+    pub refocus: Vec<f32>,
+    /// Exposure in stops for the PNGs (+1 doubles the brightness); EXRs are never changed.
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    pub exposure: f32,
+}
+
+impl Default for StereoArgs {
+    fn default() -> Self {
+        StereoArgs {
+            scene: SceneArgs {
+                out: PathBuf::from("out/lesson11"),
+                ..SceneArgs::default()
+            },
+            integrator: IntegratorKind::Path,
+            integrator_args: IntegratorArgs {
+                max_depth: None,
+                rr_depth: None,
+                branching: vec![8],
+                roulette: false,
+                cutoff: None,
+                ao_distance: 1.0,
+            },
+            separation: 0.065,
+            convergence: None,
+            mode: vec!["all".into()],
+            desaturate: 0.0,
+            toe_in: false,
+            leakage: 0.1,
+            lf_views: 5,
+            lf_aperture: 0.4,
+            lf_downscale: 2,
+            lf_spp: None,
+            refocus: Vec::new(),
+            exposure: 0.0,
+        }
+    }
+}
+
+/// The folder of this chapter inside `--out`.
+pub const CHAPTER_DIR: &str = "01-stereo";
+
+pub fn run(args: &StereoArgs) -> Result<()> {
+    let dir = args.scene.out.join(CHAPTER_DIR);
+    let section = render_section(args, &dir)?;
+    let mut page = Page::new("Lecture 11: stereoscopy");
+    page.sections.push(section);
+    let index = page.write(&dir)?;
+    println!("open {} to see the pictures", index.display());
+    Ok(())
+}
+
+/// The composites `--mode` names, in order, without repeats.
+fn parse_modes(names: &[String]) -> Result<Vec<Composite>> {
+    let mut modes: Vec<Composite> = Vec::new();
+    for name in names {
+        let found = if name.trim().eq_ignore_ascii_case("all") {
+            Composite::all()
+        } else {
+            vec![name.parse::<Composite>().map_err(anyhow::Error::msg)?]
+        };
+        for m in found {
+            if !modes.contains(&m) {
+                modes.push(m);
+            }
+        }
+    }
+    Ok(modes)
+}
+
+/// Checks the options that clap cannot.
+fn check(args: &StereoArgs) -> Result<()> {
+    if !(0.0..=1.0).contains(&args.desaturate) {
+        bail!(
+            "--desaturate must lie in [0, 1] (0 = colours unchanged, 1 = grey), got {}",
+            args.desaturate
+        );
+    }
+    if !(0.0..=1.0).contains(&args.leakage) {
+        bail!("--leakage must lie in [0, 1], got {}", args.leakage);
+    }
+    if args.lf_views > 0 && !(args.lf_aperture.is_finite() && args.lf_aperture >= 0.0) {
+        bail!(
+            "--lf-aperture must be a distance ≥ 0, got {}",
+            args.lf_aperture
+        );
+    }
+    if args.lf_downscale == 0 {
+        bail!("--lf-downscale must be at least 1");
+    }
+    if args.lf_spp == Some(0) {
+        bail!("--lf-spp must be at least 1");
+    }
+    if let Some(d) = args.refocus.iter().find(|d| !(d.is_finite() && **d > 0.0)) {
+        bail!("--refocus depths must be positive, got {d}");
+    }
+    if args.integrator_args.branching.contains(&0) {
+        bail!("--branching factors must be at least 1");
+    }
+    Ok(())
+}
+
+/// Writes `dir/stem.png` and `dir/stem.exr`; returns them as a figure
+/// linked relative to `page_root`.
+fn save(
+    image: &Image,
+    dir: &Path,
+    page_root: &Path,
+    stem: &str,
+    exposure: f32,
+    caption: String,
+) -> Result<Figure> {
+    let png = dir.join(format!("{stem}.png"));
+    let exr = dir.join(format!("{stem}.exr"));
+    image
+        .write_png(&png, exposure)
+        .with_context(|| format!("cannot write {}", png.display()))?;
+    image
+        .write_exr(&exr)
+        .with_context(|| format!("cannot write {}", exr.display()))?;
+    println!("  wrote {} and .exr", png.display());
+    Ok(Figure {
+        src: relative(&png, page_root),
+        exr: relative(&exr, page_root),
+        caption,
+    })
+}
+
+fn relative(p: &Path, root: &Path) -> String {
+    p.strip_prefix(root)
+        .unwrap_or(p)
+        .to_string_lossy()
+        .replace('\\', "/")
+}
+
+/// What to look for in each composite.
+fn caption(mode: Composite) -> String {
+    match mode {
+        Composite::Anaglyph(Anaglyph::RedCyan) => {
+            "Red–cyan anaglyph in colour (red filter on the left eye). Saturated red or cyan objects \
+             reach one eye only and shimmer: try --desaturate 0.5."
+                .into()
+        }
+        Composite::Anaglyph(Anaglyph::HalfColor) => {
+            "Red–cyan half-colour: the left eye gets the luminance, so red objects no longer vanish \
+             for one eye; the right keeps some colour."
+                .into()
+        }
+        Composite::Anaglyph(Anaglyph::Grey) => {
+            "Red–cyan grey: no colour, but both eyes see the same brightness everywhere (easiest \
+             to fuse)."
+                .into()
+        }
+        Composite::Anaglyph(Anaglyph::Dubois) => {
+            "Dubois least-squares red–cyan: the best colour and the least ghosting of the red–cyan \
+             anaglyphs."
+                .into()
+        }
+        Composite::Anaglyph(a) => format!("Anaglyph for {} glasses.", a.glasses()),
+        Composite::Layout(raytracer::stereo::Layout::SideBySide) => {
+            "Side by side for parallel viewing: left image on the left; look through the screen \
+             as at something far away (keep the pictures small)."
+                .into()
+        }
+        Composite::Layout(raytracer::stereo::Layout::CrossEyed) => {
+            "Cross-eyed: the right eye's image on the left; cross your eyes until the two middle \
+             pictures merge into a third one in depth."
+                .into()
+        }
+        Composite::Layout(raytracer::stereo::Layout::OverUnder) => {
+            "Over–under: left eye on top (for viewers and projectors).".into()
+        }
+        Composite::Eye(e) => format!("The {} eye's image.", e.name()),
+    }
+}
+
+/// Renders everything into `args.scene.out/01-stereo/` and returns the page
+/// section, its figures linked relative to `page_root`.
+pub fn render_section(args: &StereoArgs, page_root: &Path) -> Result<Section> {
+    check(args)?;
+    let modes = parse_modes(&args.mode)?;
+    let rig = StereoRig {
+        separation: args.separation,
+        convergence: args.convergence,
+        toe_in: args.toe_in,
+    };
+    rig.validate()?;
+    let (scene, options) = args.scene.load("stereo")?;
+    let integrator = args.integrator.build(&args.integrator_args, &scene);
+    let dir = args.scene.out.join(CHAPTER_DIR);
+    create_dir(&dir)?;
+    let convergence = rig.convergence_distance(&scene.camera.params);
+    println!(
+        "01 · stereo: {} eyes {} apart, zero parallax at {convergence:.3} ({}, {} spp)",
+        if rig.toe_in {
+            "toed-in"
+        } else {
+            "parallel, off-axis"
+        },
+        rig.separation,
+        integrator.name(),
+        options.spp
+    );
+
+    let mut section = Section::new("01 · Stereoscopy", &section_text(args, convergence));
+
+    // The two eyes, same seed: identical random sequences.
+    let mut eye_scene = scene.clone();
+    let mut eyes = Vec::new();
+    for (camera, eye) in rig.eyes(&scene.camera).into_iter().zip(Eye::BOTH) {
+        eye_scene.camera = camera;
+        let opts = RenderOptions {
+            label: format!("{} {} eye", scene.name, eye.name()),
+            ..options.clone()
+        };
+        let picture = render_to_files(
+            &eye_scene,
+            integrator.as_ref(),
+            &opts,
+            &dir,
+            eye.name(),
+            args.exposure,
+        )?;
+        let image = Image::read_exr(&picture.exr)
+            .with_context(|| format!("cannot read back {}", picture.exr.display()))?;
+        section.figures.push(Figure::new(
+            page_root,
+            &picture,
+            &format!("The {} eye.", eye.name()),
+        ));
+        eyes.push(image);
+    }
+    let (left, right) = (&eyes[0], &eyes[1]);
+
+    for mode in modes.iter().filter(|m| !matches!(m, Composite::Eye(_))) {
+        let image = mode.compose(left, right, args.desaturate);
+        let mut text = caption(*mode);
+        if matches!(mode, Composite::Anaglyph(_)) && args.desaturate > 0.0 {
+            text.push_str(&format!(" Desaturated by {}.", args.desaturate));
+        }
+        section.figures.push(save(
+            &image,
+            &dir,
+            page_root,
+            mode.name(),
+            args.exposure,
+            text,
+        )?);
+    }
+
+    // Crosstalk: what each eye sees of the red–cyan anaglyph through leaky filters.
+    let glasses = Anaglyph::RedCyan;
+    let anaglyph = glasses.compose(left, right, args.desaturate);
+    for (view, eye) in crosstalk::eye_views(&anaglyph, glasses, args.leakage)
+        .iter()
+        .zip(Eye::BOTH)
+    {
+        section.figures.push(save(
+            view,
+            &dir,
+            page_root,
+            &format!("crosstalk-{}", eye.name()),
+            args.exposure,
+            format!(
+                "What the {} eye sees of the red–cyan anaglyph through filters leaking {:.0} % \
+                 of the other colours: the faint doubled edges are ghosting.",
+                eye.name(),
+                100.0 * args.leakage
+            ),
+        )?);
+    }
+
+    if args.lf_views > 0 {
+        light_field(
+            args,
+            &scene,
+            integrator.as_ref(),
+            &options,
+            convergence,
+            &dir,
+            page_root,
+            &mut section,
+        )?;
+    }
+    Ok(section)
+}
+
+/// Renders the light field and writes its contact sheet, refocused images
+/// and an anaglyph of a pair from the grid.
+#[allow(clippy::too_many_arguments)]
+fn light_field(
+    args: &StereoArgs,
+    scene: &raytracer::scene::Scene,
+    integrator: &dyn raytracer::integrator::Integrator,
+    options: &RenderOptions,
+    convergence: f32,
+    dir: &Path,
+    page_root: &Path,
+    section: &mut Section,
+) -> Result<()> {
+    let n = args.lf_views;
+    let mut lf_scene = scene.clone();
+    let (w, h) = (
+        (scene.camera.width / args.lf_downscale).max(1),
+        (scene.camera.height / args.lf_downscale).max(1),
+    );
+    lf_scene.set_resolution(w, h);
+    let spp = args.lf_spp.unwrap_or((options.spp / 4).max(1));
+    let lf_options = RenderOptions {
+        spp,
+        label: format!("{} light field", scene.name),
+        ..options.clone()
+    };
+    let start = Instant::now();
+    let lf = LightField::render(&lf_scene, integrator, &lf_options, n, args.lf_aperture);
+    if raytracer::render::interrupted() {
+        bail!("interrupted by Ctrl-C while rendering the light field");
+    }
+    println!(
+        "  light field: {n}×{n} views of {w}×{h} at {spp} spp in {:.1} s",
+        start.elapsed().as_secs_f64()
+    );
+    section.figures.push(save(
+        &lf.contact_sheet(2),
+        dir,
+        page_root,
+        "lightfield-contact",
+        args.exposure,
+        format!(
+            "The light field: {n}×{n} pinhole views across a {} × {} aperture, as seen from the \
+             front (top row = highest eye). Near objects shift most between the views.",
+            args.lf_aperture, args.lf_aperture
+        ),
+    )?);
+    let depths = if args.refocus.is_empty() {
+        vec![0.5 * convergence, convergence, 3.0 * convergence]
+    } else {
+        args.refocus.clone()
+    };
+    for depth in depths {
+        section.figures.push(save(
+            &lf.refocus(depth),
+            dir,
+            page_root,
+            &format!("refocus-{depth:.2}"),
+            args.exposure,
+            format!(
+                "Refocused at {depth:.2} by shift-and-add: what lies at that depth is sharp, the \
+                 rest is blurred as by a lens as wide as the aperture."
+            ),
+        )?);
+    }
+    if n >= 2 {
+        let row = n / 2;
+        let [l, r] = lf.stereo_pair(row, 0, n - 1, Some(convergence));
+        section.figures.push(save(
+            &Anaglyph::Dubois.compose(&l, &r, args.desaturate),
+            dir,
+            page_root,
+            "lightfield-pair-dubois",
+            args.exposure,
+            format!(
+                "A stereo pair taken out of the light field (the outermost views of the middle \
+                 row, {} apart), converged at {convergence:.2}: Dubois red–cyan anaglyph.",
+                args.lf_aperture
+            ),
+        )?);
+    }
+    Ok(())
+}
+
+/// The explanation at the top of the section.
+fn section_text(args: &StereoArgs, convergence: f32) -> String {
+    let method = if args.toe_in {
+        "These eyes are toed in: each turns towards the convergence point. Their image planes are \
+         no longer parallel, so objects near the corners sit at different heights in the two \
+         images (vertical parallax): compare the left and right images near the corners, and \
+         notice the strain when fusing them. Run without --toe-in for the correct rig."
+    } else {
+        "The eyes look in parallel and each image window is shifted sideways (an off-axis \
+         frustum), so that the two frusta meet at the convergence distance: whatever lies there \
+         appears on the screen plane with zero parallax, nearer things come out of the screen and \
+         farther ones go into it, and nothing has vertical parallax. Run with --toe-in to see \
+         the flawed alternative."
+    };
+    format!(
+        "Two eyes offset along the camera's rightDir by ±stereoSeparation/2 (separation {sep}; \
+         some of the course's C++ renderers offset by ±separation instead, which doubles the \
+         effect). {method} Zero parallax at {convergence:.2}. A larger separation makes the scene \
+         look smaller and deeper, too large looks wrong, too small looks flat: tune it for each \
+         scene. Both eyes use the same random numbers, so their noise matches and does not \
+         shimmer. The anaglyphs are mixed in linear RGB, before sRGB encoding, because filters \
+         and screens act on light, which adds linearly. Look at the near red ball: in the colour \
+         red–cyan anaglyph the right (cyan) eye hardly sees it; half-colour, grey and \
+         --desaturate fix that at the cost of colour. Dubois' matrices keep the most colour. \
+         The crosstalk images show ghosting from imperfect filters. The light field is a grid of \
+         pinhole views: averaging them shifted for one depth refocuses the picture after \
+         rendering, and any two views of a row form a stereo pair.",
+        sep = args.separation
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn modes_are_parsed_with_all_and_without_repeats() {
+        let all = parse_modes(&["all".into()]).unwrap();
+        assert_eq!(all, Composite::all());
+        let two = parse_modes(&["dubois".into(), "cross".into(), "dubois".into()]).unwrap();
+        assert_eq!(two.len(), 2);
+        let err = parse_modes(&["nope".into()]).unwrap_err().to_string();
+        assert!(err.contains("nope"), "{err}");
+    }
+}
