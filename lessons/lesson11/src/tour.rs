@@ -130,7 +130,8 @@ pub fn run(args: &TourArgs) -> Result<()> {
     let start = Instant::now();
     let mut page = Page::new("Lecture 11: stereoscopy and global illumination, rendered");
     type Chapter = fn(&Tour) -> Result<Section>;
-    let chapters: [(&str, Chapter); 7] = [
+    let chapters: [(&str, Chapter); 8] = [
+        ("stereo", stereo),
         ("gi-effects", gi_effects),
         ("brdf", brdf),
         ("rendering-equation", rendering_equation),
@@ -150,6 +151,25 @@ pub fn run(args: &TourArgs) -> Result<()> {
         index.display()
     );
     Ok(())
+}
+
+/// Chapter 1: stereoscopy (see `lesson11 stereo --help` for every option).
+fn stereo(tour: &Tour) -> Result<Section> {
+    let mut args = crate::stereo_cmd::StereoArgs::default();
+    args.scene.out = tour.out.clone();
+    args.scene.threads = tour.threads;
+    match tour.quality {
+        Quality::Tiny => {
+            args.scene.width = Some(32);
+            args.scene.height = Some(24);
+            args.scene.spp = Some(2);
+            args.lf_views = 2;
+            args.lf_spp = Some(1);
+        }
+        Quality::Quick => args.scene.spp = Some(32),
+        Quality::Full => args.scene.spp = Some(256),
+    }
+    crate::stereo_cmd::render_section(&args, &tour.out)
 }
 
 /// Chapter 2: what direct light alone misses.
