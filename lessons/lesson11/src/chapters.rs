@@ -37,7 +37,7 @@ pub fn light(tour: &Tour) -> Result<Section> {
         "cornell-light",
         "Cornell box, light tracing.",
     )?;
-    let (scene, options) = tour.scene("caustic", 64)?;
+    let (scene, options) = tour.scene("caustic", 32)?;
     let max_depth = Some(8);
     let pt = PathTracer {
         max_depth,
@@ -89,7 +89,7 @@ pub fn bdpt(tour: &Tour) -> Result<Section> {
          strategy where it is good. Below: each strategy's own estimate (unweighted) and its share after \
          MIS (weighted); the weighted images add up to the bidirectional image.",
     )?;
-    let (scene, options) = tour.scene("cornell", 64)?;
+    let (scene, options) = tour.scene("cornell", 32)?;
     let bd = Bdpt::default();
     tour.picture(
         &mut c,
@@ -175,18 +175,18 @@ pub fn compare(tour: &Tour) -> Result<Section> {
     )?;
     let budget = match tour.quality {
         Quality::Tiny => 0.05,
-        Quality::Quick => 2.0,
+        Quality::Quick => 1.0,
         Quality::Full => 15.0,
     };
     let mut table = Table::new(
         "Equal-time comparison (RMSE against the reference; lower is better)",
         &["scene", "algorithm", "spp", "seconds", "RMSE"],
     );
-    for (name, reference_spp) in [("door", 256u32), ("cornell", 256)] {
+    for (name, reference_spp) in [("door", 128u32), ("cornell", 128)] {
         let (mut scene, base) = tour.scene(name, reference_spp)?;
         if tour.quality != Quality::Tiny {
             let (w, h) = (scene.settings.width, scene.settings.height);
-            scene.set_resolution(w.min(160), (h * w.min(160) / w).max(1));
+            scene.set_resolution(w.min(128), (h * w.min(128) / w).max(1));
         }
         let reference_options = RenderOptions {
             progress: true,

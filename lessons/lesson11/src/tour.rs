@@ -142,7 +142,9 @@ pub fn run(args: &TourArgs) -> Result<()> {
     ];
     for (name, chapter) in chapters {
         println!("\n== {name}");
+        let t = Instant::now();
         page.sections.push(chapter(&tour)?);
+        println!("== {name}: {:.1} s", t.elapsed().as_secs_f64());
     }
     let index = page.write(&args.out)?;
     println!(
