@@ -19,6 +19,9 @@ pub struct BenchArgs {
     /// Skip the ray-throughput part.
     #[arg(long)]
     pub no_rays: bool,
+    /// Seconds per algorithm in the equal-time comparison (0 skips it).
+    #[arg(long, default_value_t = 2.0)]
+    pub equal_time: f64,
 }
 
 pub fn run(args: &BenchArgs) -> Result<()> {
@@ -68,6 +71,24 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 result.stats.elapsed.as_secs_f64(),
                 result.stats.samples_per_second() / 1e6
             );
+        }
+    }
+    if args.equal_time > 0.0 {
+        println!(
+            "\nEqual time ({} s each, max depth 5, 128 pixels wide): RMSE against a bidirectional reference \
+             of 512 spp",
+            args.equal_time
+        );
+        for name in ["cornell", "door", "caustic"] {
+            let mut scene = Scene::builtin(name)?;
+            let (w, h) = (scene.settings.width, scene.settings.height);
+            scene.set_resolution(128, (h * 128 / w).max(1));
+            let base = RenderOptions {
+                seed: 7,
+                progress: false,
+                ..RenderOptions::default()
+            };
+            crate::chapters::equal_time(&scene, &base, args.equal_time, 512, 5, name == "cornell");
         }
     }
     Ok(())

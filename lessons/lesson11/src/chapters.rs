@@ -162,16 +162,94 @@ fn render_for(
     (result.film.image(), spp, result.stats.elapsed.as_secs_f64())
 }
 
+/// One row of an equal-time comparison.
+pub struct EqualTimeRow {
+    pub algorithm: &'static str,
+    pub stem: String,
+    pub spp: u32,
+    pub seconds: f64,
+    pub rmse: f32,
+    pub image: Image,
+}
+
+/// Renders `scene` with every algorithm for about `budget` seconds each, all
+/// stopping at `max_depth`, and measures each one's RMSE against a
+/// bidirectional reference of `reference_spp` samples per pixel. Naive
+/// recursion (N = 4) joins the comparison if `with_naive`.
+pub fn equal_time(
+    scene: &Scene,
+    base: &RenderOptions,
+    budget: f64,
+    reference_spp: u32,
+    max_depth: u32,
+    with_naive: bool,
+) -> Vec<EqualTimeRow> {
+    let max_depth = Some(max_depth);
+    let bdpt = Bdpt {
+        max_depth,
+        ..Bdpt::default()
+    };
+    let reference_options = RenderOptions {
+        spp: reference_spp,
+        label: format!("{} reference", scene.name),
+        ..base.clone()
+    };
+    let reference = render(scene, &bdpt, &reference_options).film.image();
+    let naive = NaiveRecursive::new(vec![4], max_depth);
+    let path = PathTracer {
+        max_depth,
+        ..PathTracer::default()
+    };
+    let path_brdf = PathTracer {
+        max_depth,
+        strategy: DirectStrategy::BrdfOnly,
+        ..PathTracer::default()
+    };
+    let light = LightTracer {
+        max_depth,
+        ..LightTracer::default()
+    };
+    let mut algorithms: Vec<(&'static str, &dyn Integrator)> = vec![
+        ("path (MIS)", &path),
+        ("path (BRDF only)", &path_brdf),
+        ("light", &light),
+        ("bidirectional", &bdpt),
+    ];
+    if with_naive {
+        algorithms.insert(0, ("naive recursion, N = 4", &naive));
+    }
+    let mut rows = Vec::new();
+    for (algorithm, integrator) in algorithms {
+        let (image, spp, seconds) = render_for(scene, integrator, base, budget);
+        let rmse = rmse(&image, &reference);
+        println!(
+            "  {:14} {algorithm:24} {spp:6} spp {seconds:7.2} s  RMSE {rmse:.4}",
+            scene.name
+        );
+        let stem = format!("{}-{}", scene.name, integrator.name());
+        rows.push(EqualTimeRow {
+            algorithm,
+            stem,
+            spp,
+            seconds,
+            rmse,
+            image,
+        });
+    }
+    rows
+}
+
 /// Chapter 8: every algorithm at equal time against a high-sample reference.
 pub fn compare(tour: &Tour) -> Result<Section> {
+    let max_depth = 5;
     let mut c = tour.chapter(
         "08-compare",
         "8 · Comparison at equal time",
         "Each algorithm gets the same time and the same maximum depth (5); the error is the RMSE against a \
-         bidirectional reference with many samples. In the door scene the only light is in the next room: path tracing must find it \
-         through the gap by chance, bidirectional tracing connects the two rooms directly. On the Cornell \
-         box, naive recursion spends its rays on the N^D tree of one pixel sample, path tracing on more \
-         samples per pixel.",
+         bidirectional reference with many samples. In the door scene the only light is in the next room: \
+         path tracing must find it through the gap by chance, bidirectional tracing connects the two rooms \
+         directly. On the Cornell box, naive recursion spends its rays on the N^D tree of one pixel sample, \
+         path tracing on more samples per pixel.",
     )?;
     let budget = match tour.quality {
         Quality::Tiny => 0.05,
@@ -182,55 +260,33 @@ pub fn compare(tour: &Tour) -> Result<Section> {
         "Equal-time comparison (RMSE against the reference; lower is better)",
         &["scene", "algorithm", "spp", "seconds", "RMSE"],
     );
-    for (name, reference_spp) in [("door", 128u32), ("cornell", 128)] {
-        let (mut scene, base) = tour.scene(name, reference_spp)?;
+    for name in ["door", "cornell"] {
+        let (mut scene, mut base) = tour.scene(name, 128)?;
         if tour.quality != Quality::Tiny {
             let (w, h) = (scene.settings.width, scene.settings.height);
             scene.set_resolution(w.min(128), (h * w.min(128) / w).max(1));
         }
-        let reference_options = RenderOptions {
-            progress: true,
-            label: format!("{name} reference"),
-            ..base.clone()
-        };
-        let reference = render(&scene, &Bdpt::default(), &reference_options)
-            .film
-            .image();
-        let mut naive = NaiveRecursive::new(vec![4], Some(5));
-        naive.roulette_depth = None;
-        let path = PathTracer::default();
-        let path_brdf = PathTracer {
-            strategy: DirectStrategy::BrdfOnly,
-            ..PathTracer::default()
-        };
-        let light = LightTracer::default();
-        let bdpt = Bdpt::default();
-        let mut algorithms: Vec<(&str, &dyn Integrator)> = vec![
-            ("path (MIS)", &path),
-            ("path (BRDF only)", &path_brdf),
-            ("light", &light),
-            ("bidirectional", &bdpt),
-        ];
-        if name == "cornell" {
-            algorithms.insert(0, ("naive N=4, D=5", &naive));
-        }
-        for (label, integrator) in algorithms {
-            let (image, spp, secs) = render_for(&scene, integrator, &base, budget);
-            let error = rmse(&image, &reference);
-            println!("  {name:8} {label:18} {spp:6} spp {secs:7.2} s  RMSE {error:.4}");
-            let stem = format!("{name}-{}", integrator.name());
-            let picture = write_image(&c.dir, &stem, &image, spp)?;
-            c.section.figures.push(Figure::new(
-                &tour.out,
-                &picture,
-                &format!("{name}, {label}, RMSE {error:.4}."),
-            ));
+        base.progress = false;
+        let reference_spp = base.spp;
+        for row in equal_time(
+            &scene,
+            &base,
+            budget,
+            reference_spp,
+            max_depth,
+            name == "cornell",
+        ) {
+            let picture = write_image(&c.dir, &row.stem, &row.image, row.spp)?;
+            let caption = format!("{name}, {}, RMSE {:.4}.", row.algorithm, row.rmse);
+            c.section
+                .figures
+                .push(Figure::new(&tour.out, &picture, &caption));
             table.rows.push(vec![
                 name.into(),
-                label.into(),
-                spp.to_string(),
-                format!("{secs:.2}"),
-                format!("{error:.5}"),
+                row.algorithm.into(),
+                row.spp.to_string(),
+                format!("{:.2}", row.seconds),
+                format!("{:.5}", row.rmse),
             ]);
         }
     }
