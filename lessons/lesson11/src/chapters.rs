@@ -1,8 +1,6 @@
 //! The chapters after path tracing: light tracing, bidirectional path
 //! tracing, and the comparison of all the algorithms at equal time.
 
-use std::time::Instant;
-
 use anyhow::Result;
 use raytracer::film::Image;
 use raytracer::integrator::{
@@ -13,6 +11,7 @@ use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
 
 use crate::page::{Figure, Section, Table};
+use crate::plot::{Chart, Scale, Series};
 use crate::render_cmd::Picture;
 use crate::tour::{Quality, Tour};
 
@@ -136,30 +135,44 @@ fn write_image(dir: &std::path::Path, stem: &str, image: &Image, spp: u32) -> Re
     })
 }
 
-/// Renders `integrator` for about `seconds`: a short trial render measures
-/// the time per sample per pixel, then the real render takes the samples that fit.
+/// Renders `integrator` for about `seconds`: renders of 1, 2, 4, … samples
+/// per pixel measure the time per sample and trace the error against
+/// `reference` as it falls (the convergence curve), then one render takes the
+/// samples that fit the budget.
 fn render_for(
     scene: &Scene,
     integrator: &dyn Integrator,
     base: &RenderOptions,
     seconds: f64,
-) -> (Image, u32, f64) {
-    let trial = RenderOptions {
-        spp: 1,
-        progress: false,
-        ..base.clone()
+    reference: &Image,
+) -> (Image, u32, f64, Vec<(f64, f64)>) {
+    let run = |spp: u32| {
+        let options = RenderOptions {
+            spp,
+            progress: false,
+            ..base.clone()
+        };
+        let result = render(scene, integrator, &options);
+        (
+            result.film.image(),
+            result.stats.elapsed.as_secs_f64().max(1e-6),
+        )
     };
-    let t = Instant::now();
-    let _ = render(scene, integrator, &trial);
-    let per_spp = t.elapsed().as_secs_f64().max(1e-4);
+    let mut curve = Vec::new();
+    let mut spp = 1;
+    let per_spp = loop {
+        let (image, secs) = run(spp);
+        curve.push((secs, rmse(&image, reference) as f64));
+        if secs * 2.0 > seconds / 2.0 || spp >= 1 << 15 {
+            break secs / spp as f64;
+        }
+        spp *= 2;
+    };
     let spp = ((seconds / per_spp) as u32).clamp(1, 1 << 16);
-    let options = RenderOptions {
-        spp,
-        progress: false,
-        ..base.clone()
-    };
-    let result = render(scene, integrator, &options);
-    (result.film.image(), spp, result.stats.elapsed.as_secs_f64())
+    let (image, secs) = run(spp);
+    curve.push((secs, rmse(&image, reference) as f64));
+    curve.sort_by(|a, b| a.0.total_cmp(&b.0));
+    (image, spp, secs, curve)
 }
 
 /// One row of an equal-time comparison.
@@ -170,6 +183,8 @@ pub struct EqualTimeRow {
     pub seconds: f64,
     pub rmse: f32,
     pub image: Image,
+    /// RMSE against time on the way (seconds, RMSE).
+    pub curve: Vec<(f64, f64)>,
 }
 
 /// Renders `scene` with every algorithm for about `budget` seconds each, all
@@ -220,7 +235,7 @@ pub fn equal_time(
     }
     let mut rows = Vec::new();
     for (algorithm, integrator) in algorithms {
-        let (image, spp, seconds) = render_for(scene, integrator, base, budget);
+        let (image, spp, seconds, curve) = render_for(scene, integrator, base, budget, &reference);
         let rmse = rmse(&image, &reference);
         println!(
             "  {:14} {algorithm:24} {spp:6} spp {seconds:7.2} s  RMSE {rmse:.4}",
@@ -234,6 +249,7 @@ pub fn equal_time(
             seconds,
             rmse,
             image,
+            curve,
         });
     }
     rows
@@ -268,14 +284,38 @@ pub fn compare(tour: &Tour) -> Result<Section> {
         }
         base.progress = false;
         let reference_spp = base.spp;
-        for row in equal_time(
+        let rows = equal_time(
             &scene,
             &base,
             budget,
             reference_spp,
             max_depth,
             name == "cornell",
-        ) {
+        );
+        let chart = Chart {
+            title: format!("{name}: error against time"),
+            x_label: "seconds".into(),
+            y_label: "RMSE".into(),
+            x_scale: Scale::Log,
+            y_scale: Scale::Log,
+            series: rows
+                .iter()
+                .map(|r| Series {
+                    label: r.algorithm.into(),
+                    points: r.curve.clone(),
+                })
+                .collect(),
+        };
+        let svg = c.dir.join(format!("{name}-convergence.svg"));
+        chart.write(&svg)?;
+        c.section.figures.push(Figure::plot(
+            &tour.out,
+            &svg,
+            &format!(
+                "{name}: RMSE against render time, log–log (a slope of −1/2 is Monte Carlo's 1/√N)."
+            ),
+        ));
+        for row in rows {
             let picture = write_image(&c.dir, &row.stem, &row.image, row.spp)?;
             let caption = format!("{name}, {}, RMSE {:.4}.", row.algorithm, row.rmse);
             c.section

@@ -7,9 +7,11 @@
 
 mod bench;
 mod bench_rays;
+mod brdf_plots;
 mod chapters;
 mod options;
 mod page;
+mod plot;
 mod render_cmd;
 mod scenes_cmd;
 mod stereo_cmd;

@@ -11,7 +11,8 @@ use crate::render_cmd::Picture;
 /// A picture with its caption, linked relative to the page.
 pub struct Figure {
     pub src: String,
-    pub exr: String,
+    /// The linear image to measure, if the figure is a render.
+    pub exr: Option<String>,
     pub caption: String,
 }
 
@@ -25,8 +26,24 @@ impl Figure {
         };
         Figure {
             src: rel(&picture.png),
-            exr: rel(&picture.exr),
+            exr: Some(rel(&picture.exr)),
             caption: format!("{caption} ({} spp, {:.1} s)", picture.spp, picture.seconds),
+        }
+    }
+}
+
+impl Figure {
+    /// A plot (an SVG file) with its caption.
+    pub fn plot(root: &Path, svg: &Path, caption: &str) -> Self {
+        let rel = svg
+            .strip_prefix(root)
+            .unwrap_or(svg)
+            .to_string_lossy()
+            .replace('\\', "/");
+        Figure {
+            src: rel,
+            exr: None,
+            caption: caption.into(),
         }
     }
 }
@@ -124,11 +141,13 @@ impl Page {
                 escape(&s.text)
             );
             for f in &s.figures {
+                let exr = f.exr.as_ref().map_or(String::new(), |e| {
+                    format!(" · <a href=\"{}\">EXR</a>", escape(e))
+                });
                 let _ = writeln!(
                     h,
-                    "<figure><a href=\"{src}\"><img src=\"{src}\" alt=\"{cap}\"></a><figcaption>{cap} · <a href=\"{exr}\">EXR</a></figcaption></figure>",
+                    "<figure><a href=\"{src}\"><img src=\"{src}\" alt=\"{cap}\"></a><figcaption>{cap}{exr}</figcaption></figure>",
                     src = escape(&f.src),
-                    exr = escape(&f.exr),
                     cap = escape(&f.caption)
                 );
             }

@@ -190,7 +190,7 @@ fn save(
     println!("  wrote {} and .exr", png.display());
     Ok(Figure {
         src: relative(&png, page_root),
-        exr: relative(&exr, page_root),
+        exr: Some(relative(&exr, page_root)),
         caption,
     })
 }

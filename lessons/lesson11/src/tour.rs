@@ -223,10 +223,14 @@ fn brdf(tour: &Tour) -> Result<Section> {
     let mut s = tour.chapter(
         "03-brdf",
         "3 · BRDFs",
-        "Lambert, normalized Phong with n = 1, 10, 100 and 1000, a perfect mirror and glass, lit by one \
-         area light and by each other (path tracing). As n grows the highlight narrows and brightens: the \
-         normalization (n+2)/2π keeps the reflected energy the same.",
+        "A BRDF f_r(ω_i → ω_o) says how much of the light arriving from ω_i leaves towards ω_o. The plots \
+         show lobes in the plane of incidence, the directional albedo ∫ f_r cos θ dω (energy conservation \
+         demands ≤ 1) of normalized and unnormalized Phong, and reciprocity. The render shows Lambert, \
+         normalized Phong with n = 1, 10, 100 and 1000, a perfect mirror and glass, path traced: as n \
+         grows the highlight narrows and brightens, and the normalization (n+2)/2π keeps the reflected \
+         energy the same.",
     )?;
+    crate::brdf_plots::write_all(&mut s, tour)?;
     let (scene, options) = tour.scene("brdf-gallery", 32)?;
     let pt = PathTracer::default();
     tour.picture(

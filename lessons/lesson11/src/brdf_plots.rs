@@ -1,0 +1,168 @@
+//! The BRDF chapter's plots and tables: lobes in the plane of incidence,
+//! directional albedo (energy conservation) and reciprocity.
+
+use anyhow::Result;
+use raytracer::brdf::{Brdf, Lambert, Phong, Texture, TransportMode};
+use raytracer::math::{Color, Vec2, Vec3A};
+use raytracer::sampling::Sampler;
+
+use crate::page::{Figure, Table};
+use crate::plot::{Chart, Scale, Series, polar_svg};
+use crate::tour::{Chapter, Quality, Tour};
+
+fn phong(n: f32) -> Brdf {
+    Brdf::Phong(Phong {
+        albedo: Color::ONE,
+        exponent: n,
+    })
+}
+
+fn lambert() -> Brdf {
+    Brdf::Lambert(Lambert {
+        albedo: Texture::Constant(Color::ONE),
+    })
+}
+
+/// A direction in the plane of incidence (x–z), θ from the normal.
+fn dir(theta: f64) -> Vec3A {
+    Vec3A::new(theta.sin() as f32, 0.0, theta.cos() as f32)
+}
+
+/// Directional albedo `∫ f_r cos θ_i dω_i` for light leaving towards `wo`,
+/// estimated with the BRDF's own sampling: the mean of `f cos / pdf`.
+pub fn directional_albedo(brdf: &Brdf, wo: Vec3A, samples: u32) -> f64 {
+    let mut sum = 0.0f64;
+    for i in 0..samples {
+        let mut sampler = Sampler::new(3, i as u64, 0);
+        let (u_lobe, u) = (sampler.next_1d(), sampler.next_2d());
+        if let Some(bs) = brdf.sample(wo, Vec2::ZERO, u_lobe, u, TransportMode::Radiance) {
+            sum += (bs.f.x * bs.wi.z.abs() / bs.pdf_w) as f64;
+        }
+    }
+    sum / samples as f64
+}
+
+pub fn write_all(c: &mut Chapter, tour: &Tour) -> Result<()> {
+    let samples = if tour.quality == Quality::Tiny {
+        256
+    } else {
+        16384
+    };
+
+    // Lobes for light arriving 30° from the normal: f_r over outgoing
+    // directions in the plane of incidence, each scaled to its peak.
+    let incoming = 30f64.to_radians();
+    let wi = dir(-incoming);
+    let mut lobes = Vec::new();
+    for (label, brdf) in [
+        ("Lambert", lambert()),
+        ("Phong n=1", phong(1.0)),
+        ("Phong n=10", phong(10.0)),
+        ("Phong n=100", phong(100.0)),
+    ] {
+        let points: Vec<(f64, f64)> = (0..=180)
+            .map(|k| {
+                let theta = (k as f64 - 90.0).to_radians();
+                (theta, brdf.eval(dir(theta), wi, Vec2::ZERO).x as f64)
+            })
+            .collect();
+        let peak = points.iter().map(|p| p.1).fold(1e-12, f64::max);
+        lobes.push(Series {
+            label: label.into(),
+            points: points.into_iter().map(|(t, r)| (t, r / peak)).collect(),
+        });
+    }
+    lobes.push(Series {
+        label: "mirror (a delta)".into(),
+        points: vec![(0.0, 0.0), (incoming, 1.0)],
+    });
+    let path = c.dir.join("lobes.svg");
+    std::fs::write(
+        &path,
+        polar_svg(
+            "BRDF lobes, light from 30°, each scaled to its peak",
+            &lobes,
+            30.0,
+        ),
+    )?;
+    c.section.figures.push(Figure::plot(&tour.out, &path, "Lobes in the plane of incidence: Phong narrows around the mirror direction as n grows; Lambert is a half circle."));
+
+    // Directional albedo against the angle of the outgoing direction.
+    let mut albedo = Chart {
+        title: "Directional albedo ∫ f_r cos θ dω".into(),
+        x_label: "θ_o (degrees)".into(),
+        y_label: "albedo".into(),
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+        series: Vec::new(),
+    };
+    let mut table = Table::new(
+        "Directional albedo at normal incidence (≤ 1 conserves energy)",
+        &[
+            "BRDF",
+            "normalized: ρ (n+2)/2π cos^n α",
+            "unnormalized: ρ cos^n α",
+        ],
+    );
+    table.rows.push(vec![
+        "Lambert ρ/π".into(),
+        format!("{:.4}", directional_albedo(&lambert(), Vec3A::Z, samples)),
+        "—".into(),
+    ]);
+    for n in [1.0f32, 10.0, 100.0] {
+        let brdf = phong(n);
+        // Without the factor (n+2)/2π the BRDF is the normalized one times 2π/(n+2).
+        let unnormalize = 2.0 * std::f64::consts::PI / (n as f64 + 2.0);
+        let at = |deg: f64| directional_albedo(&brdf, dir(deg.to_radians()), samples);
+        let normal = at(0.0);
+        table.rows.push(vec![
+            format!("Phong n = {n}"),
+            format!("{normal:.4}"),
+            format!("{:.4}", normal * unnormalize),
+        ]);
+        let angles: Vec<f64> = (0..=17).map(|k| k as f64 * 5.0).collect();
+        let values: Vec<f64> = angles.iter().map(|&a| at(a)).collect();
+        albedo.series.push(Series {
+            label: format!("n={n}"),
+            points: angles.iter().copied().zip(values.iter().copied()).collect(),
+        });
+        albedo.series.push(Series {
+            label: format!("n={n} unnorm."),
+            points: angles
+                .iter()
+                .copied()
+                .zip(values.iter().map(|v| v * unnormalize))
+                .collect(),
+        });
+    }
+    let path = c.dir.join("albedo.svg");
+    albedo.write(&path)?;
+    c.section.figures.push(Figure::plot(&tour.out, &path, "Directional albedo: normalized Phong is exactly 1 at normal incidence and less at grazing angles; unnormalized Phong with n = 1 reflects more than it receives."));
+    table.write_csv(&c.dir.join("albedo.csv"))?;
+    c.section.tables.push(table);
+
+    // Reciprocity: f(ω_i → ω_o) = f(ω_o → ω_i).
+    let mut table = Table::new(
+        "Reciprocity: f_r(a → b) and f_r(b → a)",
+        &["BRDF", "a (θ°)", "b (θ°)", "f(a→b)", "f(b→a)"],
+    );
+    for (label, brdf) in [
+        ("Lambert", lambert()),
+        ("Phong n=10", phong(10.0)),
+        ("Phong n=100", phong(100.0)),
+    ] {
+        for (a, b) in [(-20.0f64, 25.0f64), (-60.0, 50.0), (-5.0, 10.0)] {
+            let (da, db) = (dir(a.to_radians()), dir(b.to_radians()));
+            table.rows.push(vec![
+                label.into(),
+                format!("{a}"),
+                format!("{b}"),
+                format!("{:.5}", brdf.eval(db, da, Vec2::ZERO).x),
+                format!("{:.5}", brdf.eval(da, db, Vec2::ZERO).x),
+            ]);
+        }
+    }
+    table.write_csv(&c.dir.join("reciprocity.csv"))?;
+    c.section.tables.push(table);
+    Ok(())
+}
