@@ -37,12 +37,26 @@ struct Cli {
 enum Command {
     /// Walk the lecture in order and write every picture (the default).
     Tour(tour::TourArgs),
+    /// 1 · Stereoscopy: two eyes, anaglyphs, side-by-side, crosstalk and a light field.
+    Stereo(stereo_cmd::StereoArgs),
+    /// 2 · Global illumination effects: direct light, ambient occlusion and full GI side by side.
+    GiEffects(tour::TourArgs),
+    /// 3 · BRDFs: lobes, directional albedo of normalized and unnormalized Phong, reciprocity, a gallery.
+    Brdf(tour::TourArgs),
+    /// 4 · The rendering equation: naive recursive Monte Carlo and its N^D rays per pixel.
+    RenderingEquation(tour::TourArgs),
+    /// 5 · Path tracing: a samples-per-pixel ladder; BRDF sampling, light sampling and MIS.
+    Path(tour::TourArgs),
+    /// 6 · Light tracing, and the caustic that only light paths find.
+    Light(tour::TourArgs),
+    /// 7 · Bidirectional path tracing and its (s, t) strategies.
+    Bdpt(tour::TourArgs),
+    /// 8 · Every algorithm at equal time: RMSE against a reference, convergence plots.
+    Compare(tour::TourArgs),
     /// Render one scene with one integrator to PNG (to look at) and EXR (to measure).
     Render(render_cmd::RenderArgs),
     /// List the built-in scenes, or write one out as a file to edit.
     Scenes(scenes_cmd::ScenesArgs),
-    /// Stereoscopy: two eyes, anaglyphs, side-by-side, crosstalk and a light field.
-    Stereo(stereo_cmd::StereoArgs),
     /// Measure the renderer: rays per second on big meshes, samples per second on the Cornell box.
     Bench(bench::BenchArgs),
 }
@@ -55,6 +69,13 @@ fn main() -> ExitCode {
         .unwrap_or(Command::Tour(tour::TourArgs::default()))
     {
         Command::Tour(args) => tour::run(&args),
+        Command::GiEffects(args) => tour::run_chapters(&args, Some("gi-effects")),
+        Command::Brdf(args) => tour::run_chapters(&args, Some("brdf")),
+        Command::RenderingEquation(args) => tour::run_chapters(&args, Some("rendering-equation")),
+        Command::Path(args) => tour::run_chapters(&args, Some("path")),
+        Command::Light(args) => tour::run_chapters(&args, Some("light")),
+        Command::Bdpt(args) => tour::run_chapters(&args, Some("bdpt")),
+        Command::Compare(args) => tour::run_chapters(&args, Some("compare")),
         Command::Render(args) => render_cmd::run(&args),
         Command::Scenes(args) => scenes_cmd::run(&args),
         Command::Bench(args) => bench::run(&args),

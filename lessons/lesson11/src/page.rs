@@ -172,9 +172,9 @@ impl Page {
         h
     }
 
-    /// Writes `dir/index.html`.
-    pub fn write(&self, dir: &Path) -> Result<PathBuf> {
-        let path = dir.join("index.html");
+    /// Writes the page as `dir/file`.
+    pub fn write(&self, dir: &Path, file: &str) -> Result<PathBuf> {
+        let path = dir.join(file);
         std::fs::write(&path, self.to_html())
             .with_context(|| format!("cannot write {}", path.display()))?;
         Ok(path)

@@ -114,7 +114,7 @@ pub fn run(args: &StereoArgs) -> Result<()> {
     let section = render_section(args, &dir)?;
     let mut page = Page::new("Lecture 11: stereoscopy");
     page.sections.push(section);
-    let index = page.write(&dir)?;
+    let index = page.write(&dir, "index.html")?;
     println!("open {} to see the pictures", index.display());
     Ok(())
 }

@@ -120,7 +120,29 @@ pub struct Chapter {
     pub section: Section,
 }
 
+/// A chapter: renders its pictures and returns its section of the page.
+pub type ChapterFn = fn(&Tour) -> Result<Section>;
+
+/// The chapters in lecture order, by subcommand name.
+pub const CHAPTERS: [(&str, ChapterFn); 8] = [
+    ("stereo", stereo),
+    ("gi-effects", gi_effects),
+    ("brdf", brdf),
+    ("rendering-equation", rendering_equation),
+    ("path", path),
+    ("light", crate::chapters::light),
+    ("bdpt", crate::chapters::bdpt),
+    ("compare", crate::chapters::compare),
+];
+
+/// The whole tour: every chapter, and `index.html` with all of them.
 pub fn run(args: &TourArgs) -> Result<()> {
+    run_chapters(args, None)
+}
+
+/// Runs every chapter (`only = None`) or one, and writes the page: the
+/// tour's `index.html`, or `<chapter>.html` beside it for a single chapter.
+pub fn run_chapters(args: &TourArgs, only: Option<&str>) -> Result<()> {
     create_dir(&args.out)?;
     let tour = Tour {
         out: args.out.clone(),
@@ -129,26 +151,19 @@ pub fn run(args: &TourArgs) -> Result<()> {
     };
     let start = Instant::now();
     let mut page = Page::new("Lecture 11: stereoscopy and global illumination, rendered");
-    type Chapter = fn(&Tour) -> Result<Section>;
-    let chapters: [(&str, Chapter); 8] = [
-        ("stereo", stereo),
-        ("gi-effects", gi_effects),
-        ("brdf", brdf),
-        ("rendering-equation", rendering_equation),
-        ("path", path),
-        ("light", crate::chapters::light),
-        ("bdpt", crate::chapters::bdpt),
-        ("compare", crate::chapters::compare),
-    ];
-    for (name, chapter) in chapters {
+    for (name, chapter) in CHAPTERS {
+        if only.is_some_and(|o| o != name) {
+            continue;
+        }
         println!("\n== {name}");
         let t = Instant::now();
         page.sections.push(chapter(&tour)?);
         println!("== {name}: {:.1} s", t.elapsed().as_secs_f64());
     }
-    let index = page.write(&args.out)?;
+    let file = only.map_or_else(|| "index.html".to_string(), |name| format!("{name}.html"));
+    let index = page.write(&args.out, &file)?;
     println!(
-        "\nThe tour took {:.1} s. Open {} to see every picture.",
+        "\nThat took {:.1} s. Open {} to see the pictures.",
         start.elapsed().as_secs_f64(),
         index.display()
     );

@@ -168,3 +168,57 @@ fn a_written_builtin_scene_renders_from_its_file() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn every_chapter_is_a_subcommand_and_runs_alone() {
+    let chapters = [
+        "stereo",
+        "gi-effects",
+        "brdf",
+        "rendering-equation",
+        "path",
+        "light",
+        "bdpt",
+        "compare",
+    ];
+    for chapter in chapters {
+        let o = lesson11(&[chapter, "--help"]);
+        assert!(
+            o.status.success(),
+            "`lesson11 {chapter} --help` failed: {}",
+            stderr(&o)
+        );
+    }
+    let out = temp_dir("chapter");
+    let o = lesson11(&[
+        "rendering-equation",
+        "--quality",
+        "tiny",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_links_exist_at_least(&out.join("rendering-equation.html"), 2);
+    std::fs::remove_dir_all(&out).ok();
+}
+
+fn assert_links_exist_at_least(page: &Path, minimum: usize) {
+    let html = std::fs::read_to_string(page).unwrap();
+    let links: Vec<&str> = html
+        .split("src=\"")
+        .skip(1)
+        .map(|p| &p[..p.find('"').unwrap()])
+        .collect();
+    assert!(
+        links.len() >= minimum,
+        "{} shows {} pictures",
+        page.display(),
+        links.len()
+    );
+    for link in links {
+        assert!(
+            page.parent().unwrap().join(link).is_file(),
+            "missing {link}"
+        );
+    }
+}
