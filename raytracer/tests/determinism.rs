@@ -1,6 +1,6 @@
 //! The same seed gives the same image bit for bit, whatever the thread count.
 
-use raytracer::integrator::{AmbientOcclusion, Direct, Integrator};
+use raytracer::integrator::{AmbientOcclusion, Direct, Integrator, NaiveRecursive, PathTracer};
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
 
@@ -27,7 +27,13 @@ fn bits(scene: &Scene, integrator: &dyn Integrator, threads: usize) -> (Vec<u32>
 fn images_are_identical_with_one_and_many_threads() {
     let mut scene = Scene::builtin("cornell").unwrap();
     scene.set_resolution(48, 40);
-    for integrator in [&Direct as &dyn Integrator, &AmbientOcclusion::default()] {
+    let naive = NaiveRecursive::new(vec![3, 2], Some(4));
+    for integrator in [
+        &Direct as &dyn Integrator,
+        &AmbientOcclusion::default(),
+        &PathTracer::default(),
+        &naive,
+    ] {
         let one = bits(&scene, integrator, 1);
         for threads in [2, 3] {
             assert!(

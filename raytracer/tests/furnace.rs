@@ -151,3 +151,37 @@ fn naive_cutoff_is_biased() {
         0.875,
     );
 }
+
+/// In a closed scene every ray hits a surface, so naive recursion traces
+/// exactly `Σ_{d<D} Π_{k<d} N_k` rays per pixel sample: the N^D explosion of
+/// the lecture, counted.
+#[test]
+fn naive_recursion_traces_exactly_the_formula_in_a_closed_scene() {
+    let scene = small("furnace");
+    for (branching, depth) in [(vec![3u32], 3u32), (vec![4, 2], 4), (vec![2], 5)] {
+        let naive = NaiveRecursive::new(branching.clone(), Some(depth));
+        let options = RenderOptions {
+            spp: 2,
+            seed: 1,
+            threads: None,
+            progress: false,
+            ..RenderOptions::default()
+        };
+        render(&scene, &naive, &options);
+        let samples = 16 * 16 * 2;
+        let expected = naive.rays_per_sample_bound().unwrap();
+        assert_eq!(
+            naive.rays_traced(),
+            expected * samples,
+            "branching {branching:?}, depth {depth}"
+        );
+    }
+    assert_eq!(
+        NaiveRecursive::new(vec![3], Some(3)).rays_per_sample_bound(),
+        Some(1 + 3 + 9)
+    );
+    assert_eq!(
+        NaiveRecursive::new(vec![4, 2], Some(4)).rays_per_sample_bound(),
+        Some(1 + 4 + 8 + 16)
+    );
+}

@@ -53,6 +53,23 @@ fn the_tour_writes_every_picture_its_page_shows() {
     let csv = std::fs::read_to_string(out.join("04-rendering-equation/naive-rays.csv")).unwrap();
     assert!(csv.starts_with("N (branching),max depth D,"), "{csv}");
     assert_eq!(csv.lines().count(), 10, "a header and 9 rows");
+    let compare = std::fs::read_to_string(out.join("08-compare/equal-time.csv")).unwrap();
+    assert!(
+        compare.starts_with("scene,algorithm,spp,seconds,RMSE\n"),
+        "{compare}"
+    );
+    for algorithm in [
+        "naive",
+        "path (MIS)",
+        "path (BRDF only)",
+        "light",
+        "bidirectional",
+    ] {
+        assert!(
+            compare.contains(algorithm),
+            "the comparison misses {algorithm}"
+        );
+    }
     std::fs::remove_dir_all(&out).ok();
 }
 
