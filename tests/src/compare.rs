@@ -39,10 +39,21 @@ fn options(spp: u32, seed: u64) -> RenderOptions {
 /// Renders `student` and `reference` and z-tests them tile by tile (threshold
 /// for the family of all tiles and channels at level [`ALPHA`]).
 pub fn compare(c: &Comparison, student: &dyn Integrator, reference: &dyn Integrator) -> Result<(), String> {
+    compare_with_seeds(c, student, reference, (11, 12))
+}
+
+/// [`compare`] with the seeds of the two renders (the self-test checks the
+/// false-failure rate over many seeds).
+pub fn compare_with_seeds(
+    c: &Comparison,
+    student: &dyn Integrator,
+    reference: &dyn Integrator,
+    seeds: (u64, u64),
+) -> Result<(), String> {
     let mut scene = Scene::builtin(c.scene).map_err(|e| format!("grader: {e}"))?;
     scene.set_resolution(c.size, c.size);
-    let a = render(&scene, student, &options(c.spp, 11));
-    let b = render(&scene, reference, &options(c.spp, 12));
+    let a = render(&scene, student, &options(c.spp, seeds.0));
+    let b = render(&scene, reference, &options(c.spp, seeds.1));
     let (ai, av, bi, bv) = (
         a.film.image(),
         a.film.variance_image(),

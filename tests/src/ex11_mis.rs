@@ -33,14 +33,14 @@ pub fn check(w: MisFn) -> Result<(), String> {
                     wa + wb
                 ));
             }
-            if b == 0.0 && (wa - 1.0).abs() > 1e-6 {
-                return Err(format!(
-                    "mis_weight({a}, 0) is {wa}: when the other strategy cannot produce the sample, this one takes all of it (weight 1)"
-                ));
-            }
             if a > b && wa < 0.5 {
                 return Err(format!(
                     "mis_weight({a}, {b}) is {wa}: the strategy with the larger pdf must get the larger weight (are the arguments swapped?)"
+                ));
+            }
+            if b == 0.0 && (wa - 1.0).abs() > 1e-6 {
+                return Err(format!(
+                    "mis_weight({a}, 0) is {wa}: when the other strategy cannot produce the sample, this one takes all of it (weight 1)"
                 ));
             }
         }

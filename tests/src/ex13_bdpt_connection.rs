@@ -30,6 +30,7 @@ pub fn check(geometry: GeometryFn, weight: WeightFn) -> Result<(), String> {
         (Vec3A::new(0.2, 0.1, -0.3), Vec3A::new(0.0, 0.6, 0.8), Vec3A::new(-1.0, 0.5, 2.0), Vec3A::X),
         // Normals facing away from the edge: the cosines' absolute values.
         (Vec3A::ZERO, -Vec3A::Y, Vec3A::new(0.5, 1.5, 0.0), Vec3A::Y),
+        (Vec3A::ZERO, Vec3A::Y, Vec3A::new(0.5, 1.5, 0.0), Vec3A::Y),
     ];
     for (x, nx, y, ny) in cases {
         let (got, want) = (geometry(x, nx, y, ny), expected_g(x, nx, y, ny));
