@@ -42,7 +42,7 @@ pub fn estimate_direct(scene: &Scene, it: &Interaction, sampler: &mut Sampler) -
             (ls.wi, ls.li, ls.pdf_w, shadow)
         }
     };
-    if !(pdf_w > 0.0) || le == Color::ZERO {
+    if pdf_w.is_nan() || pdf_w <= 0.0 || le == Color::ZERO {
         return Color::ZERO;
     }
     let wo_l = it.frame.to_local(it.wo);

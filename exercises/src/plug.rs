@@ -53,9 +53,22 @@ impl Integrator for StudentNaive {
         "student-naive"
     }
 
-    fn sample(&self, scene: &Scene, pixel: UVec2, sampler: &mut Sampler, _: &mut Vec<Splat>) -> Color {
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _: &mut Vec<Splat>,
+    ) -> Color {
         let ray = camera_ray(scene, pixel, sampler);
-        ex08_naive_recursive::naive_radiance(scene, &ray, 0, self.max_depth, self.branching, sampler)
+        ex08_naive_recursive::naive_radiance(
+            scene,
+            &ray,
+            0,
+            self.max_depth,
+            self.branching,
+            sampler,
+        )
     }
 }
 
@@ -71,7 +84,13 @@ impl Integrator for StudentPathTracer {
         "student-path"
     }
 
-    fn sample(&self, scene: &Scene, pixel: UVec2, sampler: &mut Sampler, _: &mut Vec<Splat>) -> Color {
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _: &mut Vec<Splat>,
+    ) -> Color {
         let ray = camera_ray(scene, pixel, sampler);
         ex09_path_tracing::path_radiance(scene, ray, self.max_depth, self.rr_depth, sampler)
     }
@@ -89,7 +108,13 @@ impl Integrator for StudentDirect {
         "student-direct"
     }
 
-    fn sample(&self, scene: &Scene, pixel: UVec2, sampler: &mut Sampler, _: &mut Vec<Splat>) -> Color {
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _: &mut Vec<Splat>,
+    ) -> Color {
         let ray = camera_ray(scene, pixel, sampler);
         let Some(it) = scene.intersect(&ray) else {
             return scene.escaped_radiance(ray.d);

@@ -38,7 +38,11 @@ fn options(spp: u32, seed: u64) -> RenderOptions {
 
 /// Renders `student` and `reference` and z-tests them tile by tile (threshold
 /// for the family of all tiles and channels at level [`ALPHA`]).
-pub fn compare(c: &Comparison, student: &dyn Integrator, reference: &dyn Integrator) -> Result<(), String> {
+pub fn compare(
+    c: &Comparison,
+    student: &dyn Integrator,
+    reference: &dyn Integrator,
+) -> Result<(), String> {
     compare_with_seeds(c, student, reference, (11, 12))
 }
 

@@ -52,7 +52,11 @@ pub fn check(f: LambertFn) -> Result<(), String> {
     let b = Color::new(0.1, 0.5, 0.9);
     let checker = Texture::Checker { a, b, scale: 4.0 };
     let wi = Vec3A::new(-0.5, 0.1, 0.86).normalize();
-    for (uv, c) in [(Vec2::new(0.1, 0.1), a), (Vec2::new(0.3, 0.1), b), (Vec2::new(0.3, 0.3), a)] {
+    for (uv, c) in [
+        (Vec2::new(0.1, 0.1), a),
+        (Vec2::new(0.3, 0.1), b),
+        (Vec2::new(0.3, 0.3), a),
+    ] {
         let got = f(&checker, uv, wo, wi);
         if !close3(got, c / PI, 1e-4) {
             return Err(format!(

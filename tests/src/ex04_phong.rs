@@ -76,7 +76,11 @@ pub fn check(s: NormFn, f: PhongFn) -> Result<(), String> {
                 "multiply by the albedo ρ_s"
             } else if close3(got, want / expected_s(n), 1e-3) {
                 "multiply by S(n)"
-            } else if close3(got, albedo * expected_s(n) * wo.dot(wi).max(0.0).powf(n), 1e-3) {
+            } else if close3(
+                got,
+                albedo * expected_s(n) * wo.dot(wi).max(0.0).powf(n),
+                1e-3,
+            ) {
                 "α is the angle between wi and the MIRROR direction of wo, not wo itself"
             } else {
                 "f_r = ρ_s · S(n) · max(0, cos α)^n"

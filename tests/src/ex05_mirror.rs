@@ -37,7 +37,11 @@ pub fn check(reflect: ReflectFn, sample: MirrorFn) -> Result<(), String> {
         ));
     }
     let r = Color::new(0.9, 0.7, 0.4);
-    for wo in [Vec3A::Z, Vec3A::new(0.5, 0.3, 0.81), Vec3A::new(-0.9, 0.1, 0.2)] {
+    for wo in [
+        Vec3A::Z,
+        Vec3A::new(0.5, 0.3, 0.81),
+        Vec3A::new(-0.9, 0.1, 0.2),
+    ] {
         let wo = wo.normalize();
         let s = sample(r, wo);
         let wi = Vec3A::new(-wo.x, -wo.y, wo.z);
@@ -50,10 +54,15 @@ pub fn check(reflect: ReflectFn, sample: MirrorFn) -> Result<(), String> {
             ));
         }
         if !s.is_delta {
-            return Err(format!("{what}: a mirror is a delta lobe: set is_delta: true"));
+            return Err(format!(
+                "{what}: a mirror is a delta lobe: set is_delta: true"
+            ));
         }
         if !(s.pdf_w > 0.0 && s.pdf_w.is_finite()) {
-            return Err(format!("{what}: pdf_w is {}, expected 1 (the only lobe, always chosen)", s.pdf_w));
+            return Err(format!(
+                "{what}: pdf_w is {}, expected 1 (the only lobe, always chosen)",
+                s.pdf_w
+            ));
         }
         let weight = s.f * (s.wi.z.abs() / s.pdf_w);
         if !close3(weight, r, 1e-4) {

@@ -48,7 +48,9 @@ pub fn check(f: NaiveFn) -> Result<(), String> {
     let furnace = small_scene("furnace")?;
     for (d, n) in [(1u32, 3u32), (2, 3), (3, 3), (4, 2)] {
         let exact = 1.0 - 0.5f32.powi(d as i32);
-        let stats = camera_estimates(&furnace, 80 + d as u64, ESTIMATES, |ray, s| f(&furnace, &ray, 0, d, n, s));
+        let stats = camera_estimates(&furnace, 80 + d as u64, ESTIMATES, |ray, s| {
+            f(&furnace, &ray, 0, d, n, s)
+        });
         stats.check(
             &format!("emitting furnace (L_e = 0.5, ρ = 0.5), max_depth {d}, branching {n}: L = L_e(1 + ρ + … + ρ^(D−1))"),
             Color::splat(exact),

@@ -29,7 +29,13 @@ impl Integrator for PathIntegrator {
         "graded-path"
     }
 
-    fn sample(&self, scene: &Scene, pixel: UVec2, sampler: &mut Sampler, _: &mut Vec<Splat>) -> Color {
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _: &mut Vec<Splat>,
+    ) -> Color {
         let ray = camera_ray(scene, pixel, sampler);
         (self.f)(scene, ray, self.max_depth, self.rr_depth, sampler)
     }
@@ -39,7 +45,9 @@ pub fn check(f: PathFn) -> Result<(), String> {
     let furnace = small_scene("furnace")?;
     // Depth-limited, no roulette: 1 − 0.5^D.
     for d in [1u32, 3] {
-        let stats = camera_estimates(&furnace, 90 + d as u64, ESTIMATES, |ray, s| f(&furnace, ray, Some(d), 1000, s));
+        let stats = camera_estimates(&furnace, 90 + d as u64, ESTIMATES, |ray, s| {
+            f(&furnace, ray, Some(d), 1000, s)
+        });
         stats.check(
             &format!("emitting furnace (L_e = 0.5, ρ = 0.5), max_depth {d}, no roulette: L = L_e(1 + … + ρ^(D−1))"),
             Color::splat(1.0 - 0.5f32.powi(d as i32)),
@@ -54,7 +62,9 @@ pub fn check(f: PathFn) -> Result<(), String> {
         )?;
     }
     // Unlimited depth, roulette from the first bounce: L_e / (1 − ρ) = 1.
-    let stats = camera_estimates(&furnace, 95, ESTIMATES, |ray, s| f(&furnace, ray, None, 1, s));
+    let stats = camera_estimates(&furnace, 95, ESTIMATES, |ray, s| {
+        f(&furnace, ray, None, 1, s)
+    });
     stats.check(
         "emitting furnace, unlimited depth, Russian roulette after 1 bounce: L = L_e/(1 − ρ)",
         Color::ONE,

@@ -29,7 +29,13 @@ impl Integrator for DirectIntegrator {
         "graded-direct"
     }
 
-    fn sample(&self, scene: &Scene, pixel: UVec2, sampler: &mut Sampler, _: &mut Vec<Splat>) -> Color {
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _: &mut Vec<Splat>,
+    ) -> Color {
         let ray = camera_ray(scene, pixel, sampler);
         let Some(it) = scene.intersect(&ray) else {
             return scene.escaped_radiance(ray.d);
@@ -42,9 +48,19 @@ pub fn check(to_solid_angle: AreaPdfFn, direct: DirectFn) -> Result<(), String> 
     let cases = [
         (0.25, Vec3A::ZERO, Vec3A::new(0.0, 2.0, 0.0), -Vec3A::Y),
         (0.25, Vec3A::ZERO, Vec3A::new(1.0, 2.0, 0.5), -Vec3A::Y),
-        (1.0, Vec3A::new(0.3, -1.0, 0.2), Vec3A::new(-0.2, 0.99, 0.1), Vec3A::new(0.0, -1.0, 0.0)),
+        (
+            1.0,
+            Vec3A::new(0.3, -1.0, 0.2),
+            Vec3A::new(-0.2, 0.99, 0.1),
+            Vec3A::new(0.0, -1.0, 0.0),
+        ),
         // The light's normal faces away: the density uses |cos θ_y|.
-        (2.0, Vec3A::ZERO, Vec3A::new(0.5, 1.0, -1.0), Vec3A::new(0.0, 0.6, 0.8)),
+        (
+            2.0,
+            Vec3A::ZERO,
+            Vec3A::new(0.5, 1.0, -1.0),
+            Vec3A::new(0.0, 0.6, 0.8),
+        ),
     ];
     for (pdf_a, x, y, n) in cases {
         let got = to_solid_angle(pdf_a, x, y, n);

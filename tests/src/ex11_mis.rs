@@ -25,7 +25,9 @@ pub fn check(w: MisFn) -> Result<(), String> {
             }
             let (wa, wb) = (w(a, b), w(b, a));
             if !(wa.is_finite() && (0.0..=1.0).contains(&wa)) {
-                return Err(format!("mis_weight({a}, {b}) is {wa}: a weight must be finite and in [0, 1]"));
+                return Err(format!(
+                    "mis_weight({a}, {b}) is {wa}: a weight must be finite and in [0, 1]"
+                ));
             }
             if (wa + wb - 1.0).abs() > 1e-4 {
                 return Err(format!(

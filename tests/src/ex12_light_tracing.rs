@@ -15,7 +15,14 @@ use crate::stats::{Z_MAX, close3, fmt3, ratio_near};
 pub type SplatFn = fn(&Camera, Vec3A, Vec3A, Color, &dyn Fn(Vec3A) -> Color, Vec2) -> Option<Splat>;
 
 /// The grader's own connection.
-pub fn expected(camera: &Camera, p: Vec3A, n: Vec3A, beta: Color, f_r: &dyn Fn(Vec3A) -> Color, u: Vec2) -> Option<Splat> {
+pub fn expected(
+    camera: &Camera,
+    p: Vec3A,
+    n: Vec3A,
+    beta: Color,
+    f_r: &dyn Fn(Vec3A) -> Color,
+    u: Vec2,
+) -> Option<Splat> {
     let s = camera.sample_wi(p, u)?;
     Some(Splat {
         raster: s.raster,
@@ -57,7 +64,11 @@ pub fn check(f: SplatFn) -> Result<(), String> {
             let u = Vec2::new(0.3, 0.7);
             let got = f(&cam, p, n, beta, &f_r, u);
             let want = expected(&cam, p, n, beta, &f_r, u);
-            let what = format!("vertex {} (normal {}), aperture {aperture}", fmt3(p), fmt3(n));
+            let what = format!(
+                "vertex {} (normal {}), aperture {aperture}",
+                fmt3(p),
+                fmt3(n)
+            );
             match (got, want) {
                 (None, None) => {}
                 (Some(_), None) => {
@@ -65,7 +76,11 @@ pub fn check(f: SplatFn) -> Result<(), String> {
                         "{what}: the point is behind the camera or off the film, expected None (camera.sample_wi returns None)"
                     ));
                 }
-                (None, Some(_)) => return Err(format!("{what}: you returned None, but the point is seen by the camera")),
+                (None, Some(_)) => {
+                    return Err(format!(
+                        "{what}: you returned None, but the point is seen by the camera"
+                    ));
+                }
                 (Some(g), Some(w)) => {
                     if (g.raster - w.raster).length() > 1e-3 {
                         return Err(format!(

@@ -27,7 +27,12 @@ pub fn check(geometry: GeometryFn, weight: WeightFn) -> Result<(), String> {
     let cases = [
         (Vec3A::ZERO, Vec3A::Y, Vec3A::new(0.0, 2.0, 0.0), -Vec3A::Y),
         (Vec3A::ZERO, Vec3A::Y, Vec3A::new(1.0, 1.0, 0.5), -Vec3A::Y),
-        (Vec3A::new(0.2, 0.1, -0.3), Vec3A::new(0.0, 0.6, 0.8), Vec3A::new(-1.0, 0.5, 2.0), Vec3A::X),
+        (
+            Vec3A::new(0.2, 0.1, -0.3),
+            Vec3A::new(0.0, 0.6, 0.8),
+            Vec3A::new(-1.0, 0.5, 2.0),
+            Vec3A::X,
+        ),
         // Normals facing away from the edge: the cosines' absolute values.
         (Vec3A::ZERO, -Vec3A::Y, Vec3A::new(0.5, 1.5, 0.0), Vec3A::Y),
         (Vec3A::ZERO, Vec3A::Y, Vec3A::new(0.5, 1.5, 0.0), Vec3A::Y),
@@ -63,7 +68,9 @@ pub fn check(geometry: GeometryFn, weight: WeightFn) -> Result<(), String> {
         let mut s = Sampler::new(13, i, 0);
         let d = r * concentric_disk(s.next_2d());
         let y = Vec3A::new(d.x, h, d.y);
-        stats.add(Color::splat(geometry(Vec3A::ZERO, Vec3A::Y, y, -Vec3A::Y) * PI * r * r));
+        stats.add(Color::splat(
+            geometry(Vec3A::ZERO, Vec3A::Y, y, -Vec3A::Y) * PI * r * r,
+        ));
     }
     stats.check(
         "irradiance under a disk light (R = 0.8, h = 1) as ∫ G dA = πR²/(h² + R²)",
@@ -71,16 +78,28 @@ pub fn check(geometry: GeometryFn, weight: WeightFn) -> Result<(), String> {
         |_| None,
     )?;
     // MIS weights over many strategies.
-    let sets: [&[f32]; 5] = [&[1.0, 2.0, 3.0], &[0.1, 10.0], &[5.0], &[0.0, 1.0, 0.0, 2.0], &[1e-3, 1e3, 1.0, 1.0]];
+    let sets: [&[f32]; 5] = [
+        &[1.0, 2.0, 3.0],
+        &[0.1, 10.0],
+        &[5.0],
+        &[0.0, 1.0, 0.0, 2.0],
+        &[1e-3, 1e3, 1.0, 1.0],
+    ];
     for pdfs in sets {
         let ws: Vec<f32> = (0..pdfs.len()).map(|s| weight(pdfs, s)).collect();
         let sum: f32 = ws.iter().sum();
-        if ws.iter().any(|w| !(w.is_finite() && (0.0..=1.0).contains(w))) || (sum - 1.0).abs() > 1e-4 {
+        if ws
+            .iter()
+            .any(|w| !(w.is_finite() && (0.0..=1.0).contains(w)))
+            || (sum - 1.0).abs() > 1e-4
+        {
             return Err(format!(
                 "bdpt_mis_weight over the densities {pdfs:?} gives {ws:?} (sum {sum}): the weights of all strategies must be in [0, 1] and sum to one"
             ));
         }
-        let best = (0..pdfs.len()).max_by(|&a, &b| pdfs[a].total_cmp(&pdfs[b])).unwrap_or(0);
+        let best = (0..pdfs.len())
+            .max_by(|&a, &b| pdfs[a].total_cmp(&pdfs[b]))
+            .unwrap_or(0);
         if ws.iter().any(|&w| w > ws[best] + 1e-6) {
             return Err(format!(
                 "bdpt_mis_weight over the densities {pdfs:?} gives {ws:?}: the strategy with the largest density must get the largest weight"

@@ -45,14 +45,24 @@ use exercises as ex;
 
 /// The grader of each exercise of the `exercises` crate, in lecture order
 /// (names as in `exercises/info.toml`).
-pub const GRADERS: &[(&str, fn() -> Result<(), String>)] = &[
+/// The checks of one exercise against the student's crate.
+pub type Check = fn() -> Result<(), String>;
+
+pub const GRADERS: &[(&str, Check)] = &[
     ("ex01_stereo_eyes", || {
         ex01_stereo_eyes::check(ex::ex01_stereo_eyes::stereo_eyes)
     }),
-    ("ex02_anaglyph", || ex02_anaglyph::check(ex::ex02_anaglyph::anaglyph)),
-    ("ex03_lambert", || ex03_lambert::check(ex::ex03_lambert::lambert_eval)),
+    ("ex02_anaglyph", || {
+        ex02_anaglyph::check(ex::ex02_anaglyph::anaglyph)
+    }),
+    ("ex03_lambert", || {
+        ex03_lambert::check(ex::ex03_lambert::lambert_eval)
+    }),
     ("ex04_phong", || {
-        ex04_phong::check(ex::ex04_phong::phong_normalization, ex::ex04_phong::phong_eval)
+        ex04_phong::check(
+            ex::ex04_phong::phong_normalization,
+            ex::ex04_phong::phong_eval,
+        )
     }),
     ("ex05_mirror", || {
         ex05_mirror::check(ex::ex05_mirror::reflect, ex::ex05_mirror::mirror_sample)
@@ -63,7 +73,9 @@ pub const GRADERS: &[(&str, fn() -> Result<(), String>)] = &[
             ex::ex06_cosine_sampling::cosine_hemisphere_pdf,
         )
     }),
-    ("ex07_albedo", || ex07_albedo::check(ex::ex07_albedo::estimate_albedo)),
+    ("ex07_albedo", || {
+        ex07_albedo::check(ex::ex07_albedo::estimate_albedo)
+    }),
     ("ex08_naive_recursive", || {
         ex08_naive_recursive::check(ex::ex08_naive_recursive::naive_radiance)
     }),
@@ -71,7 +83,10 @@ pub const GRADERS: &[(&str, fn() -> Result<(), String>)] = &[
         ex09_path_tracing::check(ex::ex09_path_tracing::path_radiance)
     }),
     ("ex10_nee", || {
-        ex10_nee::check(ex::ex10_nee::area_pdf_to_solid_angle, ex::ex10_nee::estimate_direct)
+        ex10_nee::check(
+            ex::ex10_nee::area_pdf_to_solid_angle,
+            ex::ex10_nee::estimate_direct,
+        )
     }),
     ("ex11_mis", || ex11_mis::check(ex::ex11_mis::mis_weight)),
     ("ex12_light_tracing", || {

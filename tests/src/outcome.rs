@@ -76,7 +76,9 @@ fn install_hook() {
         let previous = panic::take_hook();
         panic::set_hook(Box::new(move |info| {
             if GRADING.with(Cell::get) {
-                let at = info.location().map(|l| format!("{}:{}", l.file(), l.line()));
+                let at = info
+                    .location()
+                    .map(|l| format!("{}:{}", l.file(), l.line()));
                 LAST_PANIC.with(|p| *p.borrow_mut() = at);
             } else {
                 previous(info);
@@ -129,7 +131,10 @@ mod tests {
         let o = grade(|| todo!());
         assert!(o.is_not_started(), "{o}");
         let o = grade(|| panic!("index out of bounds"));
-        assert!(matches!(&o, Outcome::Failed(r) if r.contains("index out of bounds")), "{o}");
+        assert!(
+            matches!(&o, Outcome::Failed(r) if r.contains("index out of bounds")),
+            "{o}"
+        );
         assert_eq!(grade(|| Ok(())), Outcome::Passed);
         assert_eq!(grade(|| Err("x".into())), Outcome::Failed("x".into()));
     }

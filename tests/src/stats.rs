@@ -60,7 +60,12 @@ impl MeanVar {
     /// Checks the mean against `exact` (see the module doc). `what` names the
     /// case in the failure message; `advice(ratio)` may add a likely cause
     /// from the ratio mean/exact of the worst channel.
-    pub fn check(&self, what: &str, exact: Color, advice: impl Fn(f64) -> Option<String>) -> Result<(), String> {
+    pub fn check(
+        &self,
+        what: &str,
+        exact: Color,
+        advice: impl Fn(f64) -> Option<String>,
+    ) -> Result<(), String> {
         if self.nonfinite > 0 {
             return Err(format!(
                 "{what}: {} of your estimates are NaN or infinite (a division by a zero pdf?)",
@@ -75,7 +80,11 @@ impl MeanVar {
             // an estimator with (nearly) zero variance must be exact up to it.
             let bad = d > 1e-4 * e.abs().max(1.0) && d > Z_MAX * se[k];
             if bad {
-                let z = if se[k] > 0.0 { d / se[k] } else { f64::INFINITY };
+                let z = if se[k] > 0.0 {
+                    d / se[k]
+                } else {
+                    f64::INFINITY
+                };
                 let mut msg = format!(
                     "{what}: your mean is {m:.4} ± {:.4} (channel {k}), expected {e:.4} (|z| = {z:.1} > {Z_MAX})",
                     se[k]
@@ -95,7 +104,10 @@ impl MeanVar {
 
 /// `|a − b| ≤ tol · max(1, |b|)` in every component.
 pub fn close3(a: Vec3A, b: Vec3A, tol: f32) -> bool {
-    (a - b).abs().cmple(Vec3A::splat(tol) * b.abs().max(Vec3A::ONE)).all()
+    (a - b)
+        .abs()
+        .cmple(Vec3A::splat(tol) * b.abs().max(Vec3A::ONE))
+        .all()
 }
 
 /// `|a − b| ≤ tol · max(1e-6, |b|)`: relative closeness of scalars.

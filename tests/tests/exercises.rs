@@ -9,7 +9,10 @@
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
-    let filters: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with('-')).collect();
+    let filters: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| !a.starts_with('-'))
+        .collect();
     let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
     let mut results = grading::grade_all(threads);
     if !filters.is_empty() {
