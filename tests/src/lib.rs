@@ -108,29 +108,75 @@ pub fn grade_exercise(name: &str) -> Option<Outcome> {
         .map(|(_, check)| grade(check))
 }
 
-/// Grades every exercise, in order, on up to `threads` threads.
-pub fn grade_all(threads: usize) -> Vec<(exercises::Exercise, Outcome)> {
+/// How long [`grade_all`] waits for the whole suite (it takes seconds).
+pub const TIMEOUT: std::time::Duration = std::time::Duration::from_secs(120);
+
+/// Grades every exercise, in order, on up to `threads` threads. An exercise
+/// still running after `timeout` (an endless loop in the student's code) is
+/// reported as failed; its thread is left behind, so the caller should exit
+/// the process when done.
+pub fn grade_all(
+    threads: usize,
+    timeout: std::time::Duration,
+) -> Vec<(exercises::Exercise, Outcome)> {
     let reg = exercises::registry();
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let results = std::sync::Mutex::new(vec![None; reg.len()]);
-    std::thread::scope(|s| {
-        for _ in 0..threads.max(1) {
-            s.spawn(|| {
-                loop {
-                    let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                    let Some(e) = reg.get(i) else { break };
-                    let o = grade_exercise(&e.name).unwrap_or_else(|| {
-                        Outcome::Failed(format!("the grader has no check for {}", e.name))
-                    });
-                    results.lock().expect("no panics while holding the lock")[i] = Some(o);
+    let checks = reg
+        .iter()
+        .map(|e| GRADERS.iter().find(|(n, _)| *n == e.name).map(|(_, c)| *c))
+        .collect();
+    let outcomes = grade_checks(checks, threads, timeout);
+    reg.into_iter().zip(outcomes).collect()
+}
+
+/// Runs `checks` (`None`: no grader) on `threads` threads with an overall
+/// `timeout`, outcomes in the same order.
+pub fn grade_checks(
+    checks: Vec<Option<Check>>,
+    threads: usize,
+    timeout: std::time::Duration,
+) -> Vec<Outcome> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    use std::sync::{Arc, mpsc};
+    let n = checks.len();
+    let names = Arc::new(checks);
+    let next = Arc::new(AtomicUsize::new(0));
+    let (tx, rx) = mpsc::channel();
+    for _ in 0..threads.max(1) {
+        let (names, next, tx) = (Arc::clone(&names), Arc::clone(&next), tx.clone());
+        std::thread::spawn(move || {
+            loop {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some(check) = names.get(i) else { break };
+                let o = match check {
+                    Some(c) => grade(c),
+                    None => Outcome::Failed("the grader has no check for this exercise".into()),
+                };
+                if tx.send((i, o)).is_err() {
+                    break;
                 }
-            });
+            }
+        });
+    }
+    drop(tx);
+    let deadline = std::time::Instant::now() + timeout;
+    let mut results: Vec<Option<Outcome>> = vec![None; n];
+    while results.iter().any(Option::is_none) {
+        let left = deadline.saturating_duration_since(std::time::Instant::now());
+        match rx.recv_timeout(left) {
+            Ok((i, o)) => results[i] = Some(o),
+            Err(_) => break,
         }
-    });
-    let results = results.into_inner().expect("no poisoned lock");
-    reg.into_iter()
-        .zip(results)
-        .map(|(e, o)| (e, o.expect("every exercise graded")))
+    }
+    results
+        .into_iter()
+        .map(|o| {
+            o.unwrap_or_else(|| {
+                Outcome::Failed(format!(
+                    "did not finish within {} s — an endless loop? (every path must end: max_depth, roulette, or a ray that escapes)",
+                    timeout.as_secs_f32()
+                ))
+            })
+        })
         .collect()
 }
 
@@ -159,4 +205,31 @@ pub fn progress_report(results: &[(exercises::Exercise, Outcome)]) -> String {
         None => out.push_str("All exercises pass. Well done!\n"),
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_endless_exercise_times_out_and_the_others_are_graded() {
+        let endless: Check = || loop {
+            std::thread::sleep(std::time::Duration::from_millis(50));
+        };
+        let fine: Check = || Ok(());
+        let todo: Check = || todo!();
+        let o = grade_checks(
+            vec![Some(fine), Some(endless), Some(todo), None],
+            2,
+            std::time::Duration::from_millis(300),
+        );
+        assert_eq!(o[0], Outcome::Passed);
+        assert!(
+            matches!(&o[1], Outcome::Failed(r) if r.contains("endless loop")),
+            "{:?}",
+            o[1]
+        );
+        assert!(o[2].is_not_started());
+        assert!(o[3].is_failed());
+    }
 }

@@ -52,7 +52,7 @@ fn exercise(number: usize) -> Result<Exercise> {
 
 pub fn run_exercises(_: &ExercisesArgs) -> Result<()> {
     let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
-    let results = grading::grade_all(threads);
+    let results = grading::grade_all(threads, grading::TIMEOUT);
     print!("{}", grading::progress_report(&results));
     println!(
         "Grade: `cargo test` · hints: `lesson11 hint N` · a solution once it passes: `lesson11 solution N`"
