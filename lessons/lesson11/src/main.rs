@@ -9,6 +9,7 @@ mod bench;
 mod bench_rays;
 mod brdf_plots;
 mod chapters;
+mod exercises_cmd;
 mod options;
 mod page;
 mod plot;
@@ -59,6 +60,12 @@ enum Command {
     Scenes(scenes_cmd::ScenesArgs),
     /// Measure the renderer: rays per second on big meshes, samples per second on the Cornell box.
     Bench(bench::BenchArgs),
+    /// The exercises: which pass, fail or are not started, and the next one.
+    Exercises(exercises_cmd::ExercisesArgs),
+    /// The next hint of exercise N.
+    Hint(exercises_cmd::HintArgs),
+    /// The reference solution of exercise N, once yours passes.
+    Solution(exercises_cmd::SolutionArgs),
 }
 
 fn main() -> ExitCode {
@@ -80,6 +87,9 @@ fn main() -> ExitCode {
         Command::Scenes(args) => scenes_cmd::run(&args),
         Command::Bench(args) => bench::run(&args),
         Command::Stereo(args) => stereo_cmd::run(&args),
+        Command::Exercises(args) => exercises_cmd::run_exercises(&args),
+        Command::Hint(args) => exercises_cmd::run_hint(&args),
+        Command::Solution(args) => exercises_cmd::run_solution(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

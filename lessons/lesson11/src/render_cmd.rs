@@ -114,9 +114,15 @@ pub struct RenderArgs {
     /// Exposure in stops for the PNG (+1 doubles the brightness); the EXR is never changed.
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     pub exposure: f32,
+    /// Render with your own code from exercises/ (path: exercise 9, naive: 8, direct: 10) beside the reference.
+    #[arg(long)]
+    pub student: bool,
 }
 
 pub fn run(args: &RenderArgs) -> Result<()> {
+    if args.student {
+        return crate::exercises_cmd::render_student(args);
+    }
     let (scene, options) = args.scene.load("cornell")?;
     if args.integrator_args.branching.contains(&0) {
         anyhow::bail!("--branching factors must be at least 1");

@@ -1,0 +1,124 @@
+//! Where the student's functions plug into the renderer: integrators and
+//! image operations built from renderer pieces plus the exercises, so that
+//! `lesson11 render --student` (and the grader) render with the student's code.
+
+use raytracer::camera::{Camera, CameraParams};
+use raytracer::film::{Image, Splat};
+use raytracer::integrator::{Integrator, camera_ray};
+use raytracer::math::{Color, UVec2};
+use raytracer::sampling::Sampler;
+use raytracer::scene::Scene;
+
+use crate::{ex01_stereo_eyes, ex02_anaglyph, ex08_naive_recursive, ex09_path_tracing, ex10_nee};
+
+/// The two cameras of a stereo pair ("parallel" method): each eye from
+/// exercise 1, looking in the same direction as the middle camera.
+pub fn stereo_cameras(camera: &Camera, stereo_separation: f32) -> (Camera, Camera) {
+    let (left, right) = ex01_stereo_eyes::stereo_eyes(camera, stereo_separation);
+    let eye = |p| {
+        let offset = p - camera.position();
+        let params = CameraParams {
+            position: p,
+            look_at: camera.params.look_at + offset,
+            ..camera.params
+        };
+        Camera::new(params, camera.width, camera.height)
+    };
+    (eye(left), eye(right))
+}
+
+/// The anaglyph of two images of the same size, pixel by pixel with exercise 2.
+///
+/// # Panics
+/// If the images differ in size.
+pub fn anaglyph_image(left: &Image, right: &Image, desaturation: f32) -> Image {
+    assert!(
+        left.width == right.width && left.height == right.height,
+        "the two eyes' images differ in size"
+    );
+    Image::from_fn(left.width, left.height, |x, y| {
+        ex02_anaglyph::anaglyph(left.get(x, y), right.get(x, y), desaturation)
+    })
+}
+
+/// Naive recursive Monte Carlo with the student's `naive_radiance` (exercise 8).
+#[derive(Clone, Copy, Debug)]
+pub struct StudentNaive {
+    pub max_depth: u32,
+    pub branching: u32,
+}
+
+impl Integrator for StudentNaive {
+    fn name(&self) -> &'static str {
+        "student-naive"
+    }
+
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _: &mut Vec<Splat>,
+    ) -> Color {
+        let ray = camera_ray(scene, pixel, sampler);
+        ex08_naive_recursive::naive_radiance(
+            scene,
+            &ray,
+            0,
+            self.max_depth,
+            self.branching,
+            sampler,
+        )
+    }
+}
+
+/// The path tracer with the student's `path_radiance` (exercise 9).
+#[derive(Clone, Copy, Debug)]
+pub struct StudentPathTracer {
+    pub max_depth: Option<u32>,
+    pub rr_depth: u32,
+}
+
+impl Integrator for StudentPathTracer {
+    fn name(&self) -> &'static str {
+        "student-path"
+    }
+
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _: &mut Vec<Splat>,
+    ) -> Color {
+        let ray = camera_ray(scene, pixel, sampler);
+        ex09_path_tracing::path_radiance(scene, ray, self.max_depth, self.rr_depth, sampler)
+    }
+}
+
+/// Direct light by next event estimation only, with the student's
+/// `estimate_direct` (exercise 10): emitters seen directly plus one light
+/// sample at the first hit (the renderer's `PathTracer` with `max_depth = 2`
+/// and `DirectStrategy::LightOnly` computes the same).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct StudentDirect;
+
+impl Integrator for StudentDirect {
+    fn name(&self) -> &'static str {
+        "student-direct"
+    }
+
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _: &mut Vec<Splat>,
+    ) -> Color {
+        let ray = camera_ray(scene, pixel, sampler);
+        let Some(it) = scene.intersect(&ray) else {
+            return scene.escaped_radiance(ray.d);
+        };
+        scene.emitted(&it) + ex10_nee::estimate_direct(scene, &it, sampler)
+    }
+}

@@ -1,0 +1,109 @@
+//! Grader of exercise 9 (the path tracing loop): furnaces with and without
+//! roulette (z-tests with the student's own variance), then the Cornell box
+//! against the renderer's BRDF-sampling path tracer, tile by tile.
+
+use raytracer::film::Splat;
+use raytracer::integrator::{DirectStrategy, Integrator, PathTracer, camera_ray};
+use raytracer::math::{Color, Ray, UVec2};
+use raytracer::sampling::Sampler;
+use raytracer::scene::Scene;
+
+use crate::compare::{Comparison, compare};
+use crate::ex08_naive_recursive::{camera_estimates, small_scene};
+
+/// The signature of exercise 9.
+pub type PathFn = fn(&Scene, Ray, Option<u32>, u32, &mut Sampler) -> Color;
+
+/// Paths per furnace case.
+pub const ESTIMATES: u64 = 4000;
+
+/// An integrator around a path function (for the image comparison).
+pub struct PathIntegrator {
+    pub f: PathFn,
+    pub max_depth: Option<u32>,
+    pub rr_depth: u32,
+}
+
+impl Integrator for PathIntegrator {
+    fn name(&self) -> &'static str {
+        "graded-path"
+    }
+
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _: &mut Vec<Splat>,
+    ) -> Color {
+        let ray = camera_ray(scene, pixel, sampler);
+        (self.f)(scene, ray, self.max_depth, self.rr_depth, sampler)
+    }
+}
+
+pub fn check(f: PathFn) -> Result<(), String> {
+    let furnace = small_scene("furnace")?;
+    // Depth-limited, no roulette: 1 − 0.5^D.
+    for d in [1u32, 3] {
+        let stats = camera_estimates(&furnace, 90 + d as u64, ESTIMATES, |ray, s| {
+            f(&furnace, ray, Some(d), 1000, s)
+        });
+        stats.check(
+            &format!("emitting furnace (L_e = 0.5, ρ = 0.5), max_depth {d}, no roulette: L = L_e(1 + … + ρ^(D−1))"),
+            Color::splat(1.0 - 0.5f32.powi(d as i32)),
+            |r| {
+                Some(if r > 1.0 {
+                    "too bright: is β multiplied by f·|cos θ_i|/pdf_w (not added)? does the path stop after max_depth − 1 bounces?"
+                } else {
+                    "too dark: add β·L_e at EVERY hit, and make max_depth − 1 bounces"
+                }
+                .to_string())
+            },
+        )?;
+    }
+    // Unlimited depth, roulette from the first bounce: L_e / (1 − ρ) = 1.
+    let stats = camera_estimates(&furnace, 95, ESTIMATES, |ray, s| {
+        f(&furnace, ray, None, 1, s)
+    });
+    stats.check(
+        "emitting furnace, unlimited depth, Russian roulette after 1 bounce: L = L_e/(1 − ρ)",
+        Color::ONE,
+        |r| {
+            Some(if r < 1.0 {
+                "too dark: did you divide β by the survival probability q after roulette?"
+            } else {
+                "too bright: continue with probability q and divide by q, not the other way round"
+            }
+            .to_string())
+        },
+    )?;
+    let white = small_scene("white-furnace")?;
+    let stats = camera_estimates(&white, 96, ESTIMATES, |ray, s| f(&white, ray, None, 2, s));
+    stats.check(
+        "white furnace (white Lambert under a sky of 1), roulette after 2 bounces",
+        Color::ONE,
+        |_| Some("a path that escapes adds β · scene.escaped_radiance(ray.d)".to_string()),
+    )?;
+    // The Cornell box against the renderer (BRDF sampling only, as the exercise).
+    let student = PathIntegrator {
+        f,
+        max_depth: Some(5),
+        rr_depth: 3,
+    };
+    let reference = PathTracer {
+        max_depth: Some(5),
+        rr_depth: 3,
+        strategy: DirectStrategy::BrdfOnly,
+    };
+    compare(
+        &Comparison {
+            name: "ex09_cornell",
+            scene: "cornell",
+            size: 32,
+            tile: 8,
+            spp: 64,
+        },
+        &student,
+        &reference,
+    )
+}

@@ -1,0 +1,141 @@
+//! The outcome of grading one exercise, and the runner that turns a
+//! student's `todo!()` into "not started" instead of a failure.
+
+use std::cell::{Cell, RefCell};
+use std::fmt;
+use std::panic::{self, AssertUnwindSafe};
+use std::sync::Once;
+
+/// How an exercise fared.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Outcome {
+    Passed,
+    /// Failed, with a reason the student can act on.
+    Failed(String),
+    /// A stub still panics with `todo!()`; where (file:line), if known.
+    NotStarted(Option<String>),
+}
+
+impl Outcome {
+    pub fn is_passed(&self) -> bool {
+        matches!(self, Outcome::Passed)
+    }
+
+    pub fn is_failed(&self) -> bool {
+        matches!(self, Outcome::Failed(_))
+    }
+
+    pub fn is_not_started(&self) -> bool {
+        matches!(self, Outcome::NotStarted(_))
+    }
+
+    /// One word: "passed", "failed", "not started".
+    pub fn status(&self) -> &'static str {
+        match self {
+            Outcome::Passed => "passed",
+            Outcome::Failed(_) => "failed",
+            Outcome::NotStarted(_) => "not started",
+        }
+    }
+
+    /// The mark of the progress table: `✓`, `✗`, `·`.
+    pub fn mark(&self) -> char {
+        match self {
+            Outcome::Passed => '✓',
+            Outcome::Failed(_) => '✗',
+            Outcome::NotStarted(_) => '·',
+        }
+    }
+}
+
+impl fmt::Display for Outcome {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Outcome::Passed => write!(f, "✓ passed"),
+            Outcome::Failed(reason) => write!(f, "✗ failed: {reason}"),
+            Outcome::NotStarted(Some(at)) => write!(f, "· not started (todo!() at {at})"),
+            Outcome::NotStarted(None) => write!(f, "· not started"),
+        }
+    }
+}
+
+thread_local! {
+    /// True while [`grade`] runs student code on this thread: the panic hook
+    /// stays silent and records the panic instead of printing it.
+    static GRADING: Cell<bool> = const { Cell::new(false) };
+    /// The location of the last panic caught while grading.
+    static LAST_PANIC: RefCell<Option<String>> = const { RefCell::new(None) };
+}
+
+/// The message `todo!()` panics with.
+const TODO_MESSAGE: &str = "not yet implemented";
+
+fn install_hook() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        let previous = panic::take_hook();
+        panic::set_hook(Box::new(move |info| {
+            if GRADING.with(Cell::get) {
+                let at = info
+                    .location()
+                    .map(|l| format!("{}:{}", l.file(), l.line()));
+                LAST_PANIC.with(|p| *p.borrow_mut() = at);
+            } else {
+                previous(info);
+            }
+        }));
+    });
+}
+
+fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
+    if let Some(s) = payload.downcast_ref::<&str>() {
+        s.to_string()
+    } else if let Some(s) = payload.downcast_ref::<String>() {
+        s.clone()
+    } else {
+        "(no message)".to_string()
+    }
+}
+
+/// Runs the checks of one exercise: `Ok` is passed, `Err(reason)` failed; a
+/// panic with `todo!()`'s message is "not started", any other panic a failure
+/// that says where the code panicked.
+pub fn grade(check: impl FnOnce() -> Result<(), String>) -> Outcome {
+    install_hook();
+    GRADING.with(|g| g.set(true));
+    LAST_PANIC.with(|p| *p.borrow_mut() = None);
+    let result = panic::catch_unwind(AssertUnwindSafe(check));
+    GRADING.with(|g| g.set(false));
+    match result {
+        Ok(Ok(())) => Outcome::Passed,
+        Ok(Err(reason)) => Outcome::Failed(reason),
+        Err(payload) => {
+            let message = panic_message(payload.as_ref());
+            let at = LAST_PANIC.with(|p| p.borrow_mut().take());
+            if message.contains(TODO_MESSAGE) {
+                Outcome::NotStarted(at)
+            } else {
+                let at = at.map(|a| format!(" at {a}")).unwrap_or_default();
+                Outcome::Failed(format!("your code panicked{at}: {message}"))
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn todo_is_not_started_and_other_panics_fail() {
+        let o = grade(|| todo!());
+        assert!(o.is_not_started(), "{o}");
+        let o = grade(|| panic!("index out of bounds"));
+        assert!(
+            matches!(&o, Outcome::Failed(r) if r.contains("index out of bounds")),
+            "{o}"
+        );
+        assert_eq!(grade(|| Ok(())), Outcome::Passed);
+        assert_eq!(grade(|| Err("x".into())), Outcome::Failed("x".into()));
+    }
+}
