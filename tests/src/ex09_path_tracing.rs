@@ -3,12 +3,12 @@
 //! against the renderer's BRDF-sampling path tracer, tile by tile.
 
 use raytracer::film::Splat;
-use raytracer::integrator::{DirectStrategy, Integrator, PathTracer, camera_ray};
+use raytracer::integrator::{Integrator, camera_ray};
 use raytracer::math::{Color, Ray, UVec2};
 use raytracer::sampling::Sampler;
 use raytracer::scene::Scene;
 
-use crate::compare::{Comparison, compare};
+use crate::compare::{EX09_CORNELL, compare};
 use crate::ex08_naive_recursive::{camera_estimates, small_scene};
 
 /// The signature of exercise 9.
@@ -90,20 +90,5 @@ pub fn check(f: PathFn) -> Result<(), String> {
         max_depth: Some(5),
         rr_depth: 3,
     };
-    let reference = PathTracer {
-        max_depth: Some(5),
-        rr_depth: 3,
-        strategy: DirectStrategy::BrdfOnly,
-    };
-    compare(
-        &Comparison {
-            name: "ex09_cornell",
-            scene: "cornell",
-            size: 32,
-            tile: 8,
-            spp: 64,
-        },
-        &student,
-        &reference,
-    )
+    compare(&EX09_CORNELL, &student)
 }

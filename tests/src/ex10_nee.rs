@@ -3,12 +3,12 @@
 //! light-sampling path tracer at depth 2, tile by tile.
 
 use raytracer::film::Splat;
-use raytracer::integrator::{DirectStrategy, Integrator, PathTracer, camera_ray};
+use raytracer::integrator::{Integrator, camera_ray};
 use raytracer::math::{Color, UVec2, Vec3A};
 use raytracer::sampling::Sampler;
 use raytracer::scene::{Interaction, Scene};
 
-use crate::compare::{Comparison, compare};
+use crate::compare::{EX10_CORNELL_DIRECT, compare};
 use crate::stats::{close, fmt3};
 
 /// The signatures of exercise 10.
@@ -90,21 +90,6 @@ pub fn check(to_solid_angle: AreaPdfFn, direct: DirectFn) -> Result<(), String> 
             fmt3(n)
         ));
     }
-    let reference = PathTracer {
-        max_depth: Some(2),
-        rr_depth: 1000,
-        strategy: DirectStrategy::LightOnly,
-    };
-    compare(
-        &Comparison {
-            name: "ex10_cornell_direct",
-            scene: "cornell",
-            size: 32,
-            tile: 8,
-            spp: 32,
-        },
-        &DirectIntegrator(direct),
-        &reference,
-    )
-    .map_err(|e| format!("direct light by your estimate_direct: {e}"))
+    compare(&EX10_CORNELL_DIRECT, &DirectIntegrator(direct))
+        .map_err(|e| format!("direct light by your estimate_direct: {e}"))
 }

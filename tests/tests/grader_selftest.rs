@@ -360,48 +360,23 @@ fn stubs_are_pristine() {
     }
 }
 
-/// The image comparison of a correct integrator with itself under 12 other
-/// seed pairs: at the family level α = 1e-4 none may fail (a failure here
+/// The image comparison of correct integrators against the stored references
+/// under 12 other seeds: at the family level α = 1e-4 none may fail (a failure here
 /// would mean the z-test's tails are heavier than assumed). Also the light
 /// sampling reference of exercise 10.
 #[test]
 fn image_comparison_does_not_fail_correct_integrators() {
-    use grading::compare::{Comparison, compare_with_seeds};
-    use raytracer::integrator::{DirectStrategy, PathTracer};
-    let brdf = PathTracer {
-        max_depth: Some(5),
-        rr_depth: 3,
-        strategy: DirectStrategy::BrdfOnly,
-    };
-    let nee = PathTracer {
-        max_depth: Some(2),
-        rr_depth: 1000,
-        strategy: DirectStrategy::LightOnly,
-    };
+    use grading::compare::{EX09_CORNELL, EX10_CORNELL_DIRECT, compare_with_seed};
     let variant = ex09_path_tracing::PathIntegrator {
         f: correct::path_luminance_rr,
         max_depth: Some(5),
         rr_depth: 3,
     };
+    let direct = ex10_nee::DirectIntegrator(correct::estimate_direct);
     for seed in 0..12u64 {
-        let c = Comparison {
-            name: "selftest_path",
-            scene: "cornell",
-            size: 32,
-            tile: 8,
-            spp: 64,
-        };
-        let r = compare_with_seeds(&c, &variant, &brdf, (100 + seed, 200 + seed));
+        let r = compare_with_seed(&EX09_CORNELL, &variant, 100 + seed);
         assert!(r.is_ok(), "seed {seed}: {r:?}");
-        let c = Comparison {
-            name: "selftest_direct",
-            scene: "cornell",
-            size: 32,
-            tile: 8,
-            spp: 32,
-        };
-        let direct = ex10_nee::DirectIntegrator(correct::estimate_direct);
-        let r = compare_with_seeds(&c, &direct, &nee, (300 + seed, 400 + seed));
+        let r = compare_with_seed(&EX10_CORNELL_DIRECT, &direct, 300 + seed);
         assert!(r.is_ok(), "seed {seed}: {r:?}");
     }
 }

@@ -13,6 +13,7 @@ mod exercises_cmd;
 mod options;
 mod page;
 mod plot;
+mod references_cmd;
 mod render_cmd;
 mod scenes_cmd;
 mod stereo_cmd;
@@ -66,6 +67,8 @@ enum Command {
     Hint(exercises_cmd::HintArgs),
     /// The reference solution of exercise N, once yours passes.
     Solution(exercises_cmd::SolutionArgs),
+    /// For instructors: regenerate the grader's reference images (mean and variance EXR).
+    References(references_cmd::ReferencesArgs),
 }
 
 fn main() -> ExitCode {
@@ -90,6 +93,7 @@ fn main() -> ExitCode {
         Command::Exercises(args) => exercises_cmd::run_exercises(&args),
         Command::Hint(args) => exercises_cmd::run_hint(&args),
         Command::Solution(args) => exercises_cmd::run_solution(&args),
+        Command::References(args) => references_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
