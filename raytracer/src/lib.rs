@@ -13,7 +13,7 @@
 //! | [`brdf`] | Lambert, normalized Phong, mirror, glass | BRDFs |
 //! | [`light`] | area, point and environment lights | `L_e` of the rendering equation |
 //! | [`scene`] | the scene, its TOML format and the built-in scenes | Cornell box |
-//! | [`integrator`] | direct lighting, ambient occlusion, … | global illumination |
+//! | [`integrator`] | direct light, AO, naive recursion, path, light and bidirectional tracing | rendering equation, GI algorithms |
 //! | [`film`] | accumulation, splatting, PNG and EXR output | — |
 //! | [`render`] | the parallel, deterministic loop over pixels | — |
 //! | [`stereo`] | stereo rig, anaglyphs, side-by-side, crosstalk, light fields | stereoscopy |
@@ -22,7 +22,7 @@
 //! estimates the radiance of each pixel sample, and the render loop gathers
 //! the estimates on a film:
 //!
-//! ```ignore
+//! ```no_run
 //! use raytracer::{integrator::Direct, render, scene::Scene};
 //! let scene = Scene::builtin("cornell").unwrap();
 //! let result = render::render(&scene, &Direct::default(), &scene.settings.render_options());
