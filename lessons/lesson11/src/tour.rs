@@ -37,12 +37,34 @@ pub struct TourArgs {
     /// Output folder.
     #[arg(long, default_value = "out/lesson11")]
     pub out: PathBuf,
-    /// Worker threads (default: all cores).
+    /// Worker threads (default: all cores). The pictures do not depend on it.
     #[arg(long)]
     pub threads: Option<usize>,
     /// How much time to spend: tiny, quick (the default) or full.
     #[arg(long, value_enum, default_value = "quick")]
     pub quality: Quality,
+    /// Short for --quality quick.
+    #[arg(long, conflicts_with_all = ["quality", "full"])]
+    pub quick: bool,
+    /// Short for --quality full.
+    #[arg(long, conflicts_with = "quality")]
+    pub full: bool,
+    /// Render the chapter's pictures of the Cornell box with this scene instead
+    /// (a built-in name or a scene file).
+    #[arg(long)]
+    pub scene: Option<String>,
+    /// Image width of every picture (default: each scene's).
+    #[arg(long)]
+    pub width: Option<u32>,
+    /// Image height of every picture (default: each scene's).
+    #[arg(long)]
+    pub height: Option<u32>,
+    /// Samples per pixel of every picture (default: chosen per picture by --quality).
+    #[arg(long)]
+    pub spp: Option<u32>,
+    /// Seed of the random numbers (default: each scene's).
+    #[arg(long)]
+    pub seed: Option<u64>,
 }
 
 impl Default for TourArgs {
@@ -51,6 +73,13 @@ impl Default for TourArgs {
             out: PathBuf::from("out/lesson11"),
             threads: None,
             quality: Quality::Quick,
+            quick: false,
+            full: false,
+            scene: None,
+            width: None,
+            height: None,
+            spp: None,
+            seed: None,
         }
     }
 }
@@ -60,13 +89,22 @@ pub struct Tour {
     pub out: PathBuf,
     pub quality: Quality,
     pub threads: Option<usize>,
+    /// The command line's overrides of scene, size, samples and seed.
+    pub overrides: TourArgs,
 }
 
 impl Tour {
     /// A built-in scene at the tour's quality, with `spp` samples at `quick`.
+    /// The Cornell box may be replaced by `--scene`, and the size, samples and
+    /// seed of every picture by `--width`, `--height`, `--spp` and `--seed`.
     pub fn scene(&self, name: &str, spp: u32) -> Result<(Scene, RenderOptions)> {
+        let o = &self.overrides;
+        let name = match &o.scene {
+            Some(other) if name == "cornell" => other.as_str(),
+            _ => name,
+        };
         let mut scene = load_scene(name)?;
-        let spp = match self.quality {
+        let mut spp = match self.quality {
             Quality::Tiny => {
                 let (w, h) = (scene.settings.width, scene.settings.height);
                 scene.set_resolution(32, (32 * h / w).max(1));
@@ -75,9 +113,25 @@ impl Tour {
             Quality::Quick => spp,
             Quality::Full => spp * 8,
         };
+        if o.width.is_some() || o.height.is_some() {
+            let (w, h) = (
+                o.width.unwrap_or(scene.settings.width),
+                o.height.unwrap_or(scene.settings.height),
+            );
+            if w == 0 || h == 0 {
+                anyhow::bail!("the image size must be positive, got {w}×{h}");
+            }
+            scene.set_resolution(w, h);
+        }
+        if let Some(s) = o.spp {
+            if s == 0 {
+                anyhow::bail!("--spp must be at least 1");
+            }
+            spp = s;
+        }
         let options = RenderOptions {
             spp,
-            seed: scene.settings.seed,
+            seed: o.seed.unwrap_or(scene.settings.seed),
             threads: self.threads,
             label: name.to_string(),
             ..RenderOptions::default()
@@ -144,10 +198,21 @@ pub fn run(args: &TourArgs) -> Result<()> {
 /// tour's `index.html`, or `<chapter>.html` beside it for a single chapter.
 pub fn run_chapters(args: &TourArgs, only: Option<&str>) -> Result<()> {
     create_dir(&args.out)?;
+    if args.threads == Some(0) {
+        anyhow::bail!("--threads must be at least 1 (or left out to use every core)");
+    }
+    let quality = if args.quick {
+        Quality::Quick
+    } else if args.full {
+        Quality::Full
+    } else {
+        args.quality
+    };
     let tour = Tour {
         out: args.out.clone(),
-        quality: args.quality,
+        quality,
         threads: args.threads,
+        overrides: args.clone(),
     };
     let start = Instant::now();
     let mut page = Page::new("Lecture 11: stereoscopy and global illumination, rendered");
@@ -186,6 +251,11 @@ fn stereo(tour: &Tour) -> Result<Section> {
         Quality::Quick => args.scene.spp = Some(32),
         Quality::Full => args.scene.spp = Some(256),
     }
+    let o = &tour.overrides;
+    args.scene.width = o.width.or(args.scene.width);
+    args.scene.height = o.height.or(args.scene.height);
+    args.scene.spp = o.spp.or(args.scene.spp);
+    args.scene.seed = o.seed;
     crate::stereo_cmd::render_section(&args, &tour.out)
 }
 
