@@ -12,6 +12,7 @@ mod options;
 mod page;
 mod render_cmd;
 mod scenes_cmd;
+mod slides_cmd;
 mod stereo_cmd;
 mod tour;
 
@@ -43,6 +44,8 @@ enum Command {
     Stereo(stereo_cmd::StereoArgs),
     /// Measure the renderer: rays per second on big meshes, samples per second on the Cornell box.
     Bench(bench::BenchArgs),
+    /// Build the lecture's slides (Bulgarian and English) as HTML with the rendered pictures.
+    Slides(slides_cmd::SlidesArgs),
 }
 
 fn main() -> ExitCode {
@@ -57,6 +60,7 @@ fn main() -> ExitCode {
         Command::Scenes(args) => scenes_cmd::run(&args),
         Command::Bench(args) => bench::run(&args),
         Command::Stereo(args) => stereo_cmd::run(&args),
+        Command::Slides(args) => slides_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
