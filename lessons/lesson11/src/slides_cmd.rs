@@ -68,7 +68,12 @@ impl SlidesArgs {
 
 /// The project's slides folder as seen from the source tree.
 pub fn project_slides_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../slides")
+    let lesson = Path::new(env!("CARGO_MANIFEST_DIR"));
+    lesson
+        .parent()
+        .and_then(Path::parent)
+        .unwrap_or(lesson)
+        .join("slides")
 }
 
 /// The folder given, or ./slides, or the project's.
@@ -118,7 +123,12 @@ pub fn check_parallel(decks: &[Deck]) -> Result<()> {
         return Ok(());
     };
     for other in rest {
-        let names = |d: &Deck| d.chapters.iter().map(|c| c.name.clone()).collect::<Vec<_>>();
+        let names = |d: &Deck| {
+            d.chapters
+                .iter()
+                .map(|c| c.name.clone())
+                .collect::<Vec<_>>()
+        };
         if names(first) != names(other) {
             bail!(
                 "the {} and {} slides have different chapter files: {:?} and {:?}",
@@ -140,7 +150,8 @@ pub fn check_parallel(decks: &[Deck]) -> Result<()> {
                 );
             }
             for (x, y) in a.slides.iter().zip(&b.slides) {
-                let paths = |s: &deck::Slide| s.images.iter().map(|i| i.path.clone()).collect::<Vec<_>>();
+                let paths =
+                    |s: &deck::Slide| s.images.iter().map(|i| i.path.clone()).collect::<Vec<_>>();
                 if paths(x) != paths(y) || x.commands != y.commands || x.exercises != y.exercises {
                     bail!(
                         "{} and {} differ in their pictures, commands or exercises: \
@@ -301,8 +312,12 @@ mod tests {
             for c in &deck.chapters {
                 for s in &c.slides {
                     for i in &s.images {
-                        assert!(i.path.as_str() <= c.name.as_str() || i.path.starts_with(&c.name[..2]),
-                            "{}: {} belongs to a later chapter", s.origin, i.path);
+                        assert!(
+                            i.path.as_str() <= c.name.as_str() || i.path.starts_with(&c.name[..2]),
+                            "{}: {} belongs to a later chapter",
+                            s.origin,
+                            i.path
+                        );
                     }
                 }
             }
@@ -314,7 +329,11 @@ mod tests {
         for deck in decks() {
             for s in deck.slides() {
                 if !s.images.is_empty() {
-                    assert!(!s.commands.is_empty(), "{}: a picture without its command", s.origin);
+                    assert!(
+                        !s.commands.is_empty(),
+                        "{}: a picture without its command",
+                        s.origin
+                    );
                 }
                 for cmd in &s.commands {
                     let words: Vec<&str> = cmd.split_whitespace().collect();
@@ -346,6 +365,7 @@ mod tests {
         decks[0].chapters[1].slides[0].images.clear();
         let err = check_parallel(&decks).unwrap_err().to_string();
         assert!(err.contains("02-gi-effects.md"), "{err}");
+        let mut decks = super::tests::decks();
         decks[0].chapters[2].slides.pop();
         let err = check_parallel(&decks).unwrap_err().to_string();
         assert!(err.contains("03-brdf"), "{err}");

@@ -111,7 +111,9 @@ pub fn parse_chapter(text: &str, file: &str) -> Result<Vec<Slide>> {
 fn parse_slide(lines: &[(usize, &str)], file: &str) -> Result<Slide> {
     let mut lines = lines.iter().skip_while(|(_, l)| l.trim().is_empty());
     let Some(&(first, title_line)) = lines.next() else {
-        bail!("{file}: an empty slide (two `---` lines with nothing between them, or one at the end)");
+        bail!(
+            "{file}: an empty slide (two `---` lines with nothing between them, or one at the end)"
+        );
     };
     let origin = format!("{file}:{first}");
     let Some(title) = title_line.strip_prefix("# ") else {
@@ -137,7 +139,9 @@ fn parse_slide(lines: &[(usize, &str)], file: &str) -> Result<Slide> {
         } else if let Some(ex) = t.strip_prefix("> exercise:") {
             for part in ex.split(',') {
                 let num: u32 = part.trim().parse().map_err(|_| {
-                    anyhow::anyhow!("{at}: `> exercise:` takes numbers like `9` or `3, 4`, found `{ex}`")
+                    anyhow::anyhow!(
+                        "{at}: `> exercise:` takes numbers like `9` or `3, 4`, found `{ex}`"
+                    )
                 })?;
                 if !(1..=13).contains(&num) {
                     bail!("{at}: there are exercises 1 to 13, found {num}");
@@ -170,7 +174,9 @@ fn parse_images(line: &str, at: &str) -> Result<Vec<Image>> {
         let end = tail.find(')').ok_or_else(bad)?;
         let path = tail[..end].trim();
         if path.is_empty() || path.starts_with('/') || path.contains("..") || path.contains(':') {
-            bail!("{at}: image paths are relative to out/lesson11, like `05-path/cornell-mis.png`; found `{path}`");
+            bail!(
+                "{at}: image paths are relative to out/lesson11, like `05-path/cornell-mis.png`; found `{path}`"
+            );
         }
         images.push(Image {
             caption: caption.trim().to_string(),
@@ -198,8 +204,14 @@ mod tests {
         assert_eq!(
             slides[1].images,
             vec![
-                Image { caption: "A".into(), path: "05-path/a.png".into() },
-                Image { caption: "B".into(), path: "05-path/b.png".into() },
+                Image {
+                    caption: "A".into(),
+                    path: "05-path/a.png".into()
+                },
+                Image {
+                    caption: "B".into(),
+                    path: "05-path/b.png".into()
+                },
             ]
         );
         assert_eq!(slides[1].commands, vec!["lesson11 render --scene cornell"]);

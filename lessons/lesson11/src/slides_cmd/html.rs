@@ -107,7 +107,10 @@ pub fn markdown_to_html(md: &str) -> Result<String> {
     let mut html = String::new();
     push_html(
         &mut html,
-        Parser::new_ext(&text, Options::ENABLE_TABLES | Options::ENABLE_STRIKETHROUGH),
+        Parser::new_ext(
+            &text,
+            Options::ENABLE_TABLES | Options::ENABLE_STRIKETHROUGH,
+        ),
     );
     for (i, ml) in formulas.iter().enumerate().rev() {
         let p = placeholder(i);
@@ -170,7 +173,10 @@ fn slide_html(
         };
         let _ = write!(out, "<span class=\"ex\">{label} {}</span>", list.join(", "));
     }
-    let _ = writeln!(out, "<span class=\"num\">{id} / {total}</span></footer>\n</section>");
+    let _ = writeln!(
+        out,
+        "<span class=\"num\">{id} / {total}</span></footer>\n</section>"
+    );
     Ok(())
 }
 
@@ -249,7 +255,11 @@ pub fn deck_html(deck: &Deck, img_prefix: &str) -> Result<String> {
     let mut id = 1;
     for chapter in &deck.chapters {
         if let Some(first) = chapter.slides.first() {
-            let _ = write!(h, "<li><a href=\"#s{id}\">{}</a></li>", escape(&first.title));
+            let _ = write!(
+                h,
+                "<li><a href=\"#s{id}\">{}</a></li>",
+                escape(&first.title)
+            );
         }
         id += chapter.slides.len();
     }
@@ -259,10 +269,8 @@ pub fn deck_html(deck: &Deck, img_prefix: &str) -> Result<String> {
         words.keys,
         total - 1
     );
-    let mut id = 1;
-    for slide in deck.slides() {
+    for (id, slide) in (1..).zip(deck.slides()) {
         slide_html(&mut h, slide, id, total - 1, &words, img_prefix)?;
-        id += 1;
     }
     let _ = write!(h, "<script>{SCRIPT}</script>\n</body></html>\n");
     Ok(h)
@@ -281,7 +289,10 @@ mod tests {
         assert!(html.contains("<li>the BRDF <math>"), "{html}");
         assert!(html.contains("<code>$HOME</code>"), "{html}");
         assert!(html.contains("<math display=\"block\">"), "{html}");
-        assert!(!html.contains("<p><math display"), "display math is not wrapped: {html}");
+        assert!(
+            !html.contains("<p><math display"),
+            "display math is not wrapped: {html}"
+        );
         assert!(!html.contains("MATHQZ"), "{html}");
         // Underscores inside formulas must not turn into emphasis.
         assert!(!html.contains("<em>"), "{html}");
@@ -289,9 +300,24 @@ mod tests {
 
     #[test]
     fn unclosed_and_unknown_formulas_are_errors() {
-        assert!(markdown_to_html("a $x").unwrap_err().to_string().contains("not closed"));
-        assert!(markdown_to_html("$$x").unwrap_err().to_string().contains("$$"));
-        assert!(markdown_to_html("$\\nope$").unwrap_err().to_string().contains("\\nope"));
+        assert!(
+            markdown_to_html("a $x")
+                .unwrap_err()
+                .to_string()
+                .contains("not closed")
+        );
+        assert!(
+            markdown_to_html("$$x")
+                .unwrap_err()
+                .to_string()
+                .contains("$$")
+        );
+        assert!(
+            markdown_to_html("$\\nope$")
+                .unwrap_err()
+                .to_string()
+                .contains("\\nope")
+        );
         assert!(markdown_to_html("costs \\$5").is_ok());
     }
 }

@@ -62,7 +62,7 @@ enum End {
     Right(String),
     Amp,
     NewRow,
-    EndEnv(String),
+    Env(String),
 }
 
 impl End {
@@ -73,7 +73,7 @@ impl End {
             End::Right(_) => "`\\right`".into(),
             End::Amp => "`&` outside an environment".into(),
             End::NewRow => "`\\\\` outside an environment".into(),
-            End::EndEnv(e) => format!("`\\end{{{e}}}`"),
+            End::Env(e) => format!("`\\end{{{e}}}`"),
         }
     }
 }
@@ -364,7 +364,10 @@ impl Parser {
     fn argument(&mut self, style: Style) -> Result<String> {
         self.skip_ws();
         match self.peek() {
-            None => bail!("a command or script lacks its argument in `{}`", self.context()),
+            None => bail!(
+                "a command or script lacks its argument in `{}`",
+                self.context()
+            ),
             Some('{') => {
                 self.pos += 1;
                 let (items, end) = self.list(style)?;
@@ -445,7 +448,7 @@ impl Parser {
                         }
                         "end" => {
                             let env = self.raw_group()?;
-                            return Ok((items, End::EndEnv(env)));
+                            return Ok((items, End::Env(env)));
                         }
                         _ => {
                             self.pos = save;
@@ -456,7 +459,15 @@ impl Parser {
                     }
                 }
                 _ => {
-                    if let Some(a) = self.atom(style, false)? {
+                    if let Some(mut a) = self.atom(style, false)? {
+                        // A minus after an operator or at the start is a sign, not a
+                        // subtraction: `(−ω_i · n)` must not get binary spacing.
+                        let after_operator = items.last().is_none_or(|p| {
+                            p.base.starts_with("<mo") && p.sub.is_none() && p.sup.is_none()
+                        });
+                        if a.base == "<mo>−</mo>" && after_operator {
+                            a.base = "<mo form=\"prefix\">−</mo>".into();
+                        }
                         items.push(a);
                     }
                 }
@@ -513,10 +524,7 @@ impl Parser {
             '0'..='9' => {
                 let start = self.pos - 1;
                 if !single {
-                    while self
-                        .peek()
-                        .is_some_and(|d| d.is_ascii_digit() || d == '.')
-                    {
+                    while self.peek().is_some_and(|d| d.is_ascii_digit() || d == '.') {
                         self.pos += 1;
                     }
                     // A trailing full stop ends the sentence, not the number.
@@ -642,7 +650,10 @@ impl Parser {
             "text" | "textrm" | "mbox" => {
                 let raw = self.raw_group()?;
                 // Token elements trim their spaces: keep them as no-break spaces.
-                Atom::new(format!("<mtext>{}</mtext>", escape(&raw.replace(' ', "\u{a0}"))))
+                Atom::new(format!(
+                    "<mtext>{}</mtext>",
+                    escape(&raw.replace(' ', "\u{a0}"))
+                ))
             }
             "left" => {
                 let open = self.delimiter()?;
@@ -696,7 +707,7 @@ impl Parser {
                     let _ = write!(table, "<mtr>{row}</mtr>");
                     row.clear();
                 }
-                End::EndEnv(e) if e == env => {
+                End::Env(e) if e == env => {
                     if !row.is_empty() {
                         let _ = write!(table, "<mtr>{row}</mtr>");
                     }
@@ -732,9 +743,19 @@ mod tests {
         );
         assert!(m.starts_with("<math display=\"block\">"), "{m}");
         assert!(m.contains("<msub><mi>L</mi><mi>o</mi></msub>"), "{m}");
-        assert!(m.contains("<msub><mo largeop=\"true\">∫</mo><mi mathvariant=\"normal\">Ω</mi></msub>"), "{m}");
+        assert!(
+            m.contains("<msub><mo largeop=\"true\">∫</mo><mi mathvariant=\"normal\">Ω</mi></msub>"),
+            "{m}"
+        );
         assert!(m.contains("𝐱") && m.contains("𝐧"), "bold x and n: {m}");
-        assert!(m.contains("<mo>·</mo>") && m.contains("<mo>−</mo>"), "{m}");
+        assert!(m.contains("<mo>·</mo>"), "{m}");
+        // The sign of −ω_i after the parenthesis is a prefix operator.
+        assert!(
+            m.contains("<mo stretchy=\"false\">(</mo><mo form=\"prefix\">−</mo>"),
+            "{m}"
+        );
+        let d = ok(r"a - b");
+        assert!(d.contains("<mi>a</mi><mo>−</mo><mi>b</mi>"), "{d}");
         assert_eq!(m.matches("<mi>ω</mi>").count(), 7, "{m}");
     }
 
@@ -743,9 +764,15 @@ mod tests {
         let tex = r"\frac{1}{N} \sum_{k=1}^{N} \frac{f_r}{p(\omega_k)}";
         let block = ok(tex);
         assert!(block.contains("<munderover><mo"), "{block}");
-        assert!(block.contains("<mfrac><mn>1</mn><mi>N</mi></mfrac>"), "{block}");
+        assert!(
+            block.contains("<mfrac><mn>1</mn><mi>N</mi></mfrac>"),
+            "{block}"
+        );
         let inline = to_mathml(tex, false).unwrap();
-        assert!(inline.starts_with("<math>") && inline.contains("<msubsup><mo"), "{inline}");
+        assert!(
+            inline.starts_with("<math>") && inline.contains("<msubsup><mo"),
+            "{inline}"
+        );
     }
 
     #[test]
@@ -765,11 +792,17 @@ mod tests {
     #[test]
     fn primes_hats_norms_and_scripts_attach_to_their_base() {
         let m = ok(r"L_i(\mathbf{x}, \omega_i) = L_o(\mathbf{x}', -\omega_i)");
-        assert!(m.contains("<msup><mi mathvariant=\"normal\">𝐱</mi><mo>′</mo></msup>"), "{m}");
+        assert!(
+            m.contains("<msup><mi mathvariant=\"normal\">𝐱</mi><mo>′</mo></msup>"),
+            "{m}"
+        );
         let h = ok(r"E[\hat{I}_N] = I");
         assert!(h.contains("<msub><mover accent=\"true\">"), "{h}");
         let n = ok(r"\lVert \mathbf{x} - \mathbf{y} \rVert^2");
-        assert!(n.contains("<msup><mo stretchy=\"false\">‖</mo><mn>2</mn></msup>"), "{n}");
+        assert!(
+            n.contains("<msup><mo stretchy=\"false\">‖</mo><mn>2</mn></msup>"),
+            "{n}"
+        );
         let s = ok(r"p_{s,t}^2");
         assert!(s.contains("<msubsup><mi>p</mi><mrow>"), "{s}");
         let c = ok(r"\int_{\mathcal{P}} f(\bar{x}) \, d\mu(\bar{x})");
@@ -779,8 +812,14 @@ mod tests {
     #[test]
     fn numbers_and_markup_characters_are_escaped() {
         let m = ok(r"a < b, 1.5 > 0.25.");
-        assert!(m.contains("<mo>&lt;</mo>") && m.contains("<mo>&gt;</mo>"), "{m}");
-        assert!(m.contains("<mn>1.5</mn>") && m.contains("<mn>0.25</mn><mo>.</mo>"), "{m}");
+        assert!(
+            m.contains("<mo>&lt;</mo>") && m.contains("<mo>&gt;</mo>"),
+            "{m}"
+        );
+        assert!(
+            m.contains("<mn>1.5</mn>") && m.contains("<mn>0.25</mn><mo>.</mo>"),
+            "{m}"
+        );
     }
 
     #[test]
