@@ -197,7 +197,7 @@ figure img{display:block;margin:auto;height:54vh;max-width:100%;object-fit:conta
 .figures.many figure{flex:0 1 45%}
 .figures.many figure img{height:28vh}
 figcaption{font-size:1.9vh;color:#555;margin-top:0.5vh}
-math{font-size:1.1em}
+math{font-size:1.1em;font-family:"STIX Two Math","Cambria Math","Latin Modern Math","Libertinus Math","Noto Sans Math",math}
 math[display=block]{margin:1.6vh 0;font-size:1.2em}
 code{font-family:ui-monospace,"DejaVu Sans Mono",Consolas,monospace;font-size:0.92em;background:#eef0f4;padding:0 0.25em;border-radius:3px}
 footer{display:flex;flex-wrap:wrap;gap:0.5vh 2.5vw;font-size:1.9vh;color:#555;border-top:1px solid #ccd;padding-top:1vh;margin-top:1.5vh}
