@@ -11,6 +11,7 @@
 mod deck;
 mod html;
 mod math;
+mod symbols;
 
 use std::path::{Path, PathBuf};
 

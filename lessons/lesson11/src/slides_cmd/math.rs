@@ -16,6 +16,8 @@ use std::fmt::Write as _;
 
 use anyhow::{Result, bail};
 
+use super::symbols::{capital_greek, function, greek, operator};
+
 /// Converts one formula (without its `$` delimiters) to a `<math>` element.
 pub fn to_mathml(tex: &str, display: bool) -> Result<String> {
     let mut p = Parser {
@@ -195,101 +197,6 @@ fn mi(text: &str, style: Style) -> String {
         }
         _ => format!("<mi>{}</mi>", escape(text)),
     }
-}
-
-fn greek(name: &str) -> Option<char> {
-    Some(match name {
-        "alpha" => 'α',
-        "beta" => 'β',
-        "gamma" => 'γ',
-        "delta" => 'δ',
-        "epsilon" => 'ϵ',
-        "varepsilon" => 'ε',
-        "zeta" => 'ζ',
-        "eta" => 'η',
-        "theta" => 'θ',
-        "vartheta" => 'ϑ',
-        "iota" => 'ι',
-        "kappa" => 'κ',
-        "lambda" => 'λ',
-        "mu" => 'μ',
-        "nu" => 'ν',
-        "xi" => 'ξ',
-        "pi" => 'π',
-        "rho" => 'ρ',
-        "sigma" => 'σ',
-        "tau" => 'τ',
-        "upsilon" => 'υ',
-        "phi" => 'ϕ',
-        "varphi" => 'φ',
-        "chi" => 'χ',
-        "psi" => 'ψ',
-        "omega" => 'ω',
-        _ => return None,
-    })
-}
-
-fn capital_greek(name: &str) -> Option<char> {
-    Some(match name {
-        "Gamma" => 'Γ',
-        "Delta" => 'Δ',
-        "Theta" => 'Θ',
-        "Lambda" => 'Λ',
-        "Xi" => 'Ξ',
-        "Pi" => 'Π',
-        "Sigma" => 'Σ',
-        "Phi" => 'Φ',
-        "Psi" => 'Ψ',
-        "Omega" => 'Ω',
-        _ => return None,
-    })
-}
-
-fn operator(name: &str) -> Option<&'static str> {
-    Some(match name {
-        "cdot" => "·",
-        "cdots" => "⋯",
-        "ldots" | "dots" => "…",
-        "times" => "×",
-        "pm" => "±",
-        "mp" => "∓",
-        "leq" | "le" => "≤",
-        "geq" | "ge" => "≥",
-        "neq" | "ne" => "≠",
-        "approx" => "≈",
-        "sim" => "∼",
-        "propto" => "∝",
-        "equiv" => "≡",
-        "to" | "rightarrow" => "→",
-        "leftarrow" | "gets" => "←",
-        "Rightarrow" => "⇒",
-        "in" => "∈",
-        "subset" => "⊂",
-        "angle" => "∠",
-        "nabla" => "∇",
-        "mid" => "∣",
-        "{" | "lbrace" => "{",
-        "}" | "rbrace" => "}",
-        "langle" => "⟨",
-        "rangle" => "⟩",
-        "lVert" | "rVert" | "|" | "Vert" => "‖",
-        _ => return None,
-    })
-}
-
-fn function(name: &str) -> Option<(&'static str, bool)> {
-    Some(match name {
-        "cos" => ("cos", false),
-        "sin" => ("sin", false),
-        "tan" => ("tan", false),
-        "exp" => ("exp", false),
-        "log" => ("log", false),
-        "ln" => ("ln", false),
-        "max" => ("max", true),
-        "min" => ("min", true),
-        "lim" => ("lim", true),
-        _ => return None,
-    })
 }
 
 struct Parser {
