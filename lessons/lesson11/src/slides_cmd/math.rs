@@ -323,18 +323,22 @@ impl Parser {
                             self.context()
                         );
                     };
-                    let script = if c == '\'' {
-                        mo("′")
-                    } else {
-                        self.argument(style)?
-                    };
+                    if c == '\'' {
+                        // A prime is a glyph of its own beside the base (x′): as a
+                        // superscript it would be raised twice.
+                        let base = std::mem::take(&mut last.base);
+                        last.base = format!(
+                            "<mrow>{base}<mo form=\"postfix\" lspace=\"0\" rspace=\"0\">′</mo></mrow>"
+                        );
+                        continue;
+                    }
+                    let script = self.argument(style)?;
                     let slot = if c == '_' {
                         &mut last.sub
                     } else {
                         &mut last.sup
                     };
                     match slot {
-                        Some(old) if c == '\'' => old.push_str(&script),
                         Some(_) => bail!(
                             "a double `{c}` at character {} of `{}`: group with braces",
                             self.pos,
@@ -700,7 +704,7 @@ mod tests {
     fn primes_hats_norms_and_scripts_attach_to_their_base() {
         let m = ok(r"L_i(\mathbf{x}, \omega_i) = L_o(\mathbf{x}', -\omega_i)");
         assert!(
-            m.contains("<msup><mi mathvariant=\"normal\">𝐱</mi><mo>′</mo></msup>"),
+            m.contains("<mrow><mi mathvariant=\"normal\">𝐱</mi><mo form=\"postfix\" lspace=\"0\" rspace=\"0\">′</mo></mrow>"),
             "{m}"
         );
         let h = ok(r"E[\hat{I}_N] = I");
