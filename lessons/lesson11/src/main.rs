@@ -16,6 +16,7 @@ mod plot;
 mod references_cmd;
 mod render_cmd;
 mod scenes_cmd;
+mod slides_cmd;
 mod stereo_cmd;
 mod tour;
 
@@ -69,6 +70,8 @@ enum Command {
     Solution(exercises_cmd::SolutionArgs),
     /// For instructors: regenerate the grader's reference images (mean and variance EXR).
     References(references_cmd::ReferencesArgs),
+    /// Build the lecture's slides (Bulgarian and English) as HTML with the rendered pictures.
+    Slides(slides_cmd::SlidesArgs),
 }
 
 fn main() -> ExitCode {
@@ -94,6 +97,7 @@ fn main() -> ExitCode {
         Command::Hint(args) => exercises_cmd::run_hint(&args),
         Command::Solution(args) => exercises_cmd::run_solution(&args),
         Command::References(args) => references_cmd::run(&args),
+        Command::Slides(args) => slides_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
