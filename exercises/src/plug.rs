@@ -5,9 +5,9 @@
 use raytracer::camera::{Camera, CameraParams};
 use raytracer::film::{Image, Splat};
 use raytracer::integrator::{Integrator, camera_ray};
-use raytracer::math::{Color, UVec2};
+use raytracer::math::{Color, Ray, UVec2};
 use raytracer::sampling::Sampler;
-use raytracer::scene::Scene;
+use raytracer::scene::{Interaction, Scene};
 
 use crate::{ex01_stereo_eyes, ex02_anaglyph, ex08_naive_recursive, ex09_path_tracing, ex10_nee};
 
@@ -72,11 +72,31 @@ impl Integrator for StudentNaive {
     }
 }
 
-/// The path tracer with the student's `path_radiance` (exercise 9).
+/// The signature of exercise 9's `path_radiance`.
+pub type PathRadianceFn = fn(&Scene, Ray, Option<u32>, u32, &mut Sampler) -> Color;
+
+/// The signature of exercise 10's `estimate_direct`.
+pub type EstimateDirectFn = fn(&Scene, &Interaction, &mut Sampler) -> Color;
+
+/// The path tracer around a `path_radiance` (exercise 9): the student's with
+/// [`StudentPathTracer::new`], or any other with the same signature (the
+/// grader's fixtures).
 #[derive(Clone, Copy, Debug)]
 pub struct StudentPathTracer {
+    pub path_radiance: PathRadianceFn,
     pub max_depth: Option<u32>,
     pub rr_depth: u32,
+}
+
+impl StudentPathTracer {
+    /// The student's path tracer.
+    pub fn new(max_depth: Option<u32>, rr_depth: u32) -> Self {
+        StudentPathTracer {
+            path_radiance: ex09_path_tracing::path_radiance,
+            max_depth,
+            rr_depth,
+        }
+    }
 }
 
 impl Integrator for StudentPathTracer {
@@ -92,16 +112,22 @@ impl Integrator for StudentPathTracer {
         _: &mut Vec<Splat>,
     ) -> Color {
         let ray = camera_ray(scene, pixel, sampler);
-        ex09_path_tracing::path_radiance(scene, ray, self.max_depth, self.rr_depth, sampler)
+        (self.path_radiance)(scene, ray, self.max_depth, self.rr_depth, sampler)
     }
 }
 
-/// Direct light by next event estimation only, with the student's
-/// `estimate_direct` (exercise 10): emitters seen directly plus one light
-/// sample at the first hit (the renderer's `PathTracer` with `max_depth = 2`
-/// and `DirectStrategy::LightOnly` computes the same).
-#[derive(Clone, Copy, Debug, Default)]
-pub struct StudentDirect;
+/// Direct light by next event estimation only, around an `estimate_direct`
+/// (exercise 10; the student's by `Default`): emitters seen directly plus one
+/// light sample at the first hit (the renderer's `PathTracer` with
+/// `max_depth = 2` and `DirectStrategy::LightOnly` computes the same).
+#[derive(Clone, Copy, Debug)]
+pub struct StudentDirect(pub EstimateDirectFn);
+
+impl Default for StudentDirect {
+    fn default() -> Self {
+        StudentDirect(ex10_nee::estimate_direct)
+    }
+}
 
 impl Integrator for StudentDirect {
     fn name(&self) -> &'static str {
@@ -119,6 +145,6 @@ impl Integrator for StudentDirect {
         let Some(it) = scene.intersect(&ray) else {
             return scene.escaped_radiance(ray.d);
         };
-        scene.emitted(&it) + ex10_nee::estimate_direct(scene, &it, sampler)
+        scene.emitted(&it) + (self.0)(scene, &it, sampler)
     }
 }

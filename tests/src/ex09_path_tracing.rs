@@ -2,44 +2,17 @@
 //! roulette (z-tests with the student's own variance), then the Cornell box
 //! against the renderer's BRDF-sampling path tracer, tile by tile.
 
-use raytracer::film::Splat;
-use raytracer::integrator::{Integrator, camera_ray};
-use raytracer::math::{Color, Ray, UVec2};
-use raytracer::sampling::Sampler;
-use raytracer::scene::Scene;
+use exercises::plug::StudentPathTracer;
+use raytracer::math::Color;
 
 use crate::compare::{EX09_CORNELL, compare};
 use crate::ex08_naive_recursive::{camera_estimates, small_scene};
 
 /// The signature of exercise 9.
-pub type PathFn = fn(&Scene, Ray, Option<u32>, u32, &mut Sampler) -> Color;
+pub use exercises::plug::PathRadianceFn as PathFn;
 
 /// Paths per furnace case.
 pub const ESTIMATES: u64 = 4000;
-
-/// An integrator around a path function (for the image comparison).
-pub struct PathIntegrator {
-    pub f: PathFn,
-    pub max_depth: Option<u32>,
-    pub rr_depth: u32,
-}
-
-impl Integrator for PathIntegrator {
-    fn name(&self) -> &'static str {
-        "graded-path"
-    }
-
-    fn sample(
-        &self,
-        scene: &Scene,
-        pixel: UVec2,
-        sampler: &mut Sampler,
-        _: &mut Vec<Splat>,
-    ) -> Color {
-        let ray = camera_ray(scene, pixel, sampler);
-        (self.f)(scene, ray, self.max_depth, self.rr_depth, sampler)
-    }
-}
 
 pub fn check(f: PathFn) -> Result<(), String> {
     let furnace = small_scene("furnace")?;
@@ -85,8 +58,8 @@ pub fn check(f: PathFn) -> Result<(), String> {
         |_| Some("a path that escapes adds β · scene.escaped_radiance(ray.d)".to_string()),
     )?;
     // The Cornell box against the renderer (BRDF sampling only, as the exercise).
-    let student = PathIntegrator {
-        f,
+    let student = StudentPathTracer {
+        path_radiance: f,
         max_depth: Some(5),
         rr_depth: 3,
     };

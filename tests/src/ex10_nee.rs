@@ -2,46 +2,20 @@
 //! exactly, then direct light in the Cornell box against the renderer's
 //! light-sampling path tracer at depth 2, tile by tile.
 
-use raytracer::film::Splat;
-use raytracer::integrator::{Integrator, camera_ray};
-use raytracer::math::{Color, UVec2, Vec3A};
-use raytracer::sampling::Sampler;
-use raytracer::scene::{Interaction, Scene};
+use exercises::plug::StudentDirect;
+use raytracer::math::Vec3A;
 
 use crate::compare::{EX10_CORNELL_DIRECT, compare};
 use crate::stats::{close, fmt3};
 
 /// The signatures of exercise 10.
 pub type AreaPdfFn = fn(f32, Vec3A, Vec3A, Vec3A) -> f32;
-pub type DirectFn = fn(&Scene, &Interaction, &mut Sampler) -> Color;
+pub use exercises::plug::EstimateDirectFn as DirectFn;
 
 /// The grader's conversion.
 pub fn expected_pdf(pdf_a: f32, x: Vec3A, y: Vec3A, n_y: Vec3A) -> f32 {
     let d = x - y;
     pdf_a * d.length_squared() / (n_y.dot(d.normalize())).abs()
-}
-
-/// Emitters seen directly plus one light sample by the student's function.
-pub struct DirectIntegrator(pub DirectFn);
-
-impl Integrator for DirectIntegrator {
-    fn name(&self) -> &'static str {
-        "graded-direct"
-    }
-
-    fn sample(
-        &self,
-        scene: &Scene,
-        pixel: UVec2,
-        sampler: &mut Sampler,
-        _: &mut Vec<Splat>,
-    ) -> Color {
-        let ray = camera_ray(scene, pixel, sampler);
-        let Some(it) = scene.intersect(&ray) else {
-            return scene.escaped_radiance(ray.d);
-        };
-        scene.emitted(&it) + (self.0)(scene, &it, sampler)
-    }
 }
 
 pub fn check(to_solid_angle: AreaPdfFn, direct: DirectFn) -> Result<(), String> {
@@ -90,6 +64,6 @@ pub fn check(to_solid_angle: AreaPdfFn, direct: DirectFn) -> Result<(), String> 
             fmt3(n)
         ));
     }
-    compare(&EX10_CORNELL_DIRECT, &DirectIntegrator(direct))
+    compare(&EX10_CORNELL_DIRECT, &StudentDirect(direct))
         .map_err(|e| format!("direct light by your estimate_direct: {e}"))
 }

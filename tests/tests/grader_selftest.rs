@@ -367,12 +367,12 @@ fn stubs_are_pristine() {
 #[test]
 fn image_comparison_does_not_fail_correct_integrators() {
     use grading::compare::{EX09_CORNELL, EX10_CORNELL_DIRECT, compare_with_seed};
-    let variant = ex09_path_tracing::PathIntegrator {
-        f: correct::path_luminance_rr,
+    let variant = exercises::plug::StudentPathTracer {
+        path_radiance: correct::path_luminance_rr,
         max_depth: Some(5),
         rr_depth: 3,
     };
-    let direct = ex10_nee::DirectIntegrator(correct::estimate_direct);
+    let direct = exercises::plug::StudentDirect(correct::estimate_direct);
     for seed in 0..12u64 {
         let r = compare_with_seed(&EX09_CORNELL, &variant, 100 + seed);
         assert!(r.is_ok(), "seed {seed}: {r:?}");

@@ -167,10 +167,7 @@ pub fn render_student(args: &RenderArgs) -> Result<()> {
     let (exercise, student): (&str, Box<dyn Integrator>) = match args.integrator {
         IntegratorKind::Path | IntegratorKind::PathBrdf => (
             "ex09_path_tracing",
-            Box::new(StudentPathTracer {
-                max_depth,
-                rr_depth,
-            }),
+            Box::new(StudentPathTracer::new(max_depth, rr_depth)),
         ),
         IntegratorKind::Naive => (
             "ex08_naive_recursive",
@@ -179,7 +176,9 @@ pub fn render_student(args: &RenderArgs) -> Result<()> {
                 branching: ia.branching.first().copied().unwrap_or(8),
             }),
         ),
-        IntegratorKind::Direct | IntegratorKind::PathNee => ("ex10_nee", Box::new(StudentDirect)),
+        IntegratorKind::Direct | IntegratorKind::PathNee => {
+            ("ex10_nee", Box::new(StudentDirect::default()))
+        }
         IntegratorKind::Ao | IntegratorKind::Light | IntegratorKind::Bdpt => bail!(
             "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
              (light tracing and bidirectional tracing are graded piece by piece: exercises 12 and 13)"
