@@ -201,12 +201,13 @@ pub fn build(args: &SlidesArgs) -> Result<Vec<PathBuf>> {
                 absent[0]
             );
         }
-        crate::tour::run(&TourArgs {
-            out: args.out.clone(),
-            threads: args.threads,
+        let mut tour = TourArgs {
             quality: args.quality(),
             ..TourArgs::default()
-        })?;
+        };
+        tour.common.out = args.out.clone();
+        tour.common.threads = args.threads;
+        crate::tour::run(&tour)?;
         let still = missing(&args.out);
         if !still.is_empty() {
             bail!(

@@ -15,7 +15,7 @@ use raytracer::integrator::{
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
 
-use crate::options::{create_dir, load_scene};
+use crate::options::{SceneArgs, create_dir, load_scene};
 use crate::page::{Figure, Page, Section, Table};
 use crate::render_cmd::render_to_files;
 
@@ -32,14 +32,12 @@ pub enum Quality {
 }
 
 /// Walk the lecture in order and write its pictures and out/lesson11/index.html.
+/// `--scene` replaces the chapters' Cornell box; `--width`, `--height`,
+/// `--spp` and `--seed` apply to every picture.
 #[derive(Args, Debug, Clone)]
 pub struct TourArgs {
-    /// Output folder.
-    #[arg(long, default_value = "out/lesson11")]
-    pub out: PathBuf,
-    /// Worker threads (default: all cores). The pictures do not depend on it.
-    #[arg(long)]
-    pub threads: Option<usize>,
+    #[command(flatten)]
+    pub common: SceneArgs,
     /// How much time to spend: tiny, quick (the default) or full.
     #[arg(long, value_enum, default_value = "quick")]
     pub quality: Quality,
@@ -49,37 +47,18 @@ pub struct TourArgs {
     /// Short for --quality full.
     #[arg(long, conflicts_with = "quality")]
     pub full: bool,
-    /// Render the chapter's pictures of the Cornell box with this scene instead
-    /// (a built-in name or a scene file).
-    #[arg(long)]
-    pub scene: Option<String>,
-    /// Image width of every picture (default: each scene's).
-    #[arg(long)]
-    pub width: Option<u32>,
-    /// Image height of every picture (default: each scene's).
-    #[arg(long)]
-    pub height: Option<u32>,
-    /// Samples per pixel of every picture (default: chosen per picture by --quality).
-    #[arg(long)]
-    pub spp: Option<u32>,
-    /// Seed of the random numbers (default: each scene's).
-    #[arg(long)]
-    pub seed: Option<u64>,
 }
 
 impl Default for TourArgs {
     fn default() -> Self {
         TourArgs {
-            out: PathBuf::from("out/lesson11"),
-            threads: None,
+            common: SceneArgs {
+                out: PathBuf::from("out/lesson11"),
+                ..SceneArgs::default()
+            },
             quality: Quality::Quick,
             quick: false,
             full: false,
-            scene: None,
-            width: None,
-            height: None,
-            spp: None,
-            seed: None,
         }
     }
 }
@@ -90,7 +69,7 @@ pub struct Tour {
     pub quality: Quality,
     pub threads: Option<usize>,
     /// The command line's overrides of scene, size, samples and seed.
-    pub overrides: TourArgs,
+    pub overrides: SceneArgs,
 }
 
 impl Tour {
@@ -197,8 +176,9 @@ pub fn run(args: &TourArgs) -> Result<()> {
 /// Runs every chapter (`only = None`) or one, and writes the page: the
 /// tour's `index.html`, or `<chapter>.html` beside it for a single chapter.
 pub fn run_chapters(args: &TourArgs, only: Option<&str>) -> Result<()> {
-    create_dir(&args.out)?;
-    if args.threads == Some(0) {
+    let out = &args.common.out;
+    create_dir(out)?;
+    if args.common.threads == Some(0) {
         anyhow::bail!("--threads must be at least 1 (or left out to use every core)");
     }
     let quality = if args.quick {
@@ -209,10 +189,10 @@ pub fn run_chapters(args: &TourArgs, only: Option<&str>) -> Result<()> {
         args.quality
     };
     let tour = Tour {
-        out: args.out.clone(),
+        out: out.clone(),
         quality,
-        threads: args.threads,
-        overrides: args.clone(),
+        threads: args.common.threads,
+        overrides: args.common.clone(),
     };
     let start = Instant::now();
     let mut page = Page::new("Lecture 11: stereoscopy and global illumination, rendered");
@@ -226,7 +206,7 @@ pub fn run_chapters(args: &TourArgs, only: Option<&str>) -> Result<()> {
         println!("== {name}: {:.1} s", t.elapsed().as_secs_f64());
     }
     let file = only.map_or_else(|| "index.html".to_string(), |name| format!("{name}.html"));
-    let index = page.write(&args.out, &file)?;
+    let index = page.write(out, &file)?;
     println!(
         "\nThat took {:.1} s. Open {} to see the pictures.",
         start.elapsed().as_secs_f64(),
