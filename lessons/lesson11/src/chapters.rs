@@ -10,9 +10,8 @@ use raytracer::metrics::rmse;
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
 
-use crate::page::{Figure, Section, Table};
+use crate::page::{Figure, Picture, Section, Table};
 use crate::plot::{Chart, Scale, Series};
-use crate::render_cmd::Picture;
 use crate::tour::{Quality, Tour};
 
 /// Chapter 6: light tracing, and the caustic only light paths can find.

@@ -1,6 +1,6 @@
 //! `lesson11 render`: one scene, one integrator, PNG and EXR out.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use anyhow::{Context, Result};
 use clap::{Args, ValueEnum};
@@ -12,6 +12,7 @@ use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
 
 use crate::options::{SceneArgs, create_dir};
+use crate::page::Picture;
 
 /// The integrators this build offers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -138,14 +139,6 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         args.exposure,
     )?;
     Ok(())
-}
-
-/// What a rendered picture left on disk.
-pub struct Picture {
-    pub png: PathBuf,
-    pub exr: PathBuf,
-    pub seconds: f64,
-    pub spp: u32,
 }
 
 /// Renders and writes `dir/stem.png`, `dir/stem.exr` and `dir/stem-variance.exr`,

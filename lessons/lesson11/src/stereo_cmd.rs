@@ -188,18 +188,7 @@ fn save(
         .write_exr(&exr)
         .with_context(|| format!("cannot write {}", exr.display()))?;
     println!("  wrote {} and .exr", png.display());
-    Ok(Figure {
-        src: relative(&png, page_root),
-        exr: Some(relative(&exr, page_root)),
-        caption,
-    })
-}
-
-fn relative(p: &Path, root: &Path) -> String {
-    p.strip_prefix(root)
-        .unwrap_or(p)
-        .to_string_lossy()
-        .replace('\\', "/")
+    Ok(Figure::image(page_root, &png, &exr, caption))
 }
 
 /// What to look for in each composite.

@@ -1,86 +1,16 @@
 //! The page that shows the lesson's pictures: one self-contained HTML file,
 //! no scripts and no network.
 
+mod figure;
+mod table;
+
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
 
-use crate::render_cmd::Picture;
-
-/// A picture with its caption, linked relative to the page.
-pub struct Figure {
-    pub src: String,
-    /// The linear image to measure, if the figure is a render.
-    pub exr: Option<String>,
-    pub caption: String,
-}
-
-impl Figure {
-    pub fn new(root: &Path, picture: &Picture, caption: &str) -> Self {
-        let rel = |p: &Path| {
-            p.strip_prefix(root)
-                .unwrap_or(p)
-                .to_string_lossy()
-                .replace('\\', "/")
-        };
-        Figure {
-            src: rel(&picture.png),
-            exr: Some(rel(&picture.exr)),
-            caption: format!("{caption} ({} spp, {:.1} s)", picture.spp, picture.seconds),
-        }
-    }
-}
-
-impl Figure {
-    /// A plot (an SVG file) with its caption.
-    pub fn plot(root: &Path, svg: &Path, caption: &str) -> Self {
-        let rel = svg
-            .strip_prefix(root)
-            .unwrap_or(svg)
-            .to_string_lossy()
-            .replace('\\', "/");
-        Figure {
-            src: rel,
-            exr: None,
-            caption: caption.into(),
-        }
-    }
-}
-
-/// A table of numbers, shown on the page and written as CSV.
-pub struct Table {
-    pub caption: String,
-    pub header: Vec<String>,
-    pub rows: Vec<Vec<String>>,
-}
-
-impl Table {
-    pub fn new(caption: &str, header: &[&str]) -> Self {
-        Table {
-            caption: caption.into(),
-            header: header.iter().map(|h| h.to_string()).collect(),
-            rows: Vec::new(),
-        }
-    }
-
-    /// Writes the table as CSV (fields with commas or quotes are quoted).
-    pub fn write_csv(&self, path: &Path) -> Result<()> {
-        let field = |f: &str| {
-            if f.contains([',', '"', '\n']) {
-                format!("\"{}\"", f.replace('"', "\"\""))
-            } else {
-                f.to_string()
-            }
-        };
-        let mut text = String::new();
-        for row in std::iter::once(&self.header).chain(&self.rows) {
-            text.push_str(&row.iter().map(|f| field(f)).collect::<Vec<_>>().join(","));
-            text.push('\n');
-        }
-        std::fs::write(path, text).with_context(|| format!("cannot write {}", path.display()))
-    }
-}
+pub use figure::{Figure, Picture};
+pub use table::Table;
 
 /// One chapter of the page.
 pub struct Section {
