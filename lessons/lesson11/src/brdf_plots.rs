@@ -7,7 +7,7 @@ use raytracer::math::{Color, Vec2, Vec3A};
 use raytracer::sampling::Sampler;
 
 use crate::page::{Figure, Table};
-use crate::plot::{Chart, Scale, Series, polar_svg};
+use crate::plots::{Chart, Scale, Series, polar_svg};
 use crate::tour::{Chapter, Quality, Tour};
 
 fn phong(n: f32) -> Brdf {

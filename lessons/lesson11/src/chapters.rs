@@ -11,7 +11,7 @@ use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
 
 use crate::page::{Figure, Picture, Section, Table};
-use crate::plot::{Chart, Scale, Series};
+use crate::plots::{Chart, Scale, Series};
 use crate::tour::{Quality, Tour};
 
 /// Chapter 6: light tracing, and the caustic only light paths can find.

@@ -12,7 +12,7 @@ mod chapters;
 mod exercises_cmd;
 mod options;
 mod page;
-mod plot;
+mod plots;
 mod references_cmd;
 mod render_cmd;
 mod scenes_cmd;

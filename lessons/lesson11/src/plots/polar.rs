@@ -1,0 +1,76 @@
+//! Polar plots of BRDF lobes in the plane of incidence.
+
+use std::fmt::Write as _;
+
+use super::series::{COLORS, Series, escape};
+
+/// A polar plot of BRDF lobes in the plane of incidence: each series gives
+/// `(θ, r)` pairs, θ measured from the normal (positive towards the mirror
+/// side), drawn as `r (sin θ, cos θ)` above a horizontal surface line.
+pub fn polar_svg(title: &str, series: &[Series], incoming_deg: f64) -> String {
+    let (cx, cy, radius) = (200.0, 250.0, 180.0);
+    let r_max = series
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.1))
+        .fold(1e-12f64, f64::max);
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"560\" height=\"300\" viewBox=\"0 0 560 300\" font-family=\"sans-serif\" \
+         font-size=\"12\"><rect width=\"100%\" height=\"100%\" fill=\"white\"/>"
+    );
+    let _ = writeln!(
+        s,
+        "<text x=\"280\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">{}</text>",
+        escape(title)
+    );
+    for k in 1..=4 {
+        let r = radius * k as f64 / 4.0;
+        let _ = writeln!(
+            s,
+            "<path d=\"M {} {cy} A {r} {r} 0 0 1 {} {cy}\" fill=\"none\" stroke=\"#ddd\"/>",
+            cx - r,
+            cx + r
+        );
+    }
+    let _ = writeln!(
+        s,
+        "<line x1=\"{}\" y1=\"{cy}\" x2=\"{}\" y2=\"{cy}\" stroke=\"black\" stroke-width=\"2\"/>",
+        cx - radius - 10.0,
+        cx + radius + 10.0
+    );
+    let a = incoming_deg.to_radians();
+    let _ = writeln!(
+        s,
+        "<line x1=\"{:.1}\" y1=\"{:.1}\" x2=\"{cx}\" y2=\"{cy}\" stroke=\"#888\" stroke-dasharray=\"6 4\"/><text x=\"{:.1}\" y=\"{:.1}\" fill=\"#888\">incoming</text>",
+        cx - radius * a.sin(),
+        cy - radius * a.cos(),
+        cx - radius * a.sin() - 20.0,
+        cy - radius * a.cos() - 6.0
+    );
+    for (i, series) in series.iter().enumerate() {
+        let color = COLORS[i % COLORS.len()];
+        let pts: Vec<String> = series
+            .points
+            .iter()
+            .map(|&(theta, r)| {
+                let rr = radius * r / r_max;
+                format!("{:.1},{:.1}", cx + rr * theta.sin(), cy - rr * theta.cos())
+            })
+            .collect();
+        let _ = writeln!(
+            s,
+            "<polyline fill=\"none\" stroke=\"{color}\" stroke-width=\"2\" points=\"{}\"/>",
+            pts.join(" ")
+        );
+        let ly = 50.0 + 18.0 * i as f64;
+        let _ = writeln!(
+            s,
+            "<line x1=\"410\" y1=\"{ly}\" x2=\"428\" y2=\"{ly}\" stroke=\"{color}\" stroke-width=\"3\"/><text x=\"434\" y=\"{}\">{}</text>",
+            ly + 4.0,
+            escape(&series.label)
+        );
+    }
+    s.push_str("</svg>\n");
+    s
+}
