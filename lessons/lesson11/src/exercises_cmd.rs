@@ -17,7 +17,9 @@ use raytracer::integrator::Integrator;
 use raytracer::metrics::{z_test, z_threshold};
 use raytracer::render::render;
 
-use crate::render_cmd::{IntegratorKind, RenderArgs, render_to_files};
+use crate::integrators::IntegratorKind;
+use crate::render_cmd::RenderArgs;
+use crate::render_files::render_to_files;
 
 /// Show which exercises pass, fail or are not started, and the next one.
 #[derive(Args, Debug, Default)]

@@ -10,9 +10,10 @@ use raytracer::film::Image;
 use raytracer::render::RenderOptions;
 use raytracer::stereo::{Anaglyph, Composite, Eye, LightField, StereoRig, crosstalk};
 
+use crate::integrators::{IntegratorArgs, IntegratorKind};
 use crate::options::{SceneArgs, create_dir};
 use crate::page::{Figure, Page, Section};
-use crate::render_cmd::{IntegratorArgs, IntegratorKind, render_to_files};
+use crate::render_files::render_to_files;
 
 /// Render a stereo pair from two eyes offset along the camera's rightDir by
 /// ±separation/2, and write the eye images, anaglyphs (red–cyan in colour,

@@ -17,7 +17,7 @@ use raytracer::scene::Scene;
 
 use crate::options::{SceneArgs, create_dir, load_scene};
 use crate::page::{Figure, Page, Section, Table};
-use crate::render_cmd::render_to_files;
+use crate::render_files::render_to_files;
 
 /// How long the tour may take.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, Default)]

@@ -1,0 +1,68 @@
+//! Rendering to files: PNG to look at, EXR to measure, and the variance of
+//! each pixel's mean, written where a chapter or a command asks.
+
+use std::path::Path;
+
+use anyhow::{Context, Result};
+use raytracer::integrator::Integrator;
+use raytracer::render::{RenderOptions, render};
+use raytracer::scene::Scene;
+
+use crate::options::create_dir;
+use crate::page::Picture;
+
+/// Renders and writes `dir/stem.png`, `dir/stem.exr` and `dir/stem-variance.exr`,
+/// then prints one summary line. An interrupted render (Ctrl-C) still writes
+/// what it computed.
+pub fn render_to_files(
+    scene: &Scene,
+    integrator: &dyn Integrator,
+    options: &RenderOptions,
+    dir: &Path,
+    stem: &str,
+    exposure: f32,
+) -> Result<Picture> {
+    create_dir(dir)?;
+    let result = render(scene, integrator, options);
+    let png = dir.join(format!("{stem}.png"));
+    let exr = dir.join(format!("{stem}.exr"));
+    let variance = dir.join(format!("{stem}-variance.exr"));
+    result
+        .film
+        .write_png(&png, exposure)
+        .with_context(|| format!("cannot write {}", png.display()))?;
+    result
+        .film
+        .write_exr(&exr)
+        .with_context(|| format!("cannot write {}", exr.display()))?;
+    result
+        .film
+        .variance_image()
+        .write_exr(&variance)
+        .with_context(|| format!("cannot write {}", variance.display()))?;
+    let stats = &result.stats;
+    let seconds = stats.elapsed.as_secs_f64();
+    println!(
+        "  wrote {} and .exr ({} spp, {seconds:.2} s)",
+        png.display(),
+        options.spp
+    );
+    if stats.nonfinite > 0 {
+        println!(
+            "  note: {} samples were NaN, infinite or negative and counted as zero",
+            stats.nonfinite
+        );
+    }
+    if stats.interrupted {
+        anyhow::bail!(
+            "interrupted by Ctrl-C; what was rendered so far is in {}",
+            exr.display()
+        );
+    }
+    Ok(Picture {
+        png,
+        exr,
+        seconds,
+        spp: options.spp,
+    })
+}
