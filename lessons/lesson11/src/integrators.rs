@@ -32,12 +32,7 @@ pub enum IntegratorKind {
 
 impl IntegratorKind {
     pub fn build(self, args: &IntegratorArgs, scene: &Scene) -> Box<dyn Integrator> {
-        let max_depth = match args.max_depth {
-            Some(d) if d < 0 => None,
-            Some(d) => Some(d as u32),
-            None => scene.settings.max_depth,
-        };
-        let rr_depth = args.rr_depth.unwrap_or(scene.settings.rr_depth);
+        let (max_depth, rr_depth) = args.depths(scene);
         let path = |strategy| {
             Box::new(PathTracer {
                 max_depth,
@@ -94,4 +89,17 @@ pub struct IntegratorArgs {
     /// Length of the occlusion rays of `--integrator ao`, in scene units (metres).
     #[arg(long, default_value_t = 1.0)]
     pub ao_distance: f32,
+}
+
+impl IntegratorArgs {
+    /// The maximum depth (`None`: unlimited) and the depth where Russian
+    /// roulette may start, the scene's where the command line gives none.
+    pub fn depths(&self, scene: &Scene) -> (Option<u32>, u32) {
+        let max_depth = match self.max_depth {
+            Some(d) if d < 0 => None,
+            Some(d) => Some(d as u32),
+            None => scene.settings.max_depth,
+        };
+        (max_depth, self.rr_depth.unwrap_or(scene.settings.rr_depth))
+    }
 }

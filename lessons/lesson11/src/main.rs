@@ -5,20 +5,14 @@
 //! also a subcommand with its own options; `--help` at every level says which
 //! part of the lecture it shows.
 
-mod bench;
-mod bench_rays;
 mod brdf_plots;
 mod chapters;
-mod exercises_cmd;
+mod commands;
 mod integrators;
 mod options;
 mod page;
 mod plots;
-mod references_cmd;
-mod render_cmd;
 mod render_files;
-mod scenes_cmd;
-mod slides_cmd;
 mod stereo_cmd;
 mod tour;
 
@@ -58,22 +52,8 @@ enum Command {
     Bdpt(tour::TourArgs),
     /// 8 · Every algorithm at equal time: RMSE against a reference, convergence plots.
     Compare(tour::TourArgs),
-    /// Render one scene with one integrator to PNG (to look at) and EXR (to measure).
-    Render(render_cmd::RenderArgs),
-    /// List the built-in scenes, or write one out as a file to edit.
-    Scenes(scenes_cmd::ScenesArgs),
-    /// Measure the renderer: rays per second on big meshes, samples per second on the Cornell box.
-    Bench(bench::BenchArgs),
-    /// The exercises: which pass, fail or are not started, and the next one.
-    Exercises(exercises_cmd::ExercisesArgs),
-    /// The next hint of exercise N.
-    Hint(exercises_cmd::HintArgs),
-    /// The reference solution of exercise N, once yours passes.
-    Solution(exercises_cmd::SolutionArgs),
-    /// For instructors: regenerate the grader's reference images (mean and variance EXR).
-    References(references_cmd::ReferencesArgs),
-    /// Build the lecture's slides (Bulgarian and English) as HTML with the rendered pictures.
-    Slides(slides_cmd::SlidesArgs),
+    #[command(flatten)]
+    Other(commands::Command),
 }
 
 fn main() -> ExitCode {
@@ -91,15 +71,8 @@ fn main() -> ExitCode {
         Command::Light(args) => tour::run_chapters(&args, Some("light")),
         Command::Bdpt(args) => tour::run_chapters(&args, Some("bdpt")),
         Command::Compare(args) => tour::run_chapters(&args, Some("compare")),
-        Command::Render(args) => render_cmd::run(&args),
-        Command::Scenes(args) => scenes_cmd::run(&args),
-        Command::Bench(args) => bench::run(&args),
         Command::Stereo(args) => stereo_cmd::run(&args),
-        Command::Exercises(args) => exercises_cmd::run_exercises(&args),
-        Command::Hint(args) => exercises_cmd::run_hint(&args),
-        Command::Solution(args) => exercises_cmd::run_solution(&args),
-        Command::References(args) => references_cmd::run(&args),
-        Command::Slides(args) => slides_cmd::run(&args),
+        Command::Other(command) => command.run(),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

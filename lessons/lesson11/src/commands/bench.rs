@@ -1,5 +1,7 @@
 //! `lesson11 bench`: the figures behind every speed claim of the README.
 
+mod rays;
+
 use anyhow::Result;
 use clap::Args;
 use raytracer::integrator::{Direct, DirectStrategy, Integrator, PathTracer};
@@ -37,7 +39,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         args.threads.clone()
     };
     if !args.no_rays {
-        crate::bench_rays::run(&threads)?;
+        rays::run(&threads)?;
     }
     let scene = Scene::builtin("cornell")?;
     let direct = Direct;

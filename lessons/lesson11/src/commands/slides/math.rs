@@ -584,7 +584,7 @@ impl Parser {
                 Atom::new(self.environment(&env, style)?)
             }
             _ => bail!(
-                "unknown command `\\{n}` in `{}` (the slides' LaTeX subset: see slides_cmd/math.rs)",
+                "unknown command `\\{n}` in `{}` (the slides' LaTeX subset: see commands/slides/math.rs)",
                 self.context()
             ),
         };

@@ -28,7 +28,7 @@ pub fn run(args: &ScenesArgs) -> Result<()> {
             println!("\nWrite one out to edit: lesson11 scenes --write cornell --to my-scenes");
         }
         Some(name) => {
-            super::options::create_dir(&args.to)?;
+            crate::options::create_dir(&args.to)?;
             let path = write_builtin(name, &args.to)
                 .with_context(|| format!("cannot write scene `{name}`"))?;
             println!("wrote {}", path.display());

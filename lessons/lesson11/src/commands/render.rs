@@ -1,5 +1,7 @@
 //! `lesson11 render`: one scene, one integrator, PNG and EXR out.
 
+mod student;
+
 use anyhow::Result;
 use clap::Args;
 
@@ -28,7 +30,12 @@ pub struct RenderArgs {
 
 pub fn run(args: &RenderArgs) -> Result<()> {
     if args.student {
-        return crate::exercises_cmd::render_student(args);
+        return student::run(
+            &args.scene,
+            args.integrator,
+            &args.integrator_args,
+            args.exposure,
+        );
     }
     let (scene, options) = args.scene.load("cornell")?;
     if args.integrator_args.branching.contains(&0) {

@@ -1,5 +1,6 @@
-//! `lesson11 exercises`, `lesson11 hint N`, `lesson11 solution N` and
-//! `lesson11 render --student`: the student's loop, rustlings-like.
+//! `lesson11 exercises`, `lesson11 hint N` and `lesson11 solution N`: the
+//! student's loop, rustlings-like (`lesson11 render --student` renders with
+//! their code).
 //!
 //! Progress comes from the same grader as `cargo test` (the `grading`
 //! crate); hints are shown one at a time (how many were shown is kept in
@@ -11,15 +12,7 @@ use std::path::PathBuf;
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use exercises::Exercise;
-use exercises::plug::{StudentDirect, StudentNaive, StudentPathTracer};
 use grading::Outcome;
-use raytracer::integrator::Integrator;
-use raytracer::metrics::{z_test, z_threshold};
-use raytracer::render::render;
-
-use crate::integrators::IntegratorKind;
-use crate::render_cmd::RenderArgs;
-use crate::render_files::render_to_files;
 
 /// Show which exercises pass, fail or are not started, and the next one.
 #[derive(Args, Debug, Default)]
@@ -153,90 +146,4 @@ pub fn run_solution(args: &SolutionArgs) -> Result<()> {
             args.number
         ),
     }
-}
-
-/// `lesson11 render --student`: the student's integrator (exercise 8, 9 or
-/// 10, by `--integrator`) beside the reference, and their tile z-test.
-pub fn render_student(args: &RenderArgs) -> Result<()> {
-    let (scene, options) = args.scene.load("cornell")?;
-    let ia = &args.integrator_args;
-    let max_depth = match ia.max_depth {
-        Some(d) if d < 0 => None,
-        Some(d) => Some(d as u32),
-        None => scene.settings.max_depth,
-    };
-    let rr_depth = ia.rr_depth.unwrap_or(scene.settings.rr_depth);
-    let (exercise, student): (&str, Box<dyn Integrator>) = match args.integrator {
-        IntegratorKind::Path | IntegratorKind::PathBrdf => (
-            "ex09_path_tracing",
-            Box::new(StudentPathTracer::new(max_depth, rr_depth)),
-        ),
-        IntegratorKind::Naive => (
-            "ex08_naive_recursive",
-            Box::new(StudentNaive {
-                max_depth: max_depth.unwrap_or(4),
-                branching: ia.branching.first().copied().unwrap_or(8),
-            }),
-        ),
-        IntegratorKind::Direct | IntegratorKind::PathNee => {
-            ("ex10_nee", Box::new(StudentDirect::default()))
-        }
-        IntegratorKind::Ao | IntegratorKind::Light | IntegratorKind::Bdpt => bail!(
-            "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
-             (light tracing and bidirectional tracing are graded piece by piece: exercises 12 and 13)"
-        ),
-    };
-    let outcome = grading::grade_exercise(exercise).unwrap_or(Outcome::NotStarted(None));
-    if outcome.is_not_started() {
-        bail!(
-            "{exercise} is not started yet ({outcome}): fill in exercises/src/{exercise}.rs first"
-        );
-    }
-    println!("{exercise}: {outcome}");
-    let reference = args.integrator.build(ia, &scene);
-    let out = &args.scene.out;
-    let stem = format!("{}-{}", scene.name, reference.name());
-    render_to_files(
-        &scene,
-        student.as_ref(),
-        &options,
-        out,
-        &format!("{stem}-student"),
-        args.exposure,
-    )?;
-    render_to_files(
-        &scene,
-        reference.as_ref(),
-        &options,
-        out,
-        &format!("{stem}-reference"),
-        args.exposure,
-    )?;
-    // Compare them tile by tile (16-pixel tiles), as the grader does.
-    // Different seeds: the two integrators may use the same random numbers in
-    // the same order, and correlated pictures would hide a difference.
-    let mut quiet = options.clone();
-    quiet.progress = false;
-    let a = render(&scene, student.as_ref(), &quiet);
-    quiet.seed = quiet.seed.wrapping_add(1);
-    let b = render(&scene, reference.as_ref(), &quiet);
-    let z = z_test(
-        &a.film.image(),
-        &a.film.variance_image(),
-        &b.film.image(),
-        &b.film.variance_image(),
-        16,
-    );
-    let threshold = z_threshold(z.z.len() * 3, 1e-4);
-    println!(
-        "  tile z-test: largest |z| = {:.1} in tile {} (threshold {threshold:.1}): {}",
-        z.max_abs_z,
-        z.worst_tile,
-        if (z.max_abs_z as f64) <= threshold {
-            "consistent with the reference"
-        } else {
-            "DIFFERS from the reference"
-        }
-    );
-    Ok(())
 }
