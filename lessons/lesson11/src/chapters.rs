@@ -2,16 +2,12 @@
 //! tracing, and the comparison of all the algorithms at equal time.
 
 use anyhow::Result;
-use raytracer::film::Image;
-use raytracer::integrator::{
-    Bdpt, DirectStrategy, Integrator, LightTracer, NaiveRecursive, PathTracer, render_strategies,
-};
-use raytracer::metrics::rmse;
-use raytracer::render::{RenderOptions, render};
-use raytracer::scene::Scene;
+use raytracer::integrator::{Bdpt, LightTracer, PathTracer, render_strategies};
 
-use crate::page::{Figure, Picture, Section, Table};
+use crate::equal_time::equal_time;
+use crate::page::{Figure, Section, Table};
 use crate::plots::{Chart, Scale, Series};
+use crate::render_files::write_image;
 use crate::tour::{Quality, Tour};
 
 /// Chapter 6: light tracing, and the caustic only light paths can find.
@@ -119,139 +115,6 @@ pub fn bdpt(tour: &Tour) -> Result<Section> {
         c.section.figures.len() - 1
     );
     Ok(c.section)
-}
-
-fn write_image(dir: &std::path::Path, stem: &str, image: &Image, spp: u32) -> Result<Picture> {
-    let png = dir.join(format!("{stem}.png"));
-    let exr = dir.join(format!("{stem}.exr"));
-    image.write_png(&png, 0.0)?;
-    image.write_exr(&exr)?;
-    Ok(Picture {
-        png,
-        exr,
-        seconds: 0.0,
-        spp,
-    })
-}
-
-/// Renders `integrator` for about `seconds`: renders of 1, 2, 4, … samples
-/// per pixel measure the time per sample and trace the error against
-/// `reference` as it falls (the convergence curve), then one render takes the
-/// samples that fit the budget.
-fn render_for(
-    scene: &Scene,
-    integrator: &dyn Integrator,
-    base: &RenderOptions,
-    seconds: f64,
-    reference: &Image,
-) -> (Image, u32, f64, Vec<(f64, f64)>) {
-    let run = |spp: u32| {
-        let options = RenderOptions {
-            spp,
-            progress: false,
-            ..base.clone()
-        };
-        let result = render(scene, integrator, &options);
-        (
-            result.film.image(),
-            result.stats.elapsed.as_secs_f64().max(1e-6),
-        )
-    };
-    let mut curve = Vec::new();
-    let mut spp = 1;
-    let per_spp = loop {
-        let (image, secs) = run(spp);
-        curve.push((secs, rmse(&image, reference) as f64));
-        if secs * 2.0 > seconds / 2.0 || spp >= 1 << 15 {
-            break secs / spp as f64;
-        }
-        spp *= 2;
-    };
-    let spp = ((seconds / per_spp) as u32).clamp(1, 1 << 16);
-    let (image, secs) = run(spp);
-    curve.push((secs, rmse(&image, reference) as f64));
-    curve.sort_by(|a, b| a.0.total_cmp(&b.0));
-    (image, spp, secs, curve)
-}
-
-/// One row of an equal-time comparison.
-pub struct EqualTimeRow {
-    pub algorithm: &'static str,
-    pub stem: String,
-    pub spp: u32,
-    pub seconds: f64,
-    pub rmse: f32,
-    pub image: Image,
-    /// RMSE against time on the way (seconds, RMSE).
-    pub curve: Vec<(f64, f64)>,
-}
-
-/// Renders `scene` with every algorithm for about `budget` seconds each, all
-/// stopping at `max_depth`, and measures each one's RMSE against a
-/// bidirectional reference of `reference_spp` samples per pixel. Naive
-/// recursion (N = 4) joins the comparison if `with_naive`.
-pub fn equal_time(
-    scene: &Scene,
-    base: &RenderOptions,
-    budget: f64,
-    reference_spp: u32,
-    max_depth: u32,
-    with_naive: bool,
-) -> Vec<EqualTimeRow> {
-    let max_depth = Some(max_depth);
-    let bdpt = Bdpt {
-        max_depth,
-        ..Bdpt::default()
-    };
-    let reference_options = RenderOptions {
-        spp: reference_spp,
-        label: format!("{} reference", scene.name),
-        ..base.clone()
-    };
-    let reference = render(scene, &bdpt, &reference_options).film.image();
-    let naive = NaiveRecursive::new(vec![4], max_depth);
-    let path = PathTracer {
-        max_depth,
-        ..PathTracer::default()
-    };
-    let path_brdf = PathTracer {
-        max_depth,
-        strategy: DirectStrategy::BrdfOnly,
-        ..PathTracer::default()
-    };
-    let light = LightTracer {
-        max_depth,
-        ..LightTracer::default()
-    };
-    let mut algorithms: Vec<(&'static str, &dyn Integrator)> = vec![
-        ("path (MIS)", &path),
-        ("path (BRDF only)", &path_brdf),
-        ("light", &light),
-        ("bidirectional", &bdpt),
-    ];
-    if with_naive {
-        algorithms.insert(0, ("naive recursion, N = 4", &naive));
-    }
-    let mut rows = Vec::new();
-    for (algorithm, integrator) in algorithms {
-        let (image, spp, seconds, curve) = render_for(scene, integrator, base, budget, &reference);
-        let rmse = rmse(&image, &reference);
-        println!(
-            "  {:14} {algorithm:24} {spp:6} spp {seconds:7.2} s  RMSE {rmse:.4}",
-            scene.name
-        );
-        let stem = format!("{}-{}", scene.name, integrator.name());
-        rows.push(EqualTimeRow {
-            algorithm,
-            stem,
-            spp,
-            seconds,
-            rmse,
-            image,
-            curve,
-        });
-    }
-    rows
 }
 
 /// Chapter 8: every algorithm at equal time against a high-sample reference.

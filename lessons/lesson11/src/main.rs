@@ -8,6 +8,7 @@
 mod brdf_plots;
 mod chapters;
 mod commands;
+mod equal_time;
 mod integrators;
 mod options;
 mod page;

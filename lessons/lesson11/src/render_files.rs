@@ -4,6 +4,7 @@
 use std::path::Path;
 
 use anyhow::{Context, Result};
+use raytracer::film::Image;
 use raytracer::integrator::Integrator;
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
@@ -64,5 +65,20 @@ pub fn render_to_files(
         exr,
         seconds,
         spp: options.spp,
+    })
+}
+
+/// Writes an image computed outside `render` as `dir/stem.png` and
+/// `dir/stem.exr`, recorded as a picture of `spp` samples per pixel.
+pub fn write_image(dir: &Path, stem: &str, image: &Image, spp: u32) -> Result<Picture> {
+    let png = dir.join(format!("{stem}.png"));
+    let exr = dir.join(format!("{stem}.exr"));
+    image.write_png(&png, 0.0)?;
+    image.write_exr(&exr)?;
+    Ok(Picture {
+        png,
+        exr,
+        seconds: 0.0,
+        spp,
     })
 }

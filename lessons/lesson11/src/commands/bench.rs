@@ -90,7 +90,14 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 progress: false,
                 ..RenderOptions::default()
             };
-            crate::chapters::equal_time(&scene, &base, args.equal_time, 512, 5, name == "cornell");
+            crate::equal_time::equal_time(
+                &scene,
+                &base,
+                args.equal_time,
+                512,
+                5,
+                name == "cornell",
+            );
         }
     }
     Ok(())
