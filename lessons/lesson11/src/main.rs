@@ -5,7 +5,6 @@
 //! also a subcommand with its own options; `--help` at every level says which
 //! part of the lecture it shows.
 
-mod brdf_plots;
 mod chapters;
 mod commands;
 mod equal_time;
@@ -14,12 +13,13 @@ mod options;
 mod page;
 mod plots;
 mod render_files;
-mod stereo_cmd;
 mod tour;
 
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand};
+use clap::{ArgMatches, Args, FromArgMatches, Parser, Subcommand};
+
+use crate::tour::{Chapter, TourArgs};
 
 /// Lecture 11: stereoscopy, BRDFs, the rendering equation, path tracing,
 /// light tracing and bidirectional path tracing — rendered.
@@ -33,46 +33,66 @@ struct Cli {
     command: Option<Command>,
 }
 
-#[derive(Subcommand)]
+/// The subcommands, in the order `--help` lists them: the tour, one per
+/// chapter of [`chapters::CHAPTERS`] in lecture order, then the others.
 enum Command {
-    /// Walk the lecture in order and write every picture (the default).
-    Tour(tour::TourArgs),
-    /// 1 · Stereoscopy: two eyes, anaglyphs, side-by-side, crosstalk and a light field.
-    Stereo(stereo_cmd::StereoArgs),
-    /// 2 · Global illumination effects: direct light, ambient occlusion and full GI side by side.
-    GiEffects(tour::TourArgs),
-    /// 3 · BRDFs: lobes, directional albedo of normalized and unnormalized Phong, reciprocity, a gallery.
-    Brdf(tour::TourArgs),
-    /// 4 · The rendering equation: naive recursive Monte Carlo and its N^D rays per pixel.
-    RenderingEquation(tour::TourArgs),
-    /// 5 · Path tracing: a samples-per-pixel ladder; BRDF sampling, light sampling and MIS.
-    Path(tour::TourArgs),
-    /// 6 · Light tracing, and the caustic that only light paths find.
-    Light(tour::TourArgs),
-    /// 7 · Bidirectional path tracing and its (s, t) strategies.
-    Bdpt(tour::TourArgs),
-    /// 8 · Every algorithm at equal time: RMSE against a reference, convergence plots.
-    Compare(tour::TourArgs),
-    #[command(flatten)]
+    Tour(TourArgs),
+    /// A chapter alone, with the options its subcommand parsed.
+    Chapter(&'static Chapter, ArgMatches),
     Other(commands::Command),
+}
+
+/// What `lesson11 --help` says of `lesson11 tour`.
+const TOUR_ABOUT: &str = "Walk the lecture in order and write every picture (the default)";
+
+impl Subcommand for Command {
+    fn augment_subcommands(cli: clap::Command) -> clap::Command {
+        let tour = TourArgs::augment_args(clap::Command::new("tour"))
+            .about(TOUR_ABOUT)
+            .long_about(None);
+        let cli = chapters::CHAPTERS
+            .iter()
+            .fold(cli.subcommand(tour), |cli, chapter| {
+                cli.subcommand(chapter.subcommand())
+            });
+        commands::Command::augment_subcommands(cli)
+    }
+
+    fn augment_subcommands_for_update(cli: clap::Command) -> clap::Command {
+        Self::augment_subcommands(cli)
+    }
+
+    fn has_subcommand(name: &str) -> bool {
+        name == "tour" || chapters::find(name).is_some() || commands::Command::has_subcommand(name)
+    }
+}
+
+impl FromArgMatches for Command {
+    fn from_arg_matches(matches: &ArgMatches) -> Result<Self, clap::Error> {
+        match matches.subcommand() {
+            Some(("tour", tour)) => Ok(Command::Tour(TourArgs::from_arg_matches(tour)?)),
+            Some((name, sub)) => match chapters::find(name) {
+                Some(chapter) => Ok(Command::Chapter(chapter, sub.clone())),
+                None => Ok(Command::Other(commands::Command::from_arg_matches(
+                    matches,
+                )?)),
+            },
+            None => Err(clap::Error::new(clap::error::ErrorKind::MissingSubcommand)),
+        }
+    }
+
+    fn update_from_arg_matches(&mut self, matches: &ArgMatches) -> Result<(), clap::Error> {
+        *self = Self::from_arg_matches(matches)?;
+        Ok(())
+    }
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     raytracer::render::install_interrupt_handler();
-    let result = match cli
-        .command
-        .unwrap_or(Command::Tour(tour::TourArgs::default()))
-    {
-        Command::Tour(args) => tour::run(&args),
-        Command::GiEffects(args) => tour::run_chapters(&args, Some("gi-effects")),
-        Command::Brdf(args) => tour::run_chapters(&args, Some("brdf")),
-        Command::RenderingEquation(args) => tour::run_chapters(&args, Some("rendering-equation")),
-        Command::Path(args) => tour::run_chapters(&args, Some("path")),
-        Command::Light(args) => tour::run_chapters(&args, Some("light")),
-        Command::Bdpt(args) => tour::run_chapters(&args, Some("bdpt")),
-        Command::Compare(args) => tour::run_chapters(&args, Some("compare")),
-        Command::Stereo(args) => stereo_cmd::run(&args),
+    let result = match cli.command.unwrap_or(Command::Tour(TourArgs::default())) {
+        Command::Tour(args) => chapters::run(&args),
+        Command::Chapter(chapter, matches) => chapters::run_alone(chapter, &matches),
         Command::Other(command) => command.run(),
     };
     match result {

@@ -1,22 +1,23 @@
-//! The tour: every chapter of the lecture in order.
+//! What every chapter of the tour is and gets: its entry in the chapter list
+//! ([`Chapter`]: subcommand, help line, how it renders) and the context it
+//! renders in ([`Tour`]: where to write, how hard to work, the scenes at the
+//! tour's quality, pictures added to its section of the page).
 //!
-//! `lesson11` without a command runs it: each chapter renders its pictures
-//! into `out/lesson11/NN-chapter/`, prints one line per picture, and adds a
-//! section to `out/lesson11/index.html`.
+//! `lesson11` without a command walks the chapters in order: each renders its
+//! pictures into `out/lesson11/NN-chapter/`, prints one line per picture, and
+//! adds a section to `out/lesson11/index.html`. The chapters themselves live
+//! in `chapters/`, above this file: it imports none of them.
 
 use std::path::PathBuf;
-use std::time::Instant;
 
 use anyhow::Result;
-use clap::{Args, ValueEnum};
-use raytracer::integrator::{
-    AmbientOcclusion, Direct, DirectStrategy, Integrator, NaiveRecursive, PathTracer,
-};
-use raytracer::render::{RenderOptions, render};
+use clap::{ArgMatches, Args, ValueEnum};
+use raytracer::integrator::Integrator;
+use raytracer::render::RenderOptions;
 use raytracer::scene::Scene;
 
 use crate::options::{SceneArgs, create_dir, load_scene};
-use crate::page::{Figure, Page, Section, Table};
+use crate::page::{Figure, Section};
 use crate::render_files::render_to_files;
 
 /// How long the tour may take.
@@ -63,6 +64,54 @@ impl Default for TourArgs {
     }
 }
 
+/// One chapter of the lecture: its entry in the tour's list and its subcommand.
+pub struct Chapter {
+    /// Its subcommand (`lesson11 path`), also the page it writes when run
+    /// alone (`path.html`).
+    pub name: &'static str,
+    /// Its line in `lesson11 --help`: number, topic, what it shows.
+    pub about: &'static str,
+    /// Renders its pictures, tables and plots and returns its section of the page.
+    pub render: fn(&Tour) -> Result<Section>,
+    /// Options of its own, where the tour's (`TourArgs`) are not enough.
+    pub options: Option<ChapterOptions>,
+}
+
+/// A chapter subcommand with options of its own (the stereo rig's).
+pub struct ChapterOptions {
+    /// Adds the options to the subcommand: their struct's `Args::augment_args`.
+    pub augment: fn(clap::Command) -> clap::Command,
+    /// Runs the chapter alone with the options parsed from the command line.
+    pub run: fn(&ArgMatches) -> Result<()>,
+}
+
+impl Chapter {
+    /// A chapter that takes the tour's options (`--quality`, `--scene`, `--spp`, …).
+    pub const fn new(
+        name: &'static str,
+        about: &'static str,
+        render: fn(&Tour) -> Result<Section>,
+    ) -> Self {
+        Chapter {
+            name,
+            about,
+            render,
+            options: None,
+        }
+    }
+
+    /// The chapter's subcommand: its options, and its help line as clap's
+    /// derive writes a documented variant (`about`, no long text).
+    pub fn subcommand(&self) -> clap::Command {
+        let command = clap::Command::new(self.name);
+        let command = match &self.options {
+            Some(options) => (options.augment)(command),
+            None => TourArgs::augment_args(command),
+        };
+        command.about(self.about).long_about(None)
+    }
+}
+
 /// What every chapter needs: where to write, how hard to work.
 pub struct Tour {
     pub out: PathBuf,
@@ -73,6 +122,28 @@ pub struct Tour {
 }
 
 impl Tour {
+    /// The tour the command line asks for; creates its output folder.
+    pub fn new(args: &TourArgs) -> Result<Tour> {
+        let out = &args.common.out;
+        create_dir(out)?;
+        if args.common.threads == Some(0) {
+            anyhow::bail!("--threads must be at least 1 (or left out to use every core)");
+        }
+        let quality = if args.quick {
+            Quality::Quick
+        } else if args.full {
+            Quality::Full
+        } else {
+            args.quality
+        };
+        Ok(Tour {
+            out: out.clone(),
+            quality,
+            threads: args.common.threads,
+            overrides: args.common.clone(),
+        })
+    }
+
     /// A built-in scene at the tour's quality, with `spp` samples at `quick`.
     /// The Cornell box may be replaced by `--scene`, and the size, samples and
     /// seed of every picture by `--width`, `--height`, `--spp` and `--seed`.
@@ -119,10 +190,10 @@ impl Tour {
     }
 
     /// Starts a chapter whose files go into `out/<folder>`.
-    pub fn chapter(&self, folder: &str, title: &str, text: &str) -> Result<Chapter> {
+    pub fn chapter(&self, folder: &str, title: &str, text: &str) -> Result<ChapterOutput> {
         let dir = self.out.join(folder);
         create_dir(&dir)?;
-        Ok(Chapter {
+        Ok(ChapterOutput {
             dir,
             section: Section::new(title, text),
         })
@@ -131,7 +202,7 @@ impl Tour {
     /// Renders and adds the picture to the chapter.
     pub fn picture(
         &self,
-        chapter: &mut Chapter,
+        chapter: &mut ChapterOutput,
         scene: &Scene,
         integrator: &dyn Integrator,
         options: &RenderOptions,
@@ -148,287 +219,7 @@ impl Tour {
 }
 
 /// A chapter being written: its folder and its section of the page.
-pub struct Chapter {
+pub struct ChapterOutput {
     pub dir: PathBuf,
     pub section: Section,
-}
-
-/// A chapter: renders its pictures and returns its section of the page.
-pub type ChapterFn = fn(&Tour) -> Result<Section>;
-
-/// The chapters in lecture order, by subcommand name.
-pub const CHAPTERS: [(&str, ChapterFn); 8] = [
-    ("stereo", stereo),
-    ("gi-effects", gi_effects),
-    ("brdf", brdf),
-    ("rendering-equation", rendering_equation),
-    ("path", path),
-    ("light", crate::chapters::light),
-    ("bdpt", crate::chapters::bdpt),
-    ("compare", crate::chapters::compare),
-];
-
-/// The whole tour: every chapter, and `index.html` with all of them.
-pub fn run(args: &TourArgs) -> Result<()> {
-    run_chapters(args, None)
-}
-
-/// Runs every chapter (`only = None`) or one, and writes the page: the
-/// tour's `index.html`, or `<chapter>.html` beside it for a single chapter.
-pub fn run_chapters(args: &TourArgs, only: Option<&str>) -> Result<()> {
-    let out = &args.common.out;
-    create_dir(out)?;
-    if args.common.threads == Some(0) {
-        anyhow::bail!("--threads must be at least 1 (or left out to use every core)");
-    }
-    let quality = if args.quick {
-        Quality::Quick
-    } else if args.full {
-        Quality::Full
-    } else {
-        args.quality
-    };
-    let tour = Tour {
-        out: out.clone(),
-        quality,
-        threads: args.common.threads,
-        overrides: args.common.clone(),
-    };
-    let start = Instant::now();
-    let mut page = Page::new("Lecture 11: stereoscopy and global illumination, rendered");
-    for (name, chapter) in CHAPTERS {
-        if only.is_some_and(|o| o != name) {
-            continue;
-        }
-        println!("\n== {name}");
-        let t = Instant::now();
-        page.sections.push(chapter(&tour)?);
-        println!("== {name}: {:.1} s", t.elapsed().as_secs_f64());
-    }
-    let file = only.map_or_else(|| "index.html".to_string(), |name| format!("{name}.html"));
-    let index = page.write(out, &file)?;
-    println!(
-        "\nThat took {:.1} s. Open {} to see the pictures.",
-        start.elapsed().as_secs_f64(),
-        index.display()
-    );
-    Ok(())
-}
-
-/// Chapter 1: stereoscopy (see `lesson11 stereo --help` for every option).
-fn stereo(tour: &Tour) -> Result<Section> {
-    let mut args = crate::stereo_cmd::StereoArgs::default();
-    args.scene.out = tour.out.clone();
-    args.scene.threads = tour.threads;
-    match tour.quality {
-        Quality::Tiny => {
-            args.scene.width = Some(32);
-            args.scene.height = Some(24);
-            args.scene.spp = Some(2);
-            args.lf_views = 2;
-            args.lf_spp = Some(1);
-        }
-        Quality::Quick => args.scene.spp = Some(32),
-        Quality::Full => args.scene.spp = Some(256),
-    }
-    let o = &tour.overrides;
-    args.scene.width = o.width.or(args.scene.width);
-    args.scene.height = o.height.or(args.scene.height);
-    args.scene.spp = o.spp.or(args.scene.spp);
-    args.scene.seed = o.seed;
-    crate::stereo_cmd::render_section(&args, &tour.out)
-}
-
-/// Chapter 2: what direct light alone misses.
-fn gi_effects(tour: &Tour) -> Result<Section> {
-    let mut s = tour.chapter(
-        "02-gi-effects",
-        "2 · Global illumination effects",
-        "The same Cornell box three ways. Direct light alone (one bounce) leaves the ceiling black and \
-         the shadows hard-edged and empty. Ambient occlusion darkens corners and contact regions but knows \
-         nothing of the light. Full global illumination (path tracing, unlimited depth) brings the indirect \
-         light: a lit ceiling, soft shadows, and colour bleeding — red and green tints on the white boxes.",
-    )?;
-    let (scene, options) = tour.scene("cornell", 64)?;
-    tour.picture(
-        &mut s,
-        &scene,
-        &Direct,
-        &options,
-        "cornell-direct",
-        "Direct light only (max depth 2).",
-    )?;
-    let ao = AmbientOcclusion { distance: 0.5 };
-    tour.picture(
-        &mut s,
-        &scene,
-        &ao,
-        &options,
-        "cornell-ao",
-        "Ambient occlusion (rays of 0.5 m).",
-    )?;
-    let pt = PathTracer {
-        max_depth: None,
-        rr_depth: 5,
-        strategy: DirectStrategy::Mis,
-    };
-    tour.picture(
-        &mut s,
-        &scene,
-        &pt,
-        &options,
-        "cornell-path",
-        "Global illumination: path tracing, unlimited depth.",
-    )?;
-    Ok(s.section)
-}
-
-/// Chapter 3: BRDFs.
-fn brdf(tour: &Tour) -> Result<Section> {
-    let mut s = tour.chapter(
-        "03-brdf",
-        "3 · BRDFs",
-        "A BRDF f_r(ω_i → ω_o) says how much of the light arriving from ω_i leaves towards ω_o. The plots \
-         show lobes in the plane of incidence, the directional albedo ∫ f_r cos θ dω (energy conservation \
-         demands ≤ 1) of normalized and unnormalized Phong, and reciprocity. The render shows Lambert, \
-         normalized Phong with n = 1, 10, 100 and 1000, a perfect mirror and glass, path traced: as n \
-         grows the highlight narrows and brightens, and the normalization (n+2)/2π keeps the reflected \
-         energy the same.",
-    )?;
-    crate::brdf_plots::write_all(&mut s, tour)?;
-    let (scene, options) = tour.scene("brdf-gallery", 32)?;
-    let pt = PathTracer::default();
-    tour.picture(
-        &mut s,
-        &scene,
-        &pt,
-        &options,
-        "brdf-gallery",
-        "The BRDF gallery, path traced.",
-    )?;
-    Ok(s.section)
-}
-
-/// Chapter 4: the rendering equation solved by naive recursion, and its cost.
-fn rendering_equation(tour: &Tour) -> Result<Section> {
-    let mut s = tour.chapter(
-        "04-rendering-equation",
-        "4 · The rendering equation and its recursion",
-        "Naive recursive Monte Carlo shoots N rays at every hit and recurses: a pixel sample costs \
-         1 + N + N² + … rays, so the cost explodes with depth (the table counts the rays actually traced). \
-         Path tracing follows one ray per bounce and spends the same budget on more samples per pixel.",
-    )?;
-    let (mut scene, mut options) = tour.scene("cornell", 1)?;
-    if tour.quality != Quality::Tiny {
-        scene.set_resolution(96, 96);
-    }
-    options.progress = false;
-    let mut table = Table::new(
-        "Naive recursion on the Cornell box, 1 sample per pixel",
-        &[
-            "N (branching)",
-            "max depth D",
-            "rays per pixel (measured)",
-            "rays per pixel bound Σ N^d",
-            "seconds",
-        ],
-    );
-    let pixels = (scene.camera.width * scene.camera.height) as f64;
-    for n in [2u32, 4, 8] {
-        for d in [2u32, 3, 4] {
-            let naive = NaiveRecursive::new(vec![n], Some(d));
-            let result = render(&scene, &naive, &options);
-            table.rows.push(vec![
-                n.to_string(),
-                d.to_string(),
-                format!("{:.1}", naive.rays_traced() as f64 / pixels),
-                naive.rays_per_sample_bound().unwrap_or(0).to_string(),
-                format!("{:.3}", result.stats.elapsed.as_secs_f64()),
-            ]);
-        }
-    }
-    for row in &table.rows {
-        println!(
-            "  naive N={} D={}: {} rays per pixel, {} s",
-            row[0], row[1], row[2], row[4]
-        );
-    }
-    table.write_csv(&s.dir.join("naive-rays.csv"))?;
-    s.section.tables.push(table);
-    let naive = NaiveRecursive::new(vec![8], Some(4));
-    tour.picture(
-        &mut s,
-        &scene,
-        &naive,
-        &options,
-        "naive-n8-d4",
-        "Naive recursion, N = 8, D = 4, 1 spp.",
-    )?;
-    let pt = PathTracer {
-        max_depth: Some(4),
-        rr_depth: 5,
-        strategy: DirectStrategy::BrdfOnly,
-    };
-    let mut equal = options.clone();
-    equal.spp = if tour.quality == Quality::Tiny { 2 } else { 64 };
-    tour.picture(
-        &mut s,
-        &scene,
-        &pt,
-        &equal,
-        "path-d4",
-        "Path tracing (BRDF sampling only, as naive recursion), D = 4.",
-    )?;
-    Ok(s.section)
-}
-
-/// Chapter 5: path tracing, samples per pixel, and light sampling with MIS.
-fn path(tour: &Tour) -> Result<Section> {
-    let mut s = tour.chapter(
-        "05-path",
-        "5 · Path tracing",
-        "One continuation per bounce and many samples per pixel: the noise falls as 1/√spp (each row of \
-         pictures quadruples the samples and halves the noise). Below, the three ways of finding light at \
-         equal samples: BRDF sampling only (lights are found by chance), light sampling only, and both \
-         combined by multiple importance sampling.",
-    )?;
-    let pt = PathTracer::default();
-    for spp in [1u32, 4, 16, 64] {
-        let (scene, mut options) = tour.scene("cornell", spp)?;
-        options.spp = options.spp.min(spp.max(1) * 8);
-        let stem = format!("cornell-path-{spp:03}spp");
-        tour.picture(
-            &mut s,
-            &scene,
-            &pt,
-            &options,
-            &stem,
-            &format!("Path tracing, {spp} spp."),
-        )?;
-    }
-    let (scene, options) = tour.scene("cornell", 16)?;
-    for (strategy, stem, caption) in [
-        (
-            DirectStrategy::BrdfOnly,
-            "cornell-brdf-only",
-            "BRDF sampling only.",
-        ),
-        (
-            DirectStrategy::LightOnly,
-            "cornell-light-only",
-            "Light sampling only (no MIS).",
-        ),
-        (
-            DirectStrategy::Mis,
-            "cornell-mis",
-            "Light and BRDF sampling under MIS (power heuristic).",
-        ),
-    ] {
-        let pt = PathTracer {
-            strategy,
-            ..PathTracer::default()
-        };
-        tour.picture(&mut s, &scene, &pt, &options, stem, caption)?;
-    }
-    Ok(s.section)
 }

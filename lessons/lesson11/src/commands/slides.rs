@@ -207,7 +207,7 @@ pub fn build(args: &SlidesArgs) -> Result<Vec<PathBuf>> {
         };
         tour.common.out = args.out.clone();
         tour.common.threads = args.threads;
-        crate::tour::run(&tour)?;
+        crate::chapters::run(&tour)?;
         let still = missing(&args.out);
         if !still.is_empty() {
             bail!(

@@ -1,11 +1,12 @@
-//! `lesson11 stereo`: the stereo rig, anaglyphs and the other ways to view a
-//! pair, crosstalk, and a light field (the first half of Lecture 11).
+//! Chapter 1 · Stereoscopy, the first half of Lecture 11: the stereo rig,
+//! anaglyphs and the other ways to view a pair, crosstalk, and a light field.
+//! `lesson11 stereo` runs it alone with options of its own.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
-use clap::Args;
+use clap::{ArgMatches, Args, FromArgMatches};
 use raytracer::film::Image;
 use raytracer::render::RenderOptions;
 use raytracer::stereo::{Anaglyph, Composite, Eye, LightField, StereoRig, crosstalk};
@@ -14,6 +15,17 @@ use crate::integrators::{IntegratorArgs, IntegratorKind};
 use crate::options::{SceneArgs, create_dir};
 use crate::page::{Figure, Page, Section};
 use crate::render_files::render_to_files;
+use crate::tour::{Chapter, ChapterOptions, Quality, Tour};
+
+pub const CHAPTER: Chapter = Chapter {
+    name: "stereo",
+    about: "1 · Stereoscopy: two eyes, anaglyphs, side-by-side, crosstalk and a light field",
+    render,
+    options: Some(ChapterOptions {
+        augment: StereoArgs::augment_args,
+        run: run_alone,
+    }),
+};
 
 /// Render a stereo pair from two eyes offset along the camera's rightDir by
 /// ±separation/2, and write the eye images, anaglyphs (red–cyan in colour,
@@ -22,7 +34,7 @@ use crate::render_files::render_to_files;
 /// preview and a light field (contact sheet and refocused images) into
 /// OUT/01-stereo/, with an index.html that says what to look for.
 #[derive(Args, Debug, Clone)]
-pub struct StereoArgs {
+struct StereoArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// The algorithm that estimates each pixel.
@@ -108,9 +120,38 @@ impl Default for StereoArgs {
 }
 
 /// The folder of this chapter inside `--out`.
-pub const CHAPTER_DIR: &str = "01-stereo";
+const CHAPTER_DIR: &str = "01-stereo";
 
-pub fn run(args: &StereoArgs) -> Result<()> {
+/// Chapter 1: stereoscopy (see `lesson11 stereo --help` for every option).
+fn render(tour: &Tour) -> Result<Section> {
+    let mut args = StereoArgs::default();
+    args.scene.out = tour.out.clone();
+    args.scene.threads = tour.threads;
+    match tour.quality {
+        Quality::Tiny => {
+            args.scene.width = Some(32);
+            args.scene.height = Some(24);
+            args.scene.spp = Some(2);
+            args.lf_views = 2;
+            args.lf_spp = Some(1);
+        }
+        Quality::Quick => args.scene.spp = Some(32),
+        Quality::Full => args.scene.spp = Some(256),
+    }
+    let o = &tour.overrides;
+    args.scene.width = o.width.or(args.scene.width);
+    args.scene.height = o.height.or(args.scene.height);
+    args.scene.spp = o.spp.or(args.scene.spp);
+    args.scene.seed = o.seed;
+    render_section(&args, &tour.out)
+}
+
+/// `lesson11 stereo`: the chapter alone, with its page in `OUT/01-stereo/index.html`.
+fn run_alone(matches: &ArgMatches) -> Result<()> {
+    run(&StereoArgs::from_arg_matches(matches)?)
+}
+
+fn run(args: &StereoArgs) -> Result<()> {
     let dir = args.scene.out.join(CHAPTER_DIR);
     let section = render_section(args, &dir)?;
     let mut page = Page::new("Lecture 11: stereoscopy");
@@ -235,7 +276,7 @@ fn caption(mode: Composite) -> String {
 
 /// Renders everything into `args.scene.out/01-stereo/` and returns the page
 /// section, its figures linked relative to `page_root`.
-pub fn render_section(args: &StereoArgs, page_root: &Path) -> Result<Section> {
+fn render_section(args: &StereoArgs, page_root: &Path) -> Result<Section> {
     check(args)?;
     let modes = parse_modes(&args.mode)?;
     let rig = StereoRig {

@@ -1,14 +1,49 @@
-//! The BRDF chapter's plots and tables: lobes in the plane of incidence,
-//! directional albedo (energy conservation) and reciprocity.
+//! Chapter 3 · BRDFs: lobes in the plane of incidence, directional albedo
+//! (energy conservation) of normalized and unnormalized Phong, reciprocity,
+//! and a gallery of the lecture's BRDFs, path traced.
 
 use anyhow::Result;
 use raytracer::brdf::{Brdf, Lambert, Phong, Texture, TransportMode};
+use raytracer::integrator::PathTracer;
 use raytracer::math::{Color, Vec2, Vec3A};
 use raytracer::sampling::Sampler;
 
-use crate::page::{Figure, Table};
+use crate::page::{Figure, Section, Table};
 use crate::plots::{Chart, Scale, Series, polar_svg};
-use crate::tour::{Chapter, Quality, Tour};
+use crate::tour::{Chapter, ChapterOutput, Quality, Tour};
+
+pub const CHAPTER: Chapter = Chapter::new(
+    "brdf",
+    "3 · BRDFs: lobes, directional albedo of normalized and unnormalized Phong, reciprocity, a gallery",
+    render,
+);
+
+/// Chapter 3: BRDFs.
+fn render(tour: &Tour) -> Result<Section> {
+    let mut s = tour.chapter(
+        "03-brdf",
+        "3 · BRDFs",
+        "A BRDF f_r(ω_i → ω_o) says how much of the light arriving from ω_i leaves towards ω_o. The plots \
+         show lobes in the plane of incidence, the directional albedo ∫ f_r cos θ dω (energy conservation \
+         demands ≤ 1) of normalized and unnormalized Phong, and reciprocity. The render shows Lambert, \
+         normalized Phong with n = 1, 10, 100 and 1000, a perfect mirror and glass, path traced: as n \
+         grows the highlight narrows and brightens, and the normalization (n+2)/2π keeps the reflected \
+         energy the same.",
+    )?;
+    plots_and_tables(&mut s, tour)?;
+    let (scene, options) = tour.scene("brdf-gallery", 32)?;
+    let pt = PathTracer::default();
+    tour.picture(
+        &mut s,
+        &scene,
+        &pt,
+        &options,
+        "brdf-gallery",
+        "The BRDF gallery, path traced.",
+    )?;
+    Ok(s.section)
+}
+
 
 fn phong(n: f32) -> Brdf {
     Brdf::Phong(Phong {
@@ -30,7 +65,7 @@ fn dir(theta: f64) -> Vec3A {
 
 /// Directional albedo `∫ f_r cos θ_i dω_i` for light leaving towards `wo`,
 /// estimated with the BRDF's own sampling: the mean of `f cos / pdf`.
-pub fn directional_albedo(brdf: &Brdf, wo: Vec3A, samples: u32) -> f64 {
+fn directional_albedo(brdf: &Brdf, wo: Vec3A, samples: u32) -> f64 {
     let mut sum = 0.0f64;
     for i in 0..samples {
         let mut sampler = Sampler::new(3, i as u64, 0);
@@ -42,7 +77,8 @@ pub fn directional_albedo(brdf: &Brdf, wo: Vec3A, samples: u32) -> f64 {
     sum / samples as f64
 }
 
-pub fn write_all(c: &mut Chapter, tour: &Tour) -> Result<()> {
+/// The plots and tables: lobes, directional albedo and reciprocity.
+fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
     let samples = if tour.quality == Quality::Tiny {
         256
     } else {
