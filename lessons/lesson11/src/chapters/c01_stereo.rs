@@ -148,12 +148,9 @@ fn render(tour: &Tour) -> Result<Section> {
 
 /// `lesson11 stereo`: the chapter alone, with its page in `OUT/01-stereo/index.html`.
 fn run_alone(matches: &ArgMatches) -> Result<()> {
-    run(&StereoArgs::from_arg_matches(matches)?)
-}
-
-fn run(args: &StereoArgs) -> Result<()> {
+    let args = StereoArgs::from_arg_matches(matches)?;
     let dir = args.scene.out.join(CHAPTER_DIR);
-    let section = render_section(args, &dir)?;
+    let section = render_section(&args, &dir)?;
     let mut page = Page::new("Lecture 11: stereoscopy");
     page.sections.push(section);
     let index = page.write(&dir, "index.html")?;
