@@ -4,6 +4,31 @@
 //! into `out/lesson11/` with an `index.html` that shows them. Each chapter is
 //! also a subcommand with its own options; `--help` at every level says which
 //! part of the lecture it shows.
+//!
+//! # Layout
+//!
+//! Arrows point down. A file imports only files on lower lines of this list
+//! and its own submodules; files on one line import each other only inside a
+//! folder named on it, and never in a circle. `tests/layers.rs` reads this
+//! list and fails otherwise, and a new file must find its line here.
+//!
+//! ```text
+//! main.rs          the command line: the tour, one subcommand per listed chapter, then the rest
+//! commands/        the subcommands that are not chapters: render, scenes, bench, exercises, slides, …
+//! chapters/mod.rs  the chapter list in lecture order, and the tour that walks it
+//! chapters/c*.rs   one chapter each: its pictures, tables and plots, and its section of the page
+//! tour.rs          what every chapter is (its entry in the list) and gets (the Tour context)
+//! render_files.rs equal_time.rs integrators.rs     shared by chapters and commands
+//! options.rs       scene, size, samples, seed, threads and output folder of a command line
+//! page/ plots/     the HTML page and its SVG plots
+//! ```
+//!
+//! Below them all are the crates `raytracer` (the renderer), `exercises` (the
+//! student's code) and `grading` (the grader).
+//!
+//! Adding a chapter is adding its file, `chapters/cNN_topic.rs` with a
+//! `pub const CHAPTER: Chapter`, and its name to the list in
+//! `chapters/mod.rs`: its subcommand and its place in the tour follow.
 
 mod chapters;
 mod commands;
