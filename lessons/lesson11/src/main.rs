@@ -128,3 +128,64 @@ fn main() -> ExitCode {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use clap::CommandFactory;
+
+    use super::*;
+
+    #[test]
+    fn the_command_line_passes_claps_own_checks() {
+        Cli::command().debug_assert();
+    }
+
+    #[test]
+    fn help_lists_the_tour_then_every_chapter_in_lecture_order_then_the_commands() {
+        let cli = Cli::command();
+        let names: Vec<&str> = cli.get_subcommands().map(|c| c.get_name()).collect();
+        let chapters: Vec<&str> = chapters::CHAPTERS.iter().map(|c| c.name).collect();
+        assert_eq!(names[0], "tour");
+        assert_eq!(names[1..=chapters.len()], chapters[..]);
+        assert_eq!(
+            chapters,
+            [
+                "stereo",
+                "gi-effects",
+                "brdf",
+                "rendering-equation",
+                "path",
+                "light",
+                "bdpt",
+                "compare"
+            ]
+        );
+        assert!(names[chapters.len() + 1..].contains(&"render"));
+    }
+
+    #[test]
+    fn a_chapter_subcommand_keeps_its_own_options() {
+        let parse = |words: &[&str]| Cli::try_parse_from(words).map(|c| c.command);
+        match parse(&["lesson11", "stereo", "--lf-views", "3", "--toe-in"]) {
+            Ok(Some(Command::Chapter(chapter, matches))) => {
+                assert_eq!(chapter.name, "stereo");
+                assert_eq!(matches.get_one::<u32>("lf_views"), Some(&3));
+            }
+            _ => panic!("`lesson11 stereo --lf-views 3` is not the stereo chapter"),
+        }
+        match parse(&["lesson11", "path", "--quick", "--out", "x"]) {
+            Ok(Some(Command::Chapter(chapter, _))) => assert_eq!(chapter.name, "path"),
+            _ => panic!("`lesson11 path --quick --out x` is not the path chapter"),
+        }
+        assert!(parse(&["lesson11", "path", "--lf-views", "3"]).is_err());
+        assert!(matches!(
+            parse(&["lesson11", "tour", "--quality", "tiny"]),
+            Ok(Some(Command::Tour(_)))
+        ));
+        assert!(matches!(
+            parse(&["lesson11", "scenes"]),
+            Ok(Some(Command::Other(_)))
+        ));
+        assert!(matches!(parse(&["lesson11"]), Ok(None)));
+    }
+}

@@ -67,7 +67,7 @@ impl Default for TourArgs {
 /// One chapter of the lecture: its entry in the tour's list and its subcommand.
 pub struct Chapter {
     /// Its subcommand (`lesson11 path`), also the page it writes when run
-    /// alone (`path.html`).
+    /// alone with the tour's options (`path.html`).
     pub name: &'static str,
     /// Its line in `lesson11 --help`: number, topic, what it shows.
     pub about: &'static str,
