@@ -257,16 +257,8 @@ impl Context<'_> {
         s.height = at_least_one(&r.height, s.height)?;
         s.spp = at_least_one(&r.spp, s.spp)?;
         if let Some(d) = &r.max_depth {
-            s.max_depth = match *d.get_ref() {
-                -1 => None,
-                d @ 1..=0xffff => Some(d as u32),
-                other => {
-                    return Err(self.error(
-                        d.span(),
-                        format!("must be -1 (unlimited) or in [1, 65535], got {other}"),
-                    ));
-                }
-            };
+            s.max_depth =
+                super::max_depth_from(*d.get_ref()).map_err(|e| self.error(d.span(), e))?;
         }
         if let Some(d) = &r.rr_depth {
             s.rr_depth = *d.get_ref();
@@ -391,14 +383,27 @@ impl Context<'_> {
         match self.origin {
             SceneOrigin::Dir { dir, .. } => {
                 let path = dir.join(file.get_ref());
-                if path.is_file() {
-                    Ok(path)
-                } else {
-                    Err(self.error(
-                        file.span(),
-                        format!("{what} file not found: {}", path.display()),
-                    ))
-                }
+                let problem = match std::fs::metadata(&path) {
+                    Ok(m) if m.is_file() => return Ok(path),
+                    Ok(m) if m.is_dir() => "is a folder, not a file",
+                    Ok(_) => "is not a regular file (a device, a pipe or a socket)",
+                    Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                        return Err(self.error(
+                            file.span(),
+                            format!("{what} file not found: {}", path.display()),
+                        ));
+                    }
+                    Err(e) => {
+                        return Err(self.error(
+                            file.span(),
+                            format!("cannot read the {what} file {}: {e}", path.display()),
+                        ));
+                    }
+                };
+                Err(self.error(
+                    file.span(),
+                    format!("the {what} file {} {problem}", path.display()),
+                ))
             }
             SceneOrigin::Builtin(scene) => Err(self.error(
                 file.span(),
