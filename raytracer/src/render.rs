@@ -270,7 +270,7 @@ pub fn memory_needed(width: u32, height: u32) -> Option<u64> {
 #[derive(Clone, Debug, PartialEq)]
 pub struct MemoryCap {
     pub bytes: u64,
-    /// E.g. "half of the 23.4 GiB of physical memory (/proc/meminfo)".
+    /// E.g. "half of the 23.4 GiB of physical memory, from /proc/meminfo".
     pub source: String,
 }
 
@@ -290,7 +290,7 @@ impl MemoryCap {
             Some(total) => MemoryCap {
                 bytes: total / 2,
                 source: format!(
-                    "half of the {} of physical memory (/proc/meminfo)",
+                    "half of the {} of physical memory, from /proc/meminfo",
                     gib(total)
                 ),
             },

@@ -21,7 +21,10 @@ pub fn run(
     exposure: f32,
 ) -> Result<()> {
     let (scene, options) = scene_args.load("cornell")?;
-    let (max_depth, rr_depth) = ia.depths(&scene);
+    // Built first: its checks of the options apply to the student's too.
+    let reference = integrator.build(ia, &scene, &options, scene_args.force)?;
+    let max_depth = ia.max_depth(integrator, &scene)?;
+    let rr_depth = ia.rr_depth(&scene);
     let (exercise, student): (&str, Box<dyn Integrator>) = match integrator {
         IntegratorKind::Path | IntegratorKind::PathBrdf => (
             "ex09_path_tracing",
@@ -30,8 +33,8 @@ pub fn run(
         IntegratorKind::Naive => (
             "ex08_naive_recursive",
             Box::new(StudentNaive {
-                max_depth: max_depth.unwrap_or(4),
-                branching: ia.branching.first().copied().unwrap_or(8),
+                max_depth: max_depth.unwrap_or(crate::integrators::NAIVE_DEFAULT_DEPTH),
+                branching: ia.branching()[0],
             }),
         ),
         IntegratorKind::Direct | IntegratorKind::PathNee => {
@@ -49,7 +52,6 @@ pub fn run(
         );
     }
     println!("{exercise}: {outcome}");
-    let reference = integrator.build(ia, &scene);
     let out = &scene_args.out;
     let stem = format!("{}-{}", scene.name, reference.name());
     render_to_files(
