@@ -32,11 +32,18 @@ pub fn render_to_files(
     exposure: f32,
 ) -> Result<Picture> {
     create_dir(dir)?;
-    warn_if_unlit(scene, integrator);
-    let result = render(scene, integrator, options);
     let png = dir.join(format!("{stem}.png"));
     let exr = dir.join(format!("{stem}.exr"));
     let variance = dir.join(format!("{stem}-variance.exr"));
+    // Found now, not after the render (a folder cannot be replaced by a file).
+    if let Some(folder) = [&png, &exr, &variance].into_iter().find(|p| p.is_dir()) {
+        anyhow::bail!(
+            "cannot write {}: a folder has that name; move it or choose another --out",
+            folder.display()
+        );
+    }
+    warn_if_unlit(scene, integrator);
+    let result = render(scene, integrator, options);
     if result.stats.samples == 0 && result.stats.interrupted {
         // A black picture would only replace a better one.
         println!(

@@ -219,6 +219,45 @@ fn mesh_files_are_read_only_if_they_are_small_regular_files() {
     }
 }
 
+#[test]
+fn scene_files_are_read_only_if_they_are_small_regular_files() {
+    if Path::new("/dev/zero").exists() {
+        let args = tiny(&["render", "--scene", "/dev/zero"]);
+        refused("scene-dev", &args, "/dev/zero: is not a regular file");
+    }
+    refused_with_setup(
+        "scene-dir",
+        &tiny(&["render", "--scene", "./folder"]),
+        "./folder: is a folder, not a scene file",
+        |d| std::fs::create_dir(d.join("folder")).unwrap(),
+    );
+    refused_with_setup(
+        "scene-huge",
+        &tiny(&["render", "--scene", "huge.toml"]),
+        "huge.toml: has 300 MiB; a scene file may have at most 16 MiB",
+        |d| {
+            let f = std::fs::File::create(d.join("huge.toml")).unwrap();
+            f.set_len(300 << 20).unwrap();
+        },
+    );
+}
+
+/// A folder where a picture should go is found before the render, and the
+/// picture's other files are left as they were.
+#[test]
+fn a_folder_in_the_way_of_a_picture_is_found_before_rendering() {
+    refused_with_setup(
+        "folder-in-the-way",
+        &tiny(&["render"]),
+        "cannot write out/cornell-direct-variance.exr: a folder has that name",
+        |d| {
+            let variance = d.join("out/cornell-direct-variance.exr");
+            std::fs::remove_file(&variance).unwrap();
+            std::fs::create_dir(&variance).unwrap();
+        },
+    );
+}
+
 // ---- Hangs and runaway resources. ----
 
 #[test]

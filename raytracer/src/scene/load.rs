@@ -57,12 +57,39 @@ impl SceneOrigin {
 }
 
 /// Loads and checks the scene file `path`.
+///
+/// Only a regular file of at most [`MAX_SCENE_FILE_BYTES`] is read: a
+/// folder, a device such as `/dev/zero` or a pipe is refused before it is
+/// opened.
 pub fn load_file(path: &Path) -> Result<SceneParts, SceneError> {
-    let text = std::fs::read_to_string(path).map_err(|e| {
-        SceneError::whole_file(path.display().to_string(), format!("cannot read: {e}"))
-    })?;
+    use std::io::Read;
+    let error = |message: String| SceneError::whole_file(path.display().to_string(), message);
+    let meta = std::fs::metadata(path).map_err(|e| error(format!("cannot read: {e}")))?;
+    if meta.is_dir() {
+        return Err(error("is a folder, not a scene file".into()));
+    }
+    if !meta.is_file() {
+        return Err(error(
+            "is not a regular file (a device, a pipe or a socket), not a scene file".into(),
+        ));
+    }
+    if meta.len() > MAX_SCENE_FILE_BYTES {
+        return Err(error(format!(
+            "has {} MiB; a scene file may have at most {} MiB (put big meshes in OBJ files)",
+            meta.len() >> 20,
+            MAX_SCENE_FILE_BYTES >> 20
+        )));
+    }
+    let mut text = String::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_SCENE_FILE_BYTES).read_to_string(&mut text))
+        .map_err(|e| error(format!("cannot read: {e}")))?;
     load_str(&text, &SceneOrigin::file(path))
 }
+
+/// The largest scene file [`load_file`] reads: 16 MiB, far more than a
+/// hand-written scene (meshes live in OBJ files of their own).
+pub const MAX_SCENE_FILE_BYTES: u64 = 16 << 20;
 
 /// Loads and checks the scene text `text`.
 pub fn load_str(text: &str, origin: &SceneOrigin) -> Result<SceneParts, SceneError> {
@@ -601,6 +628,29 @@ mod tests {
         assert_eq!(parts.objects.len(), 3);
         assert_eq!(parts.lights.len(), 1);
         assert!(parts.objects[2].emitter.is_some());
+    }
+
+    #[test]
+    fn load_file_reads_only_regular_files_of_a_sane_size() {
+        let dir = std::env::temp_dir().join(format!("scenefmt-kinds-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let e = load_file(&dir).unwrap_err();
+        assert!(
+            e.to_string().ends_with(": is a folder, not a scene file"),
+            "{e}"
+        );
+        if Path::new("/dev/zero").exists() {
+            let e = load_file(Path::new("/dev/zero")).unwrap_err();
+            assert!(e.message.starts_with("is not a regular file"), "{e}");
+        }
+        let big = dir.join("big.toml");
+        std::fs::File::create(&big)
+            .unwrap()
+            .set_len(MAX_SCENE_FILE_BYTES + 1)
+            .unwrap();
+        let e = load_file(&big).unwrap_err();
+        assert!(e.message.contains("at most 16 MiB"), "{e}");
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]
