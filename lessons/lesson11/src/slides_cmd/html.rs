@@ -398,6 +398,27 @@ mod tests {
     }
 
     #[test]
+    fn hand_drawn_figures_leave_the_text_and_join_the_pictures() {
+        let html = markdown_to_html(
+            "- a $\\omega_i$\n\n<figure class=\"drawing\"><svg viewBox=\"0 0 4 2\"><text>ω<tspan>i</tspan></text></svg><figcaption>c</figcaption></figure>\n",
+        )
+        .unwrap();
+        let (text, drawings) = take_drawings(&html).unwrap();
+        assert!(
+            text.contains("<li>a <math>") && !text.contains("figure"),
+            "{text}"
+        );
+        assert_eq!(drawings.len(), 1);
+        assert!(
+            drawings[0].starts_with("<figure class=\"drawing\"><svg viewBox=\"0 0 4 2\">")
+                && drawings[0].ends_with("</figure>"),
+            "Markdown keeps the drawing as it is: {}",
+            drawings[0]
+        );
+        assert!(take_drawings("<figure class=\"drawing\"><svg>").is_err());
+    }
+
+    #[test]
     fn unclosed_and_unknown_formulas_are_errors() {
         assert!(
             markdown_to_html("a $x")
