@@ -9,7 +9,7 @@ use raytracer::math::{Color, Ray, UVec2};
 use raytracer::sampling::Sampler;
 use raytracer::scene::{Interaction, Scene};
 
-use crate::{ex01_stereo_eyes, ex02_anaglyph, ex08_naive_recursive, ex09_path_tracing, ex10_nee};
+use crate::{ex01_stereo_eyes, ex02_anaglyph, ex10_naive_recursive, ex11_path_tracing, ex12_nee};
 
 /// The two cameras of a stereo pair ("parallel" method): each eye from
 /// exercise 1, looking in the same direction as the middle camera.
@@ -41,7 +41,7 @@ pub fn anaglyph_image(left: &Image, right: &Image, desaturation: f32) -> Image {
     })
 }
 
-/// Naive recursive Monte Carlo with the student's `naive_radiance` (exercise 8).
+/// Naive recursive Monte Carlo with the student's `naive_radiance` (exercise 10).
 #[derive(Clone, Copy, Debug)]
 pub struct StudentNaive {
     pub max_depth: u32,
@@ -61,7 +61,7 @@ impl Integrator for StudentNaive {
         _: &mut Vec<Splat>,
     ) -> Color {
         let ray = camera_ray(scene, pixel, sampler);
-        ex08_naive_recursive::naive_radiance(
+        ex10_naive_recursive::naive_radiance(
             scene,
             &ray,
             0,
@@ -72,13 +72,13 @@ impl Integrator for StudentNaive {
     }
 }
 
-/// The signature of exercise 9's `path_radiance`.
+/// The signature of exercise 11's `path_radiance`.
 pub type PathRadianceFn = fn(&Scene, Ray, Option<u32>, u32, &mut Sampler) -> Color;
 
-/// The signature of exercise 10's `estimate_direct`.
+/// The signature of exercise 12's `estimate_direct`.
 pub type EstimateDirectFn = fn(&Scene, &Interaction, &mut Sampler) -> Color;
 
-/// The path tracer around a `path_radiance` (exercise 9): the student's with
+/// The path tracer around a `path_radiance` (exercise 11): the student's with
 /// [`StudentPathTracer::new`], or any other with the same signature (the
 /// grader's fixtures).
 #[derive(Clone, Copy, Debug)]
@@ -92,7 +92,7 @@ impl StudentPathTracer {
     /// The student's path tracer.
     pub fn new(max_depth: Option<u32>, rr_depth: u32) -> Self {
         StudentPathTracer {
-            path_radiance: ex09_path_tracing::path_radiance,
+            path_radiance: ex11_path_tracing::path_radiance,
             max_depth,
             rr_depth,
         }
@@ -117,7 +117,7 @@ impl Integrator for StudentPathTracer {
 }
 
 /// Direct light by next event estimation only, around an `estimate_direct`
-/// (exercise 10; the student's by `Default`): emitters seen directly plus one
+/// (exercise 12; the student's by `Default`): emitters seen directly plus one
 /// light sample at the first hit (the renderer's `PathTracer` with
 /// `max_depth = 2` and `DirectStrategy::LightOnly` computes the same).
 #[derive(Clone, Copy, Debug)]
@@ -125,7 +125,7 @@ pub struct StudentDirect(pub EstimateDirectFn);
 
 impl Default for StudentDirect {
     fn default() -> Self {
-        StudentDirect(ex10_nee::estimate_direct)
+        StudentDirect(ex12_nee::estimate_direct)
     }
 }
 

@@ -53,10 +53,10 @@ fn exercise(number: usize) -> Result<Exercise> {
 pub fn run_exercises(_: &ExercisesArgs) -> Result<()> {
     let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
     let results = grading::grade_all(threads, grading::TIMEOUT);
-    print!("{}", grading::progress_report(&results));
     println!(
-        "Grade: `cargo test` · hints: `lesson11 hint N` · a solution once it passes: `lesson11 solution N`"
+        "Grade: `cargo test -p grading --test exercises` · hints: `lesson11 hint N` · a solution once it passes: `lesson11 solution N`"
     );
+    print!("{}", grading::progress_report(&results));
     Ok(())
 }
 
@@ -153,8 +153,8 @@ pub fn run_solution(args: &SolutionArgs) -> Result<()> {
     }
 }
 
-/// `lesson11 render --student`: the student's integrator (exercise 8, 9 or
-/// 10, by `--integrator`) beside the reference, and their tile z-test.
+/// `lesson11 render --student`: the student's integrator (exercise 10, 11 or
+/// 12, by `--integrator`) beside the reference, and their tile z-test.
 pub fn render_student(args: &RenderArgs) -> Result<()> {
     let (scene, options) = args.scene.load("cornell")?;
     let ia = &args.integrator_args;
@@ -166,22 +166,22 @@ pub fn render_student(args: &RenderArgs) -> Result<()> {
     let rr_depth = ia.rr_depth.unwrap_or(scene.settings.rr_depth);
     let (exercise, student): (&str, Box<dyn Integrator>) = match args.integrator {
         IntegratorKind::Path | IntegratorKind::PathBrdf => (
-            "ex09_path_tracing",
+            "ex11_path_tracing",
             Box::new(StudentPathTracer::new(max_depth, rr_depth)),
         ),
         IntegratorKind::Naive => (
-            "ex08_naive_recursive",
+            "ex10_naive_recursive",
             Box::new(StudentNaive {
                 max_depth: max_depth.unwrap_or(4),
                 branching: ia.branching.first().copied().unwrap_or(8),
             }),
         ),
         IntegratorKind::Direct | IntegratorKind::PathNee => {
-            ("ex10_nee", Box::new(StudentDirect::default()))
+            ("ex12_nee", Box::new(StudentDirect::default()))
         }
         IntegratorKind::Ao | IntegratorKind::Light | IntegratorKind::Bdpt => bail!(
             "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
-             (light tracing and bidirectional tracing are graded piece by piece: exercises 12 and 13)"
+             (light tracing and bidirectional tracing are graded piece by piece: exercises 14 and 15)"
         ),
     };
     let outcome = grading::grade_exercise(exercise).unwrap_or(Outcome::NotStarted(None));
