@@ -44,6 +44,7 @@ pub mod outcome;
 pub mod pictures;
 pub mod polygon;
 pub mod stats;
+pub mod texts;
 
 pub use exercises;
 pub use outcome::{Outcome, grade};
