@@ -45,6 +45,7 @@ pub mod pictures;
 pub mod polygon;
 pub mod stats;
 pub mod texts;
+pub mod watch;
 
 pub use exercises;
 pub use outcome::{Outcome, grade};
