@@ -4,7 +4,7 @@
 
 use raytracer::camera::{Camera, CameraParams};
 use raytracer::film::{Image, Splat};
-use raytracer::integrator::{Integrator, camera_ray};
+use raytracer::integrator::{DirectStrategy, Integrator, NaiveRecursive, PathTracer, camera_ray};
 use raytracer::math::{Color, Ray, UVec2};
 use raytracer::sampling::Sampler;
 use raytracer::scene::{Interaction, Scene};
@@ -146,5 +146,89 @@ impl Integrator for StudentDirect {
             return scene.escaped_radiance(ray.d);
         };
         scene.emitted(&it) + (self.0)(scene, &it, sampler)
+    }
+}
+
+/// What `lesson11 render --student` renders: one of the exercises that are
+/// whole integrators, with the renderer's integrator that computes the same
+/// estimator beside it, so that the two pictures compare like with like
+/// (the same expected value *and* the same kind of noise).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StudentRender {
+    /// Exercise 10: naive recursion with one branching factor.
+    Naive { max_depth: u32, branching: u32 },
+    /// Exercise 11: path tracing with BRDF sampling only.
+    Path {
+        max_depth: Option<u32>,
+        rr_depth: u32,
+    },
+    /// Exercise 12: direct light by next event estimation only.
+    Direct,
+}
+
+impl StudentRender {
+    /// The exercise's name in the registry.
+    pub fn exercise(&self) -> &'static str {
+        match self {
+            StudentRender::Naive { .. } => "ex10_naive_recursive",
+            StudentRender::Path { .. } => "ex11_path_tracing",
+            StudentRender::Direct => "ex12_nee",
+        }
+    }
+
+    /// The student's integrator.
+    pub fn student(&self) -> Box<dyn Integrator> {
+        match *self {
+            StudentRender::Naive {
+                max_depth,
+                branching,
+            } => Box::new(StudentNaive {
+                max_depth,
+                branching,
+            }),
+            StudentRender::Path {
+                max_depth,
+                rr_depth,
+            } => Box::new(StudentPathTracer::new(max_depth, rr_depth)),
+            StudentRender::Direct => Box::new(StudentDirect::default()),
+        }
+    }
+
+    /// The renderer's integrator with the same estimator.
+    pub fn reference(&self) -> Box<dyn Integrator> {
+        match *self {
+            StudentRender::Naive {
+                max_depth,
+                branching,
+            } => Box::new(NaiveRecursive::new(vec![branching], Some(max_depth))),
+            StudentRender::Path {
+                max_depth,
+                rr_depth,
+            } => Box::new(PathTracer {
+                max_depth,
+                rr_depth,
+                strategy: DirectStrategy::BrdfOnly,
+            }),
+            StudentRender::Direct => Box::new(PathTracer {
+                max_depth: Some(2),
+                rr_depth: u32::MAX,
+                strategy: DirectStrategy::LightOnly,
+            }),
+        }
+    }
+
+    /// Which reference it is, and why that one.
+    pub fn reference_note(&self) -> &'static str {
+        match self {
+            StudentRender::Naive { .. } => {
+                "the renderer's naive recursion with the same branching factor and max depth"
+            }
+            StudentRender::Path { .. } => {
+                "the renderer's path tracer with BRDF sampling only (`--integrator path-brdf`), the estimator exercise 11 asks for: the same noise is expected. The MIS path tracer (`path`) has the same mean with far less noise, so it would look better than a correct solution"
+            }
+            StudentRender::Direct => {
+                "the renderer's direct light by light sampling only (path-nee at max depth 2), the estimator exercise 12 asks for; `--integrator direct` adds BRDF sampling under MIS: the same mean, less noise"
+            }
+        }
     }
 }

@@ -11,9 +11,8 @@ use std::path::PathBuf;
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use exercises::Exercise;
-use exercises::plug::{StudentDirect, StudentNaive, StudentPathTracer};
+use exercises::plug::StudentRender;
 use grading::Outcome;
-use raytracer::integrator::Integrator;
 use raytracer::metrics::{z_test, z_threshold};
 use raytracer::render::render;
 
@@ -162,7 +161,8 @@ pub fn run_solution(args: &SolutionArgs) -> Result<()> {
 }
 
 /// `lesson11 render --student`: the student's integrator (exercise 10, 11 or
-/// 12, by `--integrator`) beside the reference, and their tile z-test.
+/// 12, by `--integrator`) beside the renderer's integrator with the same
+/// estimator, and their tile z-test.
 pub fn render_student(args: &RenderArgs) -> Result<()> {
     let (scene, options) = args.scene.load("cornell")?;
     let ia = &args.integrator_args;
@@ -172,26 +172,23 @@ pub fn render_student(args: &RenderArgs) -> Result<()> {
         None => scene.settings.max_depth,
     };
     let rr_depth = ia.rr_depth.unwrap_or(scene.settings.rr_depth);
-    let (exercise, student): (&str, Box<dyn Integrator>) = match args.integrator {
-        IntegratorKind::Path | IntegratorKind::PathBrdf => (
-            "ex11_path_tracing",
-            Box::new(StudentPathTracer::new(max_depth, rr_depth)),
-        ),
-        IntegratorKind::Naive => (
-            "ex10_naive_recursive",
-            Box::new(StudentNaive {
-                max_depth: max_depth.unwrap_or(4),
-                branching: ia.branching.first().copied().unwrap_or(8),
-            }),
-        ),
-        IntegratorKind::Direct | IntegratorKind::PathNee => {
-            ("ex12_nee", Box::new(StudentDirect::default()))
-        }
+    let which = match args.integrator {
+        IntegratorKind::Path | IntegratorKind::PathBrdf => StudentRender::Path {
+            max_depth,
+            rr_depth,
+        },
+        IntegratorKind::Naive => StudentRender::Naive {
+            max_depth: max_depth.unwrap_or(4),
+            branching: ia.branching.first().copied().unwrap_or(8),
+        },
+        IntegratorKind::Direct | IntegratorKind::PathNee => StudentRender::Direct,
         IntegratorKind::Ao | IntegratorKind::Light | IntegratorKind::Bdpt => bail!(
             "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
              (light tracing and bidirectional tracing are graded piece by piece: exercises 14 and 15)"
         ),
     };
+    let exercise = which.exercise();
+    let (student, reference) = (which.student(), which.reference());
     let outcome = grading::grade_exercise(exercise).unwrap_or(Outcome::NotStarted(None));
     if outcome.is_not_started() {
         bail!(
@@ -199,7 +196,7 @@ pub fn render_student(args: &RenderArgs) -> Result<()> {
         );
     }
     println!("{exercise}: {outcome}");
-    let reference = args.integrator.build(ia, &scene);
+    println!("  beside it: {}", which.reference_note());
     let out = &args.scene.out;
     let stem = format!("{}-{}", scene.name, reference.name());
     render_to_files(
