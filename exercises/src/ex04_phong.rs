@@ -1,34 +1,42 @@
 //! Exercise 4 — the normalized Phong lobe.
 //!
-//! Slides: "Examples of BRDFs" ("Примери за BRDF"): the glossy BRDF
-//! `f_r = S(n) · max(0, cos∠(reflect(ω_i), ω_o))^n`, where `S(n)` is a
-//! normalizing constant meant to conserve energy; and "Properties of BRDFs"
-//! ("Свойства на BRDF-ите"): `∫_Ω f_r cos θ dω ≤ 1`, which is why `1/π` and
-//! `S(n)` exist.
+//! Slides: "BRDF examples" ("Примери за BRDF"), "Properties of BRDFs" ("Свойства на BRDF-ите").
 //!
-//! Task, part 1: `phong_normalization(n)` returns the `S(n)` that makes the
-//! directional albedo `∫ f_r cos θ_i dω_i` of the lobe exactly 1 at normal
-//! incidence (`ω_o = +z`, so that the mirror direction is the normal and
-//! α = θ_i). Hint: `∫_{H²} cos^{n+1}θ dω = 2π ∫_0^1 t^{n+1} dt`.
+//! The lecture's glossy BRDF is `f_r = S(n) · max(0, cos∠(reflect(ω_i),
+//! ω_o))^n`, with `S(n)` "a normalizing constant meant to conserve energy".
+//! Directions point away from the surface (`ω_o` towards the viewer, `ω_i`
+//! towards the light), and `reflect(ω) = 2(ω·n)n − ω` mirrors a direction
+//! about the normal. A reflection keeps angles and is its own inverse, so
+//! the slide's angle between `reflect(ω_i)` and `ω_o` is the angle α between
+//! `ω_i` and `reflect(ω_o)`. We add the specular albedo ρ_s as a factor.
 //!
-//! Part 2: `phong_eval(albedo, n, wo, wi)` returns
-//! `albedo · S(n) · max(0, cos α)^n`, α the angle between `wi` and the mirror
-//! direction of `wo` about the normal. Local frame (normal `+z`); both
-//! directions are in the upper hemisphere (the renderer checks that).
+//! Part 1: `phong_normalization(n)` returns the `S(n)` that makes the
+//! directional albedo `∫_Ω f_r cos θ_i dω_i` of the lobe with ρ_s = 1
+//! exactly 1 at normal incidence (`ω_o = +z`, the normal). At other angles
+//! part of the lobe falls below the horizon and the albedo is less than ρ_s
+//! (exercise 9 measures it at 75°): `S(n)` keeps the energy exactly only at
+//! normal incidence, and below it elsewhere.
 //!
-//! Receives: the exponent `n ≥ 0` (and the specular albedo ρ_s, `wo`, `wi`).
-//! Returns: `S(n)`, and `f_r`.
+//! Part 2: `phong_eval(albedo, n, wo, wi)` returns `f_r = ρ_s · S(n) ·
+//! max(0, cos α)^n` in the local frame (normal `+z`); both directions lie in
+//! the upper hemisphere (the renderer checks that).
+//!
+//! `f_r` is a density in sr⁻¹, not a probability: at the centre of the lobe
+//! it is ρ_s·S(n), far above 1 for a narrow lobe.
+//!
+//! Receives: the exponent `n ≥ 0` (and ρ_s, `wo`, `wi`). Returns: `S(n)`,
+//! and `f_r`.
 
 use raytracer::math::{Color, Vec3A};
 
 /// `S(n)`: the normalization of the Phong lobe `cos^n α`.
 pub fn phong_normalization(n: f32) -> f32 {
-    // TODO: work out ∫ cos^n θ · cos θ dω over the hemisphere, take 1 over it.
+    // TODO: the albedo at normal incidence is S(n) times an integral; make it 1.
     todo!()
 }
 
-/// `f_r(ω_i → ω_o) = ρ_s · S(n) · max(0, cos α)^n`.
+/// `f_r(ω_i, ω_o) = ρ_s · S(n) · max(0, cos α)^n`.
 pub fn phong_eval(albedo: Color, n: f32, wo: Vec3A, wi: Vec3A) -> Color {
-    // TODO: the mirror direction of wo about +z is (−wo.x, −wo.y, wo.z).
+    // TODO: α is measured from the mirror direction of wo.
     todo!()
 }

@@ -36,32 +36,38 @@ pub mod ex03_lambert;
 #[cfg_attr(feature = "solutions", path = "../solutions/ex04_phong.rs")]
 pub mod ex04_phong;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex05_mirror.rs")]
-pub mod ex05_mirror;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex05_cone_lobe.rs")]
+pub mod ex05_cone_lobe;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex06_cosine_sampling.rs")]
-pub mod ex06_cosine_sampling;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex06_mirror.rs")]
+pub mod ex06_mirror;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex07_albedo.rs")]
-pub mod ex07_albedo;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex07_cosine_sampling.rs")]
+pub mod ex07_cosine_sampling;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex08_naive_recursive.rs")]
-pub mod ex08_naive_recursive;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex08_phong_lobe_pdf.rs")]
+pub mod ex08_phong_lobe_pdf;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex09_path_tracing.rs")]
-pub mod ex09_path_tracing;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex09_albedo.rs")]
+pub mod ex09_albedo;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex10_nee.rs")]
-pub mod ex10_nee;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex10_naive_recursive.rs")]
+pub mod ex10_naive_recursive;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex11_mis.rs")]
-pub mod ex11_mis;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex11_path_tracing.rs")]
+pub mod ex11_path_tracing;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex12_light_tracing.rs")]
-pub mod ex12_light_tracing;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex12_nee.rs")]
+pub mod ex12_nee;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex13_bdpt_connection.rs")]
-pub mod ex13_bdpt_connection;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex13_mis.rs")]
+pub mod ex13_mis;
+#[allow(unused_variables)]
+#[cfg_attr(feature = "solutions", path = "../solutions/ex14_light_tracing.rs")]
+pub mod ex14_light_tracing;
+#[allow(unused_variables)]
+#[cfg_attr(feature = "solutions", path = "../solutions/ex15_bdpt_connection.rs")]
+pub mod ex15_bdpt_connection;
 
 /// The module names, in lecture order (they match `info.toml`).
 pub const MODULES: &[&str] = &[
@@ -69,15 +75,17 @@ pub const MODULES: &[&str] = &[
     "ex02_anaglyph",
     "ex03_lambert",
     "ex04_phong",
-    "ex05_mirror",
-    "ex06_cosine_sampling",
-    "ex07_albedo",
-    "ex08_naive_recursive",
-    "ex09_path_tracing",
-    "ex10_nee",
-    "ex11_mis",
-    "ex12_light_tracing",
-    "ex13_bdpt_connection",
+    "ex05_cone_lobe",
+    "ex06_mirror",
+    "ex07_cosine_sampling",
+    "ex08_phong_lobe_pdf",
+    "ex09_albedo",
+    "ex10_naive_recursive",
+    "ex11_path_tracing",
+    "ex12_nee",
+    "ex13_mis",
+    "ex14_light_tracing",
+    "ex15_bdpt_connection",
 ];
 
 /// Whether this build uses the reference solutions (feature `solutions`).

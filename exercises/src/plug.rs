@@ -4,12 +4,12 @@
 
 use raytracer::camera::{Camera, CameraParams};
 use raytracer::film::{Image, Splat};
-use raytracer::integrator::{Integrator, camera_ray};
+use raytracer::integrator::{DirectStrategy, Integrator, NaiveRecursive, PathTracer, camera_ray};
 use raytracer::math::{Color, Ray, UVec2};
 use raytracer::sampling::Sampler;
 use raytracer::scene::{Interaction, Scene};
 
-use crate::{ex01_stereo_eyes, ex02_anaglyph, ex08_naive_recursive, ex09_path_tracing, ex10_nee};
+use crate::{ex01_stereo_eyes, ex02_anaglyph, ex10_naive_recursive, ex11_path_tracing, ex12_nee};
 
 /// The two cameras of a stereo pair ("parallel" method): each eye from
 /// exercise 1, looking in the same direction as the middle camera.
@@ -41,7 +41,7 @@ pub fn anaglyph_image(left: &Image, right: &Image, desaturation: f32) -> Image {
     })
 }
 
-/// Naive recursive Monte Carlo with the student's `naive_radiance` (exercise 8).
+/// Naive recursive Monte Carlo with the student's `naive_radiance` (exercise 10).
 #[derive(Clone, Copy, Debug)]
 pub struct StudentNaive {
     pub max_depth: u32,
@@ -61,7 +61,7 @@ impl Integrator for StudentNaive {
         _: &mut Vec<Splat>,
     ) -> Color {
         let ray = camera_ray(scene, pixel, sampler);
-        ex08_naive_recursive::naive_radiance(
+        ex10_naive_recursive::naive_radiance(
             scene,
             &ray,
             0,
@@ -72,13 +72,13 @@ impl Integrator for StudentNaive {
     }
 }
 
-/// The signature of exercise 9's `path_radiance`.
+/// The signature of exercise 11's `path_radiance`.
 pub type PathRadianceFn = fn(&Scene, Ray, Option<u32>, u32, &mut Sampler) -> Color;
 
-/// The signature of exercise 10's `estimate_direct`.
+/// The signature of exercise 12's `estimate_direct`.
 pub type EstimateDirectFn = fn(&Scene, &Interaction, &mut Sampler) -> Color;
 
-/// The path tracer around a `path_radiance` (exercise 9): the student's with
+/// The path tracer around a `path_radiance` (exercise 11): the student's with
 /// [`StudentPathTracer::new`], or any other with the same signature (the
 /// grader's fixtures).
 #[derive(Clone, Copy, Debug)]
@@ -92,7 +92,7 @@ impl StudentPathTracer {
     /// The student's path tracer.
     pub fn new(max_depth: Option<u32>, rr_depth: u32) -> Self {
         StudentPathTracer {
-            path_radiance: ex09_path_tracing::path_radiance,
+            path_radiance: ex11_path_tracing::path_radiance,
             max_depth,
             rr_depth,
         }
@@ -117,7 +117,7 @@ impl Integrator for StudentPathTracer {
 }
 
 /// Direct light by next event estimation only, around an `estimate_direct`
-/// (exercise 10; the student's by `Default`): emitters seen directly plus one
+/// (exercise 12; the student's by `Default`): emitters seen directly plus one
 /// light sample at the first hit (the renderer's `PathTracer` with
 /// `max_depth = 2` and `DirectStrategy::LightOnly` computes the same).
 #[derive(Clone, Copy, Debug)]
@@ -125,7 +125,7 @@ pub struct StudentDirect(pub EstimateDirectFn);
 
 impl Default for StudentDirect {
     fn default() -> Self {
-        StudentDirect(ex10_nee::estimate_direct)
+        StudentDirect(ex12_nee::estimate_direct)
     }
 }
 
@@ -146,5 +146,89 @@ impl Integrator for StudentDirect {
             return scene.escaped_radiance(ray.d);
         };
         scene.emitted(&it) + (self.0)(scene, &it, sampler)
+    }
+}
+
+/// What `lesson11 render --student` renders: one of the exercises that are
+/// whole integrators, with the renderer's integrator that computes the same
+/// estimator beside it, so that the two pictures compare like with like
+/// (the same expected value *and* the same kind of noise).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StudentRender {
+    /// Exercise 10: naive recursion with one branching factor.
+    Naive { max_depth: u32, branching: u32 },
+    /// Exercise 11: path tracing with BRDF sampling only.
+    Path {
+        max_depth: Option<u32>,
+        rr_depth: u32,
+    },
+    /// Exercise 12: direct light by next event estimation only.
+    Direct,
+}
+
+impl StudentRender {
+    /// The exercise's name in the registry.
+    pub fn exercise(&self) -> &'static str {
+        match self {
+            StudentRender::Naive { .. } => "ex10_naive_recursive",
+            StudentRender::Path { .. } => "ex11_path_tracing",
+            StudentRender::Direct => "ex12_nee",
+        }
+    }
+
+    /// The student's integrator.
+    pub fn student(&self) -> Box<dyn Integrator> {
+        match *self {
+            StudentRender::Naive {
+                max_depth,
+                branching,
+            } => Box::new(StudentNaive {
+                max_depth,
+                branching,
+            }),
+            StudentRender::Path {
+                max_depth,
+                rr_depth,
+            } => Box::new(StudentPathTracer::new(max_depth, rr_depth)),
+            StudentRender::Direct => Box::new(StudentDirect::default()),
+        }
+    }
+
+    /// The renderer's integrator with the same estimator.
+    pub fn reference(&self) -> Box<dyn Integrator> {
+        match *self {
+            StudentRender::Naive {
+                max_depth,
+                branching,
+            } => Box::new(NaiveRecursive::new(vec![branching], Some(max_depth))),
+            StudentRender::Path {
+                max_depth,
+                rr_depth,
+            } => Box::new(PathTracer {
+                max_depth,
+                rr_depth,
+                strategy: DirectStrategy::BrdfOnly,
+            }),
+            StudentRender::Direct => Box::new(PathTracer {
+                max_depth: Some(2),
+                rr_depth: u32::MAX,
+                strategy: DirectStrategy::LightOnly,
+            }),
+        }
+    }
+
+    /// Which reference it is, and why that one.
+    pub fn reference_note(&self) -> &'static str {
+        match self {
+            StudentRender::Naive { .. } => {
+                "the renderer's naive recursion with the same branching factor and max depth"
+            }
+            StudentRender::Path { .. } => {
+                "the renderer's path tracer with BRDF sampling only (`--integrator path-brdf`), the estimator exercise 11 asks for: the same noise is expected. The MIS path tracer (`path`) has the same mean with far less noise, so it would look better than a correct solution"
+            }
+            StudentRender::Direct => {
+                "the renderer's direct light by light sampling only (path-nee at max depth 2), the estimator exercise 12 asks for; `--integrator direct` adds BRDF sampling under MIS: the same mean, less noise"
+            }
+        }
     }
 }

@@ -2,8 +2,10 @@
 //! integrator is rendered at a small size with a fixed seed, and each tile's
 //! mean is compared with the reference's (the renderer's own integrator at
 //! many samples, stored as mean and variance EXR in `tests/references/`) by a
-//! z-test that uses both variances ([`raytracer::metrics::z_test`]). On failure the two pictures and a map of
-//! the tiles' |z| are written under `target/grading/`.
+//! z-test that uses both variances ([`raytracer::metrics::z_test`]). On
+//! failure the two pictures and a map of the tiles' |z| are written under
+//! `target/grading/`, enlarged (nearest neighbour) to at least
+//! [`crate::pictures::MIN_WIDTH`] pixels across so that they can be read.
 
 use raytracer::film::Image;
 use std::path::{Path, PathBuf};
@@ -13,6 +15,7 @@ use raytracer::metrics::{z_test, z_threshold};
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
 
+use crate::pictures::write_enlarged;
 use crate::stats::output_dir;
 
 /// Family-wise false-failure probability of one image comparison.
@@ -25,7 +28,7 @@ pub const REFERENCE_SPP: u32 = 4096;
 /// Settings of a comparison, and the renderer's integrator that makes its
 /// reference.
 pub struct Comparison {
-    /// For file names, e.g. `ex09_cornell`.
+    /// For file names, e.g. `ex11_cornell`.
     pub name: &'static str,
     pub scene: &'static str,
     pub size: u32,
@@ -35,7 +38,7 @@ pub struct Comparison {
     pub reference: PathTracer,
 }
 
-/// Exercise 9: the path tracer (the student samples BRDFs only). The
+/// Exercise 11: the path tracer (the student samples BRDFs only). The
 /// reference has the same expected value but uses MIS: BRDF sampling alone
 /// finds the small light rarely, and a reference with such heavy tails can
 /// miss light in a tile while its own variance estimate does not show it.
@@ -44,8 +47,8 @@ pub struct Comparison {
 /// z-test hold for the student's BRDF-only estimator too (8-pixel tiles at
 /// 64 spp failed 3 of 80 correct renders, at 256 spp and 16-pixel tiles none
 /// did, over 40 seeds of the reference solution and 40 of a variant).
-pub const EX09_CORNELL: Comparison = Comparison {
-    name: "ex09_cornell",
+pub const EX11_CORNELL: Comparison = Comparison {
+    name: "ex11_cornell",
     scene: "cornell",
     size: 32,
     tile: 16,
@@ -57,10 +60,10 @@ pub const EX09_CORNELL: Comparison = Comparison {
     },
 };
 
-/// Exercise 10: direct light by light sampling alone (the reference combines
+/// Exercise 12: direct light by light sampling alone (the reference combines
 /// light and BRDF sampling by MIS: the same expected value, lighter tails).
-pub const EX10_CORNELL_DIRECT: Comparison = Comparison {
-    name: "ex10_cornell_direct",
+pub const EX12_CORNELL_DIRECT: Comparison = Comparison {
+    name: "ex12_cornell_direct",
     scene: "cornell",
     size: 32,
     tile: 8,
@@ -73,7 +76,7 @@ pub const EX10_CORNELL_DIRECT: Comparison = Comparison {
 };
 
 /// Every comparison with a stored reference (`lesson11 references` renders them).
-pub const COMPARISONS: [&Comparison; 2] = [&EX09_CORNELL, &EX10_CORNELL_DIRECT];
+pub const COMPARISONS: [&Comparison; 2] = [&EX11_CORNELL, &EX12_CORNELL_DIRECT];
 
 fn options(spp: u32, seed: u64, progress: bool, label: &str) -> RenderOptions {
     RenderOptions {
@@ -144,6 +147,16 @@ pub fn compare_with_seed(
     student: &dyn Integrator,
     seed: u64,
 ) -> Result<(), String> {
+    compare_into(c, student, seed, &output_dir())
+}
+
+/// [`compare_with_seed`], writing the pictures of a failure into `dir`.
+pub fn compare_into(
+    c: &Comparison,
+    student: &dyn Integrator,
+    seed: u64,
+    dir: &Path,
+) -> Result<(), String> {
     let (bi, bv) = load_reference(c)?;
     let a = render(&scene(c)?, student, &options(c.spp, seed, false, ""));
     let (ai, av) = (a.film.image(), a.film.variance_image());
@@ -159,8 +172,7 @@ pub fn compare_with_seed(
     if z.max_abs_z <= threshold && a.film.nonfinite_count() == 0 {
         return Ok(());
     }
-    let dir = output_dir();
-    let written = write_images(&dir, c, &ai, &bi, &z.z, z.grid.x, threshold);
+    let written = write_images(dir, c, &ai, &bi, &z.z, z.grid.x, threshold);
     let mean = |img: &Image| raytracer::metrics::mean(img);
     let mut msg = if a.film.nonfinite_count() > 0 {
         format!(
@@ -199,12 +211,12 @@ fn write_images(
     threshold: f32,
 ) -> std::io::Result<()> {
     std::fs::create_dir_all(dir)?;
-    student.write_png(dir.join(format!("{}_student.png", c.name)), 0.0)?;
-    reference.write_png(dir.join(format!("{}_reference.png", c.name)), 0.0)?;
+    write_enlarged(student, &dir.join(format!("{}_student.png", c.name)))?;
+    write_enlarged(reference, &dir.join(format!("{}_reference.png", c.name)))?;
     // The error image: each pixel shows its tile's |z| / threshold (1 = just failing).
     let zmap = Image::from_fn(student.width, student.height, |x, y| {
         let t = (y / c.tile * grid_x + x / c.tile) as usize;
         z[t].abs() / threshold
     });
-    zmap.write_png(dir.join(format!("{}_z.png", c.name)), 0.0)
+    write_enlarged(&zmap, &dir.join(format!("{}_z.png", c.name)))
 }

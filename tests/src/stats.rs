@@ -57,6 +57,20 @@ impl MeanVar {
         self.m2.map(|m2| (m2 / (n - 1.0) / n).sqrt())
     }
 
+    /// Whether the mean of every channel is consistent with `value`: within
+    /// [`Z_MAX`] standard errors or 1e-4 relative (the same rule as
+    /// [`MeanVar::check`]). Used to recognise a known mistake by the value it
+    /// would give.
+    pub fn matches(&self, value: Color) -> bool {
+        let se = self.std_error();
+        self.nonfinite == 0
+            && (0..3).all(|k| {
+                let (m, e) = (self.mean[k], value[k] as f64);
+                let d = (m - e).abs();
+                d <= 1e-4 * e.abs().max(1.0) || d <= Z_MAX * se[k]
+            })
+    }
+
     /// Checks the mean against `exact` (see the module doc). `what` names the
     /// case in the failure message; `advice(ratio)` may add a likely cause
     /// from the ratio mean/exact of the worst channel.
@@ -80,14 +94,9 @@ impl MeanVar {
             // an estimator with (nearly) zero variance must be exact up to it.
             let bad = d > 1e-4 * e.abs().max(1.0) && d > Z_MAX * se[k];
             if bad {
-                let z = if se[k] > 0.0 {
-                    d / se[k]
-                } else {
-                    f64::INFINITY
-                };
                 let mut msg = format!(
-                    "{what}: your mean is {m:.4} ± {:.4} (channel {k}), expected {e:.4} (|z| = {z:.1} > {Z_MAX})",
-                    se[k]
+                    "{what}: your mean is {m:.4}, expected {e:.4} ({})",
+                    deviation(m, e, se[k])
                 );
                 if e != 0.0
                     && let Some(a) = advice(m / e)
@@ -99,6 +108,25 @@ impl MeanVar {
             }
         }
         Ok(())
+    }
+}
+
+/// How far a mean `m` with standard error `se` lies from `exact`, in words:
+/// the relative error, and the number of standard errors while that number
+/// means something. An estimator whose estimates barely vary (a standard
+/// error below 1e-6 of the value) gets no |z|, which would be huge or
+/// infinite: its difference is not noise.
+pub fn deviation(m: f64, exact: f64, se: f64) -> String {
+    let rel = if exact != 0.0 {
+        format!("relative error {:+.2}%", 100.0 * (m - exact) / exact.abs())
+    } else {
+        format!("error {:+.4}", m - exact)
+    };
+    if se <= 1e-6 * exact.abs().max(m.abs()).max(1e-12) {
+        format!("{rel}; your estimates barely vary (standard error {se:.1e}), so this is no noise")
+    } else {
+        let z = (m - exact).abs() / se;
+        format!("{rel}, {z:.1} standard errors of your own, more than the {Z_MAX} allowed")
     }
 }
 
@@ -125,11 +153,35 @@ pub fn ratio_near(ratio: f64, r: f64) -> bool {
 pub fn output_dir() -> PathBuf {
     let target = std::env::var_os("CARGO_TARGET_DIR")
         .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../target")));
+        .unwrap_or_else(|| {
+            let tests = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+            tests.parent().unwrap_or(tests).join("target")
+        });
     target.join("grading")
 }
 
 /// A colour for messages, 4 decimals.
 pub fn fmt3(c: Vec3A) -> String {
     format!("({:.4}, {:.4}, {:.4})", c.x, c.y, c.z)
+}
+
+/// A known mistake for deterministic answers: what it is called in a
+/// message, and what a solution that makes it answers in a case `C`.
+pub type Mistake<'a, C, T> = (&'a str, &'a dyn Fn(&C) -> T);
+
+/// The first of `mistakes` whose answers agree with the student's `got`
+/// (one per case, in order) in *every* case, by `same(got, answer)`.
+/// Checking all cases at once tells apart mistakes that coincide in one
+/// case (one cosine missing vs. the distance not squared, where 1/cos θ
+/// happens to equal r).
+pub fn recognise<C, T: Copy>(
+    cases: &[C],
+    got: &[T],
+    mistakes: &[Mistake<'_, C, T>],
+    same: impl Fn(T, T) -> bool,
+) -> Option<String> {
+    mistakes
+        .iter()
+        .find(|(_, answer)| cases.iter().zip(got).all(|(c, &g)| same(g, answer(c))))
+        .map(|(name, _)| name.to_string())
 }

@@ -1,11 +1,14 @@
-//! `cargo test` for the student: grades every exercise and prints the
-//! progress table (passed / failed with the reason / not started) and the
-//! next exercise. Fails only if an exercise fails: stubs that still say
-//! `todo!()` are "not started", so the pristine course is green.
+//! The student's grader: grades every exercise and prints the progress
+//! table (passed / failed with the reason / not started, and each one's
+//! time), then — last — the summary and the next step. Fails only if an
+//! exercise fails: stubs that still say `todo!()` are "not started", so the
+//! pristine course is green.
 //!
-//! Arguments that are not options filter the exercises by name
-//! (`cargo test -p grading --test exercises -- ex03`); libtest's options are
-//! accepted and ignored, `--list` lists the exercises.
+//! `cargo test -p grading --test exercises` runs this alone (a few seconds);
+//! arguments that are not options grade only the exercises whose names
+//! contain them (`… -- ex05`, as `lesson11 exercises --watch` does), with
+//! that exercise's verdict and its hint command. libtest's options are
+//! accepted and ignored; `--list` lists the exercises.
 
 use std::process::ExitCode;
 
@@ -32,21 +35,28 @@ fn main() -> ExitCode {
             filters.push(a);
         }
     }
-    let keep = |name: &str| filters.is_empty() || filters.iter().any(|f| name.contains(f.as_str()));
+    let keep = |e: &exercises::Exercise| {
+        filters.is_empty() || filters.iter().any(|f| e.name.contains(f.as_str()))
+    };
     if list {
-        for e in exercises::registry().iter().filter(|e| keep(&e.name)) {
+        for e in exercises::registry().iter().filter(|e| keep(e)) {
             println!("{}: test", e.name);
         }
         return ExitCode::SUCCESS;
     }
     let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
-    let mut results = grading::grade_all(threads, grading::TIMEOUT);
-    results.retain(|(e, _)| keep(&e.name));
+    let results = grading::grade_selected(keep, threads, grading::TIMEOUT);
     if exercises::SOLUTIONS {
         println!("(graded: the reference solutions, feature `solutions`)");
     }
-    print!("{}", grading::progress_report(&results));
-    if results.iter().any(|(_, o)| o.is_failed()) {
+    if filters.is_empty() {
+        print!("{}", grading::progress_report(&results));
+    } else {
+        print!("{}", grading::exercise_report(&results));
+    }
+    // Returning ends the process, and with it the thread of an exercise
+    // that timed out.
+    if results.iter().any(|g| g.outcome.is_failed()) {
         ExitCode::FAILURE
     } else {
         ExitCode::SUCCESS

@@ -16,7 +16,12 @@ use grading::Outcome;
 
 /// Show which exercises pass, fail or are not started, and the next one.
 #[derive(Args, Debug, Default)]
-pub struct ExercisesArgs {}
+pub struct ExercisesArgs {
+    /// Keep watching exercises/src/: grade an exercise again each time its
+    /// file is saved, with its verdict and the next hint command.
+    #[arg(long)]
+    pub watch: bool,
+}
 
 /// Show the next hint of exercise N (one more each time; --all for all of them).
 #[derive(Args, Debug)]
@@ -45,13 +50,16 @@ fn exercise(number: usize) -> Result<Exercise> {
         .with_context(|| format!("there is no exercise {number}: they are numbered 1 to {count}"))
 }
 
-pub fn run_exercises(_: &ExercisesArgs) -> Result<()> {
+pub fn run_exercises(args: &ExercisesArgs) -> Result<()> {
+    if args.watch {
+        return grading::watch::run().context("watching exercises/src/");
+    }
     let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
     let results = grading::grade_all(threads, grading::TIMEOUT);
-    print!("{}", grading::progress_report(&results));
     println!(
-        "Grade: `cargo test` · hints: `lesson11 hint N` · a solution once it passes: `lesson11 solution N`"
+        "Grade: `cargo test -p grading --test exercises` · on every save: `lesson11 exercises --watch` · hints: `lesson11 hint N` · a solution once it passes: `lesson11 solution N`"
     );
+    print!("{}", grading::progress_report(&results));
     Ok(())
 }
 

@@ -94,6 +94,23 @@ fn source_dir(given: Option<&Path>) -> Result<PathBuf> {
     bail!("cannot find the slides: run from the project folder or pass --src PATH/TO/slides")
 }
 
+/// The pictures that `src/NEEDED-PICTURES.md` lists: slides show them before
+/// the chapters make them (first cell of each table row, in backticks).
+pub fn needed_pictures(src: &Path) -> Result<Vec<String>> {
+    let file = src.join("NEEDED-PICTURES.md");
+    if !file.is_file() {
+        return Ok(Vec::new());
+    }
+    let text = std::fs::read_to_string(&file)
+        .with_context(|| format!("cannot read {}", file.display()))?;
+    Ok(text
+        .lines()
+        .filter_map(|l| l.trim().strip_prefix("| `"))
+        .filter_map(|l| l.split('`').next())
+        .map(String::from)
+        .collect())
+}
+
 /// Loads every language folder of `src` (or those named), checked against each other.
 pub fn load_decks(src: &Path, langs: &[String]) -> Result<Vec<Deck>> {
     let mut names: Vec<String> = if langs.is_empty() {
@@ -185,10 +202,12 @@ pub fn build(args: &SlidesArgs) -> Result<Vec<PathBuf>> {
     pictures.sort();
     pictures.dedup();
 
+    // Pictures the chapters do not make yet are shown as placeholders.
+    let needed = needed_pictures(&src)?;
     let missing = |out: &Path| -> Vec<String> {
         pictures
             .iter()
-            .filter(|p| !out.join(p).is_file())
+            .filter(|p| !out.join(p).is_file() && !needed.contains(p))
             .cloned()
             .collect()
     };
@@ -220,8 +239,26 @@ pub fn build(args: &SlidesArgs) -> Result<Vec<PathBuf>> {
 
     // Copy the pictures next to the decks, so that the slides folder stands alone.
     let slides_out = args.out.join("slides");
+    let not_yet: Vec<&str> = pictures
+        .iter()
+        .filter(|p| !args.out.join(p).is_file())
+        .map(String::as_str)
+        .collect();
+    if !not_yet.is_empty() {
+        println!(
+            "{} pictures are not made by the chapters yet (slides/NEEDED-PICTURES.md): \
+             shown as placeholders: {}",
+            not_yet.len(),
+            not_yet.join(", ")
+        );
+    }
     for p in &pictures {
         let to = slides_out.join("img").join(p);
+        if not_yet.contains(&p.as_str()) {
+            // No stale copy from an earlier build may stand in for it.
+            let _ = std::fs::remove_file(&to);
+            continue;
+        }
         if let Some(parent) = to.parent() {
             create_dir(parent)?;
         }

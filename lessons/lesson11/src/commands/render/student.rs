@@ -2,9 +2,8 @@
 //! the reference one, and the grader's tile z-test between the two.
 
 use anyhow::{Result, bail};
-use exercises::plug::{StudentDirect, StudentNaive, StudentPathTracer};
+use exercises::plug::StudentRender;
 use grading::Outcome;
-use raytracer::integrator::Integrator;
 use raytracer::metrics::{z_test, z_threshold};
 use raytracer::render::render;
 
@@ -12,8 +11,9 @@ use crate::integrators::{IntegratorArgs, IntegratorKind};
 use crate::options::SceneArgs;
 use crate::render_files::render_to_files;
 
-/// The student's integrator (exercise 8, 9 or 10, by `--integrator`)
-/// beside the reference, and their tile z-test.
+/// The student's integrator (exercise 10, 11 or 12, by `--integrator`)
+/// beside the renderer's integrator with the same estimator, and their tile
+/// z-test.
 pub fn run(
     scene_args: &SceneArgs,
     integrator: IntegratorKind,
@@ -21,30 +21,28 @@ pub fn run(
     exposure: f32,
 ) -> Result<()> {
     let (scene, options) = scene_args.load("cornell")?;
-    // Built first: its checks of the options apply to the student's too.
-    let reference = integrator.build(ia, &scene, &options, scene_args.force)?;
+    // The checks of the options (naive recursion's ray budget among them)
+    // apply to the student's integrator as to the renderer's.
+    integrator.build(ia, &scene, &options, scene_args.force)?;
     let max_depth = ia.max_depth(integrator, &scene)?;
     let rr_depth = ia.rr_depth(&scene);
-    let (exercise, student): (&str, Box<dyn Integrator>) = match integrator {
-        IntegratorKind::Path | IntegratorKind::PathBrdf => (
-            "ex09_path_tracing",
-            Box::new(StudentPathTracer::new(max_depth, rr_depth)),
-        ),
-        IntegratorKind::Naive => (
-            "ex08_naive_recursive",
-            Box::new(StudentNaive {
-                max_depth: max_depth.unwrap_or(crate::integrators::NAIVE_DEFAULT_DEPTH),
-                branching: ia.branching()[0],
-            }),
-        ),
-        IntegratorKind::Direct | IntegratorKind::PathNee => {
-            ("ex10_nee", Box::new(StudentDirect::default()))
-        }
+    let which = match integrator {
+        IntegratorKind::Path | IntegratorKind::PathBrdf => StudentRender::Path {
+            max_depth,
+            rr_depth,
+        },
+        IntegratorKind::Naive => StudentRender::Naive {
+            max_depth: max_depth.unwrap_or(crate::integrators::NAIVE_DEFAULT_DEPTH),
+            branching: ia.branching()[0],
+        },
+        IntegratorKind::Direct | IntegratorKind::PathNee => StudentRender::Direct,
         IntegratorKind::Ao | IntegratorKind::Light | IntegratorKind::Bdpt => bail!(
             "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
-             (light tracing and bidirectional tracing are graded piece by piece: exercises 12 and 13)"
+             (light tracing and bidirectional tracing are graded piece by piece: exercises 14 and 15)"
         ),
     };
+    let exercise = which.exercise();
+    let (student, reference) = (which.student(), which.reference());
     let outcome = grading::grade_exercise(exercise).unwrap_or(Outcome::NotStarted(None));
     if outcome.is_not_started() {
         bail!(
@@ -52,6 +50,7 @@ pub fn run(
         );
     }
     println!("{exercise}: {outcome}");
+    println!("  beside it: {}", which.reference_note());
     let out = &scene_args.out;
     let stem = format!("{}-{}", scene.name, reference.name());
     render_to_files(

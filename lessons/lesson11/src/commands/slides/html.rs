@@ -1,6 +1,20 @@
 //! The HTML deck: one `<section>` per slide, formulas as MathML, pictures
 //! linked relative to the deck, keyboard navigation and one slide per printed
 //! page. One file, no network: the only script is inline.
+//!
+//! Every slide must fit the screen. The pictures share the space left by the
+//! text (a grid whose cells shrink, each picture scaled to fit its cell), and
+//! the deck measures itself: opened with `#check` (`index.html#check`), the
+//! script shows every slide in turn, finds each element that runs off the
+//! slide, overlaps the title or the footer, is cut off or squeezed too small,
+//! and writes the list into `<pre id="overflow">`, which headless Chromium's
+//! `--dump-dom` reads (see `lessons/lesson11/tests/slides.rs`).
+//!
+//! A drawing written by hand into the Markdown as raw HTML,
+//! `<figure class="drawing"><svg …>…</svg><figcaption>…</figcaption></figure>`
+//! (no blank line inside), is laid out with the pictures. A picture that the
+//! chapters do not render yet (listed in `slides/NEEDED-PICTURES.md`) shows as
+//! a dashed placeholder naming its file.
 
 use std::fmt::Write as _;
 
@@ -18,6 +32,8 @@ pub struct Words {
     pub exercise: &'static str,
     pub exercises: &'static str,
     pub keys: &'static str,
+    /// Shown in place of a picture that is not rendered yet.
+    pub missing: &'static str,
 }
 
 impl Words {
@@ -30,6 +46,7 @@ impl Words {
                 exercise: "Упражнение",
                 exercises: "Упражнения",
                 keys: "← → PageUp PageDown: смяна на слайда · Home End: първи и последен · Ctrl+P: печат по един слайд на страница",
+                missing: "картината още не е рендерирана",
             },
             _ => Words {
                 title: "Lecture 11: stereoscopy and global illumination",
@@ -38,6 +55,7 @@ impl Words {
                 exercise: "Exercise",
                 exercises: "Exercises",
                 keys: "← → PageUp PageDown: change slides · Home End: first and last · Ctrl+P: print one slide per page",
+                missing: "not rendered yet",
             },
         }
     }
@@ -124,6 +142,30 @@ pub fn markdown_to_html(md: &str) -> Result<String> {
     Ok(html)
 }
 
+/// Takes the hand-drawn figures (`<figure class="drawing">…</figure>`, raw
+/// HTML in the Markdown) out of a slide's HTML, so that they are laid out with
+/// the pictures; returns the rest and the drawings.
+fn take_drawings(html: &str) -> Result<(String, Vec<String>)> {
+    const OPEN: &str = "<figure class=\"drawing\"";
+    const CLOSE: &str = "</figure>";
+    let mut rest = String::new();
+    let mut drawings = Vec::new();
+    let mut s = html;
+    while let Some(start) = s.find(OPEN) {
+        rest.push_str(&s[..start]);
+        let Some(len) = s[start..].find(CLOSE) else {
+            bail!(
+                "a <figure class=\"drawing\"> is not closed by </figure> (keep it free of blank lines)"
+            );
+        };
+        let end = start + len + CLOSE.len();
+        drawings.push(s[start..end].to_string());
+        s = &s[end..];
+    }
+    rest.push_str(s);
+    Ok((rest, drawings))
+}
+
 fn slide_html(
     out: &mut String,
     slide: &Slide,
@@ -133,24 +175,32 @@ fn slide_html(
     img_prefix: &str,
 ) -> Result<()> {
     let body = markdown_to_html(&slide.body).with_context(|| slide.origin.clone())?;
+    let (body, drawings) = take_drawings(&body).with_context(|| slide.origin.clone())?;
+    let figures = slide.images.len() + drawings.len();
+    // One figure sits beside the text; several go in a row under it.
+    let layout = if figures > 1 { " stack" } else { "" };
     let _ = write!(
         out,
-        "<section class=\"slide\" id=\"s{id}\">\n<h1>{}</h1>\n<div class=\"content\">",
+        "<section class=\"slide\" id=\"s{id}\">\n<h1>{}</h1>\n<div class=\"content{layout}\">",
         escape(&slide.title)
     );
     if !body.trim().is_empty() {
         let _ = write!(out, "<div class=\"text\">{body}</div>");
     }
-    if !slide.images.is_empty() {
-        let many = if slide.images.len() > 2 { " many" } else { "" };
-        let _ = write!(out, "<div class=\"figures{many}\">");
+    if figures > 0 {
+        let _ = write!(out, "<div class=\"figures\" style=\"--cols:{figures}\">");
+        for d in &drawings {
+            out.push_str(d);
+        }
         for img in &slide.images {
             let _ = write!(
                 out,
-                "<figure><img src=\"{p}{src}\" alt=\"{cap}\"><figcaption>{cap}</figcaption></figure>",
+                "<figure data-missing=\"{missing}: {src}\"><img src=\"{p}{src}\" alt=\"{cap}\" \
+                 onerror=\"this.parentNode.classList.add('missing')\"><figcaption>{cap}</figcaption></figure>",
                 p = img_prefix,
                 src = escape(&img.path),
-                cap = escape(&img.caption)
+                cap = escape(&img.caption),
+                missing = escape(words.missing),
             );
         }
         out.push_str("</div>");
@@ -180,47 +230,66 @@ fn slide_html(
     Ok(())
 }
 
+/// Sizes follow the smaller of the screen's height and width, so that a 4:3
+/// screen gets the same lines as a 16:9 one.
 const STYLE: &str = r#"
+:root{--fs:min(2.6vh,1.55vw)}
 html,body{margin:0;background:#1d1f24}
-section.slide{box-sizing:border-box;width:100vw;height:100vh;display:flex;flex-direction:column;padding:4vh 5vw 2vh;background:#fdfdfb;color:#16181d;font:2.7vh/1.45 system-ui,"Segoe UI",Roboto,sans-serif;overflow:hidden}
+section.slide{box-sizing:border-box;width:100vw;height:100vh;display:flex;flex-direction:column;padding:3.2vh 4.5vw 1.8vh;background:#fdfdfb;color:#16181d;font:var(--fs)/1.42 system-ui,"Segoe UI",Roboto,sans-serif;overflow:hidden}
 body:not(.js) section.slide{height:auto;min-height:100vh;border-bottom:6px solid #1d1f24}
 body.js section.slide{display:none}
 body.js section.slide.current{display:flex}
-h1{font-size:5.2vh;margin:0 0 2.5vh;color:#173a6a;font-weight:650}
-section.cover h1{font-size:6.5vh;margin-top:10vh}
-.content{flex:1;display:flex;gap:3vw;min-height:0;align-items:center}
-.text{flex:1 1 50%;min-width:0}
-.text li{margin:0.6vh 0}
-.figures{flex:1 1 50%;display:flex;flex-wrap:wrap;gap:1.5vh 1.5vw;justify-content:center;align-items:flex-start;align-content:center;max-height:100%}
-figure{margin:0;text-align:center;flex:0 1 auto;max-width:100%}
-figure img{display:block;margin:auto;height:54vh;max-width:100%;object-fit:contain;image-rendering:auto;background:#000}
-.figures.many figure{flex:0 1 45%}
-.figures.many figure img{height:28vh}
-figcaption{font-size:1.9vh;color:#555;margin-top:0.5vh}
-math{font-size:1.1em;font-family:"STIX Two Math","Cambria Math","Latin Modern Math","Libertinus Math","Noto Sans Math",math}
-math[display=block]{margin:1.6vh 0;font-size:1.2em}
-code{font-family:ui-monospace,"DejaVu Sans Mono",Consolas,monospace;font-size:0.92em;background:#eef0f4;padding:0 0.25em;border-radius:3px}
-footer{display:flex;flex-wrap:wrap;gap:0.5vh 2.5vw;font-size:1.9vh;color:#555;border-top:1px solid #ccd;padding-top:1vh;margin-top:1.5vh}
-footer code{background:none;color:#173a6a}
+h1{flex:none;font-size:calc(1.85*var(--fs));line-height:1.2;margin:0 0 1.4vh;color:#173a6a;font-weight:650}
+section.cover h1{font-size:calc(2.3*var(--fs));margin-top:8vh}
+h2{font-size:calc(1.3*var(--fs));margin:0.5em 0}
+.content{flex:1 1 0;min-height:0;display:flex;gap:1.5vh 2.5vw;align-items:stretch}
+.content.stack{flex-direction:column}
+.text{flex:1 1 0;min-width:0;align-self:center}
+.content.stack .text{flex:none;align-self:stretch}
+.text p{margin:0.5em 0}
+.text ul,.text ol{margin:0.3em 0;padding-left:1.3em}
+.text li{margin:0.35em 0}
+.text li li{margin:0.15em 0}
+.text blockquote{display:inline-block;margin:0 0 0.4em;padding:0.1em 0.7em;border-radius:0.5em;background:#fff1cf;color:#6b4300;font-size:0.82em}
+.text blockquote p{margin:0}
+.text table{border-collapse:collapse;font-size:0.85em;margin:0.5em 0}
+.text th,.text td{padding:0.15em 0.7em;border-bottom:1px solid #d4d7e0;text-align:right}
+.text th{color:#173a6a;font-weight:600;border-bottom:2px solid #aab}
+.text th:first-child,.text td:first-child{text-align:left}
+.figures{flex:1 1 0;min-width:0;min-height:0;display:grid;grid-template-columns:repeat(var(--cols,1),minmax(0,1fr));grid-template-rows:minmax(0,1fr);gap:1vh 1.5vw}
+figure{margin:0;min-width:0;min-height:0;display:flex;flex-direction:column;align-items:center}
+figure>img,figure>svg{display:block;flex:1 1 0;min-height:0;width:100%;object-fit:contain;object-position:50% 100%}
+figcaption{flex:none;font-size:calc(0.7*var(--fs));line-height:1.25;color:#555;margin-top:0.5vh;text-align:center}
+figure.missing{border:2px dashed #b8bccc;border-radius:6px}
+figure.missing img{display:none}
+figure.missing::before{content:attr(data-missing);flex:1 1 0;min-height:0;display:flex;align-items:center;justify-content:center;padding:0.5em;color:#778;font-size:calc(0.7*var(--fs));text-align:center;overflow-wrap:anywhere}
+math{font-size:1.05em;font-family:"STIX Two Math","Cambria Math","Latin Modern Math","Libertinus Math","Noto Sans Math",math}
+math[display=block]{margin:0.9vh 0;font-size:1.12em}
+code{font-family:ui-monospace,"DejaVu Sans Mono",Consolas,monospace;font-size:0.9em;background:#eef0f4;padding:0 0.25em;border-radius:3px}
+footer{flex:none;display:flex;flex-wrap:wrap;gap:0.3vh 2.5vw;font-size:calc(0.7*var(--fs));color:#555;border-top:1px solid #ccd;padding-top:0.8vh;margin-top:1.2vh}
+footer code{background:none;color:#173a6a;overflow-wrap:anywhere}
 footer .num{margin-left:auto}
 a{color:#1d5fb0}
-.keys{color:#777;font-size:1.8vh}
+.keys{color:#777;font-size:calc(0.7*var(--fs))}
+#overflow{position:fixed;top:0;left:0;right:0;margin:0;max-height:50vh;overflow:auto;padding:1em;background:#fffbe6;color:#000;font:13px/1.4 ui-monospace,monospace;white-space:pre-wrap;z-index:9}
 @media print{
  @page{size:landscape;margin:0}
  html,body{background:#fff}
  section.slide,body.js section.slide{display:flex!important;width:100%;height:100vh;break-after:page;page-break-after:always;border:none}
- .keys{display:none}
+ .keys,#overflow{display:none}
 }
 "#;
 
+/// Navigation, and the `#check` mode that measures every slide.
 const SCRIPT: &str = r#"
 (function(){
 var s=document.querySelectorAll('section.slide'),i=0;
 if(!s.length)return;
+var checking=location.hash==='#check';
 document.body.classList.add('js');
 function find(){var h=location.hash.slice(1);for(var k=0;k<s.length;k++)if(s[k].id===h)return k;return 0;}
 function show(n){n=Math.max(0,Math.min(s.length-1,n));s[i].classList.remove('current');i=n;s[i].classList.add('current');
- if(location.hash!=='#'+s[i].id){try{history.replaceState(null,'','#'+s[i].id);}catch(e){}}}
+ if(!checking&&location.hash!=='#'+s[i].id){try{history.replaceState(null,'','#'+s[i].id);}catch(e){}}}
 s[0].classList.add('current');show(find());
 addEventListener('hashchange',function(){show(find());});
 addEventListener('keydown',function(e){if(e.altKey||e.ctrlKey||e.metaKey)return;var k=e.key,n=null;
@@ -228,7 +297,37 @@ addEventListener('keydown',function(e){if(e.altKey||e.ctrlKey||e.metaKey)return;
  else if(k==='ArrowLeft'||k==='ArrowUp'||k==='PageUp'||k==='Backspace')n=i-1;
  else if(k==='Home')n=0;else if(k==='End')n=s.length-1;
  if(n!==null){e.preventDefault();show(n);}});
-addEventListener('click',function(e){if(e.target.closest('a,code'))return;show(e.clientX>innerWidth/4?i+1:i-1);});
+addEventListener('click',function(e){if(e.target.closest('a,code,#overflow'))return;show(e.clientX>innerWidth/4?i+1:i-1);});
+function describe(el){var t=el.tagName.toLowerCase();
+ if(t==='img')return 'picture '+el.getAttribute('src').replace(/^.*img\//,'');
+ if(t==='figure'&&el.dataset.missing)return 'placeholder of '+el.dataset.missing.replace(/^.*: /,'');
+ var x=(el.textContent||'').replace(/\s+/g,' ').trim();return t+(x?' \u201c'+x.slice(0,48)+(x.length>48?'\u2026':'')+'\u201d':'');}
+function shown(el,r){if(el.tagName.toLowerCase()!=='img'||!el.naturalWidth)return r;
+ var k=Math.min(r.width/el.naturalWidth,r.height/el.naturalHeight);return {width:el.naturalWidth*k,height:el.naturalHeight*k};}
+function measure(sec){var b=sec.getBoundingClientRect(),h=sec.querySelector('h1').getBoundingClientRect(),f=sec.querySelector('footer').getBoundingClientRect(),bad=[],seen=[];
+ function off(r){return r.right>b.right+1||r.left<b.left-1||r.bottom>b.bottom+1||r.top<b.top-1;}
+ function add(el,why){for(var k=0;k<seen.length;k++)if(seen[k].contains(el))return;seen.push(el);bad.push(describe(el)+' '+why);}
+ if(off(h))add(sec.querySelector('h1'),'runs off the slide');
+ if(off(f))add(sec.querySelector('footer'),'runs off the slide');
+ var all=sec.querySelectorAll('.content *, footer *');
+ for(var k=0;k<all.length;k++){var el=all[k],t=el.tagName.toLowerCase();
+  if(el.closest('svg')&&t!=='svg')continue;
+  var r=el.getBoundingClientRect();if(!r.width&&!r.height)continue;
+  if(!el.closest('footer')){
+   if(r.bottom>f.top+1){add(el,'overlaps the footer ('+Math.round(r.bottom-f.top)+' px)');continue;}
+   if(r.top<h.bottom-1){add(el,'overlaps the title ('+Math.round(h.bottom-r.top)+' px)');continue;}}
+  if(off(r)){add(el,'runs off the slide');continue;}
+  if(/^(p|li|td|th|figcaption|h2|blockquote|code|span)$/.test(t)&&el.scrollWidth>el.clientWidth+1&&getComputedStyle(el).display!=='inline'){add(el,'is cut off');continue;}
+  if((t==='img'||t==='svg')&&el.closest('.figures')){var d=shown(el,r);
+   if(d.height<0.15*innerHeight||d.width<0.1*innerWidth)add(el,'is squeezed to '+Math.round(d.width)+'\u00d7'+Math.round(d.height)+' px');}}
+ return bad;}
+function check(){var lines=[],n=0,keep=i;
+ for(var k=0;k<s.length;k++){show(k);var bad=measure(s[k]);if(bad.length){n++;
+  lines.push(s[k].id+' \u201c'+s[k].querySelector('h1').textContent+'\u201d: '+bad.join('; '));}}
+ show(keep);
+ var pre=document.getElementById('overflow')||document.body.appendChild(document.createElement('pre'));pre.id='overflow';
+ pre.textContent='checked '+s.length+' slides at '+innerWidth+'x'+innerHeight+': '+n+' do not fit\n'+lines.join('\n');}
+if(checking)addEventListener('load',check);
 })();
 "#;
 
@@ -296,6 +395,27 @@ mod tests {
         assert!(!html.contains("MATHQZ"), "{html}");
         // Underscores inside formulas must not turn into emphasis.
         assert!(!html.contains("<em>"), "{html}");
+    }
+
+    #[test]
+    fn hand_drawn_figures_leave_the_text_and_join_the_pictures() {
+        let html = markdown_to_html(
+            "- a $\\omega_i$\n\n<figure class=\"drawing\"><svg viewBox=\"0 0 4 2\"><text>ω<tspan>i</tspan></text></svg><figcaption>c</figcaption></figure>\n",
+        )
+        .unwrap();
+        let (text, drawings) = take_drawings(&html).unwrap();
+        assert!(
+            text.contains("<li>a <math>") && !text.contains("figure"),
+            "{text}"
+        );
+        assert_eq!(drawings.len(), 1);
+        assert!(
+            drawings[0].starts_with("<figure class=\"drawing\"><svg viewBox=\"0 0 4 2\">")
+                && drawings[0].ends_with("</figure>"),
+            "Markdown keeps the drawing as it is: {}",
+            drawings[0]
+        );
+        assert!(take_drawings("<figure class=\"drawing\"><svg>").is_err());
     }
 
     #[test]

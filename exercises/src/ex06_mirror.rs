@@ -1,0 +1,43 @@
+//! Exercise 6 — the perfect mirror, a delta BRDF.
+//!
+//! Slides: "BRDF examples: a perfect mirror" ("Примери за BRDF: чисто отражение").
+//!
+//! The lecture writes the mirror's BRDF as ∞ where `ω_o = reflect(ω_i)` and
+//! 0 elsewhere: no function one could evaluate; only sampling finds the
+//! mirror direction. Exactly, it is a distribution,
+//! `f_r(ω_i, ω_o) = R · δ(ω_i − reflect(ω_o)) / cos θ_i` with δ the Dirac
+//! delta over solid angle, such that the reflected radiance
+//! `∫ f_r L_i cos θ_i dω_i` is `R · L_i(reflect(ω_o))`.
+//!
+//! Part 1: `reflect(w, n)`: the mirror direction of the unit vector `w`
+//! about the unit normal `n` (world space). `w`, `n` and the result lie in
+//! one plane, the result makes the same angle with `n` as `w`, and both
+//! point away from the surface.
+//!
+//! Part 2: `mirror_sample(reflectance, wo)`: the BRDF sample of a mirror in
+//! the local frame (normal `+z`), in the form every BRDF of the renderer
+//! returns (`BrdfSample`: the direction `wi`, the value `f`, the density
+//! `pdf_w`, `is_delta`, and `eta` = 1 for reflection). The path tracer
+//! weights every sample by `f · |cos θ_i| / pdf_w`. Choose `f` and `pdf_w`
+//! (for a delta lobe: the probability of choosing it, here the only one) so
+//! that this weight is what the delta gives. If `wo.z ≤ 0` there is no
+//! reflected direction above the surface (at `wo.z = 0` it lies in the
+//! surface, where `1/cos θ_i` is infinite): return `None`.
+//!
+//! Receives: `w`, `n` / the reflectance `R` and `wo`. Returns: the reflected
+//! direction / the sample.
+
+use raytracer::brdf::BrdfSample;
+use raytracer::math::{Color, Vec3A};
+
+/// The mirror direction of `w` about `n`.
+pub fn reflect(w: Vec3A, n: Vec3A) -> Vec3A {
+    // TODO: draw w, n and the result; which component of w stays?
+    todo!()
+}
+
+/// The one sample of a perfect mirror (`None` if `wo.z ≤ 0`).
+pub fn mirror_sample(reflectance: Color, wo: Vec3A) -> Option<BrdfSample> {
+    // TODO: wi, then f and pdf_w such that the path tracer's weight is R.
+    todo!()
+}

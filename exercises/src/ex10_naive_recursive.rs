@@ -1,0 +1,60 @@
+//! Exercise 10 — naive recursive Monte Carlo with a branching factor.
+//!
+//! Slides: "Directions at a point" ("Посоките в една точка"), "Recursion"
+//! ("Рекурсивност"), "When does the recursion stop?"
+//! ("Кога приключва рекурсията?"), "Solving with Monte Carlo" ("Решаване чрез Monte Carlo метод"), "The combinatorial explosion" ("Комбинаторната
+//! експлозия").
+//!
+//! The rendering equation, in this course's direction convention:
+//!
+//! ```text
+//! L_o(x, ω_o) = L_e(x, ω_o) + ∫_Ω f_r(x, ω_i, ω_o) L_i(x, ω_i) cos θ_i dω_i
+//! ```
+//!
+//! with `ω_o` and `ω_i` both pointing away from x (`ω_i` towards where the
+//! light comes from) and `cos θ_i = ω_i·n`, the normal `n` taken on the side
+//! of `ω_o`. The slide writes `ω_i` pointing into the surface (the way the
+//! light travels), hence its `(−ω_i·n)`: with `ω_i(slide) = −ω_i`,
+//! `(−ω_i(slide)·n) = ω_i·n`. The light arriving from `ω_i` is the light
+//! leaving the first surface x′ hit by the ray from x in direction `ω_i`:
+//! `L_i(x, ω_i) = L_o(x′, −ω_i)`, another instance of the same equation.
+//!
+//! Task: return the radiance arriving at the origin of `ray` along it — the
+//! `L_o` of its first hit, towards the origin — estimating the integral at
+//! every hit with N = `branching` random directions, as on the slide
+//! "Solving with Monte Carlo", recursively. A ray that hits nothing brings
+//! the environment's radiance.
+//!
+//! Depth: `max_depth` = D is the largest number of segments (rays) of a
+//! path from the camera: D = 1 shows only the emitters seen directly, D = 2
+//! direct light; a path bounces at most D − 1 times. `depth` is the number
+//! of segments before `ray` (0 for the camera ray). One pixel sample then
+//! traces at most 1 + N + … + N^(D−1) = (N^D − 1)/(N − 1) rays.
+//!
+//! Toolbox: `Scene::intersect` (an `Interaction`: the point, its shading
+//! frame `it.frame`, `it.uv`, `it.wo`), `Scene::escaped_radiance`,
+//! `Scene::emitted`, `Scene::brdf` and `Brdf::sample` in the local frame
+//! (`Frame::to_local`, `Frame::to_world`, `TransportMode::Radiance`; `None`
+//! is a draw that carries nothing), `Interaction::spawn_ray` for the next
+//! ray. Every random number comes from `sampler`.
+//!
+//! Receives: the scene, the ray, its depth, D, N, the sampler. Returns: the
+//! radiance estimate. `exercises::plug::StudentNaive` renders a picture with
+//! it.
+
+use raytracer::math::{Color, Ray};
+use raytracer::sampling::Sampler;
+use raytracer::scene::Scene;
+
+/// The naive recursive estimate of the radiance along `ray`.
+pub fn naive_radiance(
+    scene: &Scene,
+    ray: &Ray,
+    depth: u32,
+    max_depth: u32,
+    branching: u32,
+    sampler: &mut Sampler,
+) -> Color {
+    // TODO: intersect, add the emission, recurse N times and average.
+    todo!()
+}

@@ -1,0 +1,180 @@
+//! Grader of exercise 7 (cosine-weighted sampling): the pdf exactly, then a
+//! chi-square test of the student's directions against the grader's own pdf.
+//! On failure the marginal distributions of `cos θ` and `φ` of the student's
+//! directions name the usual mistakes, and their histograms (against the
+//! densities they should have) are written to `target/grading/`.
+
+use std::f64::consts::{PI, TAU};
+
+use raytracer::math::{INV_PI, Vec2, Vec3A};
+use raytracer::sampling::chi2::{Chi2Test, uniforms};
+
+use crate::pictures::{Histogram, write_histograms};
+use crate::stats::{close, fmt3, output_dir};
+
+/// The signatures of exercise 7.
+pub type SampleFn = fn(Vec2) -> Vec3A;
+pub type PdfFn = fn(Vec3A) -> f32;
+
+/// The grader's own pdf.
+pub fn expected_pdf(w: Vec3A) -> f32 {
+    w.z.max(0.0) * INV_PI
+}
+
+/// Significance of the chi-square test: a correct sampler fails it with
+/// probability 1e-4 (for the fixed seed: deterministically pass or fail).
+pub const SIGNIFICANCE: f64 = 1e-4;
+
+/// Samples of the chi-square test and of the histograms.
+pub const SAMPLES: u64 = 1 << 18;
+
+/// The file the histograms are written to.
+pub fn histogram_path() -> std::path::PathBuf {
+    output_dir().join("ex07_cosine_sampling_histograms.png")
+}
+
+pub fn check(sample: SampleFn, pdf: PdfFn) -> Result<(), String> {
+    // 1. The pdf at fixed directions.
+    for w in [
+        Vec3A::Z,
+        Vec3A::new(0.6, 0.0, 0.8),
+        Vec3A::new(-0.3, 0.9, 0.1).normalize(),
+        Vec3A::new(0.0, 0.6, -0.8),
+        Vec3A::new(0.8, -0.6, 0.0),
+    ] {
+        let (got, want) = (pdf(w), expected_pdf(w));
+        if !(close(got, want, 1e-4) || (want == 0.0 && got == 0.0)) {
+            let why = if close(got, 0.5 * INV_PI, 1e-4) {
+                "1/(2π) is the pdf of UNIFORM hemisphere sampling"
+            } else if want == 0.0 {
+                "on and below the horizon (w.z ≤ 0) the density is 0"
+            } else if close(got, w.z, 1e-4) {
+                "cos θ alone does not integrate to 1 over the hemisphere (∫ cos θ dω = π): normalize it"
+            } else {
+                "the density is proportional to cos θ and integrates to 1 over the hemisphere"
+            };
+            return Err(format!(
+                "cosine_hemisphere_pdf({}) is {got}, expected {want} — {why}",
+                fmt3(w)
+            ));
+        }
+    }
+    // 2. Unit directions in the upper hemisphere.
+    let n = 64;
+    for j in 0..n {
+        for i in 0..n {
+            let u = Vec2::new(i as f32 / n as f32, j as f32 / n as f32);
+            let w = sample(u);
+            if !((w.length() - 1.0).abs() < 1e-4 && w.z >= 0.0) {
+                return Err(format!(
+                    "sample_cosine_hemisphere({u}) is {} (length {:.4}): expected a unit vector with z ≥ 0",
+                    fmt3(w),
+                    w.length()
+                ));
+            }
+        }
+    }
+    // 3. The distribution: chi-square over 10×20 cells.
+    let test = Chi2Test {
+        samples: SAMPLES,
+        seed: 6,
+        significance: SIGNIFICANCE,
+        ..Chi2Test::default()
+    };
+    if let Err(e) = test.run(|u, _| Some(sample(u)), expected_pdf) {
+        let first = e.lines().next().unwrap_or_default();
+        let first = first.split(" Worst cells").next().unwrap_or(first);
+        return Err(format!(
+            "your directions are not distributed as cos θ/π — {} ({first}){}",
+            diagnose(sample, test.seed),
+            write_picture(sample, test.seed)
+        ));
+    }
+    Ok(())
+}
+
+/// `cos θ` and `φ ∈ [0, 2π)` of the student's directions for the chi-square
+/// test's numbers.
+fn angles(sample: SampleFn, seed: u64) -> impl Iterator<Item = (f64, f64)> {
+    (0..SAMPLES).map(move |i| {
+        let w = sample(uniforms(seed, i).0);
+        let phi = (w.y as f64).atan2(w.x as f64).rem_euclid(TAU);
+        (w.z as f64, phi)
+    })
+}
+
+/// Names the mistake from the marginals of `cos θ` and `φ`.
+fn diagnose(sample: SampleFn, seed: u64) -> String {
+    let (mut sum_cos, mut upper_phi) = (0.0, 0u64);
+    let mut phi_bins = [0u64; 16];
+    for (c, phi) in angles(sample, seed) {
+        sum_cos += c;
+        if phi >= PI {
+            upper_phi += 1;
+        }
+        phi_bins[((phi / TAU * 16.0) as usize).min(15)] += 1;
+    }
+    let n = SAMPLES as f64;
+    let mean_cos = sum_cos / n;
+    let empty = phi_bins
+        .iter()
+        .filter(|&&b| (b as f64) < 0.1 * n / 16.0)
+        .count();
+    // Standard error of the mean of cos θ under the right density (variance
+    // 1/18): 4.6e-4; the alternatives below differ by more than 0.1.
+    if (upper_phi as f64) < 0.01 * n {
+        "half of the circle is empty (no φ ≥ π): is φ = 2π·u? (π·u covers half)".into()
+    } else if empty >= 4 {
+        format!(
+            "{empty} of 16 sectors of φ are (nearly) empty: φ must go all the way round, φ = 2π·u"
+        )
+    } else if (mean_cos - 0.5).abs() < 0.01 {
+        "cos θ is uniform (its mean is 0.50): those are UNIFORM directions over the hemisphere; the density must grow with cos θ (mean 2/3)".into()
+    } else if (mean_cos - PI / 4.0).abs() < 0.01 {
+        "the mean of cos θ is π/4 ≈ 0.785, as with r = u: a uniform point on the disk needs r = √u (the area of a ring grows with r)".into()
+    } else if mean_cos > 2.0 / 3.0 {
+        format!(
+            "too many directions near the normal: the mean of cos θ is {mean_cos:.3}, expected 2/3"
+        )
+    } else {
+        format!(
+            "too few directions near the normal: the mean of cos θ is {mean_cos:.3}, expected 2/3"
+        )
+    }
+}
+
+/// Writes the histograms of `cos θ` and `φ` and says where.
+fn write_picture(sample: SampleFn, seed: u64) -> String {
+    let bins = 32;
+    let (mut cos_counts, mut phi_counts) = (vec![0u64; bins], vec![0u64; bins]);
+    for (c, phi) in angles(sample, seed) {
+        cos_counts[((c.clamp(0.0, 1.0) * bins as f64) as usize).min(bins - 1)] += 1;
+        phi_counts[((phi / TAU * bins as f64) as usize).min(bins - 1)] += 1;
+    }
+    let cos_density = |t: f64| 2.0 * t;
+    let phi_density = |_: f64| 1.0 / TAU;
+    let histograms = [
+        Histogram {
+            lo: 0.0,
+            hi: 1.0,
+            counts: cos_counts,
+            expected_density: &cos_density,
+        },
+        Histogram {
+            lo: 0.0,
+            hi: TAU,
+            counts: phi_counts,
+            expected_density: &phi_density,
+        },
+    ];
+    let path = histogram_path();
+    let written =
+        std::fs::create_dir_all(output_dir()).and_then(|()| write_histograms(&histograms, &path));
+    match written {
+        Ok(()) => format!(
+            "; see {}: top, cos θ of your directions (grey) against the density 2·cos θ they should have (red); below, φ against the uniform 1/(2π)",
+            path.display()
+        ),
+        Err(e) => format!(" (could not write the histograms: {e})"),
+    }
+}

@@ -1,0 +1,471 @@
+//! Grader of exercise 12 (next event estimation).
+//!
+//! 1. The change of measure exactly, including the light seen edge-on.
+//! 2. Direct light at a point of a Lambertian floor under square area
+//!    lights, whose exact value is `f_r · Σ L E`, with `E` the irradiance of
+//!    each light's visible part by Lambert's polygon formula
+//!    ([`crate::polygon`]): one light; the same with an occluder (its shadow,
+//!    projected onto the light, is subtracted exactly); two lights (the
+//!    light-choice probability); a light that turns its back (one-sided
+//!    emission); and the floor seen from its back side (the cosine at the
+//!    surface). A failing mean is compared with what the usual mistakes
+//!    converge to — a missing cosine at the surface or at the light, `r`
+//!    instead of `r²`, the area density left unconverted, no shadow ray, no
+//!    pmf, two-sided emission, a signed cosine — computed by quadrature over
+//!    the light, and the matching one is named.
+//! 3. Direct light in the Cornell box against the renderer, tile by tile.
+//!
+//! Tolerances: |z| ≤ 5.5 per channel with the student's own variance in 5
+//! cases (false failure < 6e-7); the image comparison at family-wise
+//! α = 1e-4 ([`crate::compare`]).
+
+use exercises::plug::StudentDirect;
+use glam::DVec3;
+use raytracer::brdf::{Brdf, Lambert, Texture};
+use raytracer::camera::CameraParams;
+use raytracer::frame::Frame;
+use raytracer::geometry::{Quad, Shape};
+use raytracer::math::{Color, INV_PI, Vec2, Vec3A};
+use raytracer::sampling::Sampler;
+use raytracer::scene::{Emitter, Interaction, RenderSettings, Scene, SceneObject, SceneParts};
+
+use crate::compare::{EX12_CORNELL_DIRECT, compare};
+use crate::polygon::{corners, integrate_over_quad, irradiance, project_from};
+use crate::stats::{MeanVar, close, fmt3};
+
+/// The signatures of exercise 12.
+pub type AreaPdfFn = fn(f32, Vec3A, Vec3A, Vec3A) -> f32;
+pub use exercises::plug::EstimateDirectFn as DirectFn;
+
+/// Estimates per analytic case.
+pub const ESTIMATES: u64 = 20_000;
+
+/// The grader's conversion (0 for a light seen edge-on).
+pub fn expected_pdf(pdf_a: f32, x: Vec3A, y: Vec3A, n_y: Vec3A) -> f32 {
+    let d = x - y;
+    let cos = n_y.dot(d.normalize()).abs();
+    if cos == 0.0 {
+        0.0
+    } else {
+        pdf_a * d.length_squared() / cos
+    }
+}
+
+pub fn check(to_solid_angle: AreaPdfFn, direct: DirectFn) -> Result<(), String> {
+    check_conversion(to_solid_angle)?;
+    for case in cases() {
+        case.check(direct)?;
+    }
+    compare(&EX12_CORNELL_DIRECT, &StudentDirect(direct))
+        .map_err(|e| format!("direct light by your estimate_direct: {e}"))
+}
+
+fn check_conversion(to_solid_angle: AreaPdfFn) -> Result<(), String> {
+    let cases = [
+        (0.25, Vec3A::ZERO, Vec3A::new(0.0, 2.0, 0.0), -Vec3A::Y),
+        (0.25, Vec3A::ZERO, Vec3A::new(1.0, 2.0, 0.5), -Vec3A::Y),
+        (
+            1.0,
+            Vec3A::new(0.3, -1.0, 0.2),
+            Vec3A::new(-0.2, 0.99, 0.1),
+            Vec3A::new(0.0, -1.0, 0.0),
+        ),
+        // The light's normal faces away: the density uses |cos θ_y|.
+        (
+            2.0,
+            Vec3A::ZERO,
+            Vec3A::new(0.5, 1.0, -1.0),
+            Vec3A::new(0.0, 0.6, 0.8),
+        ),
+    ];
+    for (pdf_a, x, y, n) in cases {
+        let got = to_solid_angle(pdf_a, x, y, n);
+        let want = expected_pdf(pdf_a, x, y, n);
+        if close(got, want, 1e-4) {
+            continue;
+        }
+        let d = x - y;
+        let cos_y = n.dot(d.normalize()).abs();
+        let why = if close(got, pdf_a, 1e-4) {
+            "that is still the density per unit AREA: a patch dA at y covers the solid angle |cos θ_y| dA / r² seen from x"
+        } else if close(got, -want, 1e-4) {
+            "a density is never negative: take |cos θ_y|"
+        } else if close(got, pdf_a * d.length() / cos_y, 1e-4) {
+            "use the SQUARED distance: the solid angle of a patch falls as 1/r²"
+        } else if close(got, pdf_a * d.length_squared(), 1e-4) {
+            "divide by |cos θ_y|, the cosine at the light: a patch seen obliquely covers a smaller solid angle"
+        } else if close(got, pdf_a * cos_y / d.length_squared(), 1e-4) {
+            "upside down: p_ω dω = p_A dA with dω = |cos θ_y| dA / r²"
+        } else {
+            "θ_y lies between n_y and the direction from y to x; the distance is ‖x − y‖"
+        };
+        return Err(format!(
+            "area_pdf_to_solid_angle({pdf_a}, x = {}, y = {}, n_y = {}) is {got}, expected {want} — {why}",
+            fmt3(x),
+            fmt3(y),
+            fmt3(n)
+        ));
+    }
+    // The light seen edge-on: no solid angle, density 0 (not ∞ or NaN).
+    let (x, y, n) = (
+        Vec3A::ZERO,
+        Vec3A::new(1.0, 1.0, 0.0),
+        Vec3A::new(0.0, 0.0, 1.0),
+    );
+    let got = to_solid_angle(0.5, x, y, n);
+    if got != 0.0 {
+        return Err(format!(
+            "area_pdf_to_solid_angle(0.5, x = {}, y = {}, n_y = {}) is {got}: the light is seen exactly edge-on (n_y ⟂ y − x), so no solid angle corresponds to its area — return 0, as the task says",
+            fmt3(x),
+            fmt3(y),
+            fmt3(n)
+        ));
+    }
+    Ok(())
+}
+
+/// A square area light of the test: `origin + a·e1 + b·e2`, emitting
+/// `radiance` on the side of `e1 × e2`.
+#[derive(Clone, Copy, Debug)]
+pub struct TestLight {
+    pub origin: Vec3A,
+    pub e1: Vec3A,
+    pub e2: Vec3A,
+    pub radiance: Color,
+}
+
+impl TestLight {
+    /// A square of side `s` centred at `c` whose normal is
+    /// `(−sin τ, −cos τ, 0)`: facing down (τ = 0), tilted towards −x by τ.
+    fn tilted(c: Vec3A, tau: f32, s: f32, radiance: Color) -> TestLight {
+        let e1 = s * Vec3A::new(tau.cos(), -tau.sin(), 0.0);
+        let e2 = Vec3A::new(0.0, 0.0, s);
+        TestLight {
+            origin: c - 0.5 * (e1 + e2),
+            e1,
+            e2,
+            radiance,
+        }
+    }
+
+    fn normal(&self) -> Vec3A {
+        self.e1.cross(self.e2).normalize()
+    }
+
+    fn corners(&self) -> [Vec3A; 4] {
+        corners(self.origin, self.e1, self.e2)
+    }
+
+    /// `∫ g dA` over the light, `g` of (unit direction from x, r², cos θ_y)
+    /// (see [`integrate_over_quad`]).
+    fn integrate(&self, x: Vec3A, g: impl Fn(DVec3, f64, f64) -> f64) -> f64 {
+        let n = self.normal();
+        let n = DVec3::new(n.x as f64, n.y as f64, n.z as f64);
+        let x = DVec3::new(x.x as f64, x.y as f64, x.z as f64);
+        integrate_over_quad(self.origin, self.e1, self.e2, 400, |y| {
+            let v = y - x;
+            let r2 = v.length_squared();
+            let w = v / r2.sqrt();
+            g(w, r2, w.dot(n).abs())
+        })
+    }
+}
+
+/// One analytic case.
+pub struct NeeCase {
+    pub what: String,
+    pub scene: Scene,
+    pub it: Interaction,
+    pub exact: Color,
+    /// What the usual mistakes converge to here, and what to say.
+    pub named: Vec<(Color, String)>,
+}
+
+impl NeeCase {
+    /// z-tests the student's mean; on failure names a mistake if its value matches.
+    pub fn check(&self, direct: DirectFn) -> Result<(), String> {
+        let mut stats = MeanVar::default();
+        for i in 0..ESTIMATES {
+            let mut sampler = Sampler::new(12, i, 0);
+            stats.add(direct(&self.scene, &self.it, &mut sampler));
+        }
+        let advice = self
+            .named
+            .iter()
+            .find(|(value, _)| stats.matches(*value))
+            .map(|(_, why)| why.clone());
+        stats.check(&self.what, self.exact, |_| {
+            Some(advice.clone().unwrap_or_else(|| {
+                "estimate = f_r · L_e · |cos θ_i| / (pmf · p_ω) when the shadow ray is free".into()
+            }))
+        })
+    }
+}
+
+/// The albedo of the floor, and the BRDF value `ρ/π` of every case.
+pub const FLOOR_ALBEDO: Color = Color::new(0.8, 0.6, 0.4);
+
+/// The lights: A, tilted so that the cosines at x and at the light, `1/r`
+/// and `r` all differ (a missing cosine at x changes the answer by ×1.13,
+/// one at the light by ×1.72, `r` for `r²` by ×2.31, the area density by
+/// ×9.4); B, a second light facing down; D, a light above x facing up.
+pub fn light_a() -> TestLight {
+    TestLight::tilted(
+        Vec3A::new(1.0, 2.1, 0.2),
+        1.4,
+        0.8,
+        Color::new(4.0, 3.0, 2.0),
+    )
+}
+fn light_b() -> TestLight {
+    TestLight::tilted(
+        Vec3A::new(-1.2, 1.8, -0.3),
+        0.0,
+        0.6,
+        Color::new(2.0, 2.5, 3.0),
+    )
+}
+fn light_d() -> TestLight {
+    let s = 0.7;
+    TestLight {
+        origin: Vec3A::new(-0.8 - s / 2.0, 1.5, 0.4 - s / 2.0),
+        e1: Vec3A::new(0.0, 0.0, s),
+        e2: Vec3A::new(s, 0.0, 0.0),
+        radiance: Color::splat(3.0),
+    }
+}
+
+/// The receiving point: the origin, on the floor.
+const X: Vec3A = Vec3A::ZERO;
+
+/// A scene of the floor (normal `floor_normal`), the lights, and optionally
+/// an occluder, with the interaction at [`X`] seen from above.
+fn scene(
+    lights: &[TestLight],
+    occluder: Option<TestLight>,
+    floor_normal: f32,
+) -> (Scene, Interaction) {
+    let floor = if floor_normal > 0.0 {
+        // e1 × e2 = +y.
+        Quad {
+            origin: Vec3A::new(-3.0, 0.0, 3.0),
+            e1: Vec3A::new(6.0, 0.0, 0.0),
+            e2: Vec3A::new(0.0, 0.0, -6.0),
+        }
+    } else {
+        Quad {
+            origin: Vec3A::new(-3.0, 0.0, 3.0),
+            e1: Vec3A::new(0.0, 0.0, -6.0),
+            e2: Vec3A::new(6.0, 0.0, 0.0),
+        }
+    };
+    let mut objects = vec![SceneObject {
+        name: "floor".into(),
+        shape: Shape::Quad(floor),
+        brdf: 0,
+        emitter: None,
+    }];
+    for (i, l) in lights.iter().enumerate() {
+        objects.push(SceneObject {
+            name: format!("light{i}"),
+            shape: Shape::Quad(Quad {
+                origin: l.origin,
+                e1: l.e1,
+                e2: l.e2,
+            }),
+            brdf: 1,
+            emitter: Some(Emitter {
+                radiance: l.radiance,
+                two_sided: false,
+            }),
+        });
+    }
+    if let Some(o) = occluder {
+        objects.push(SceneObject {
+            name: "occluder".into(),
+            shape: Shape::Quad(Quad {
+                origin: o.origin,
+                e1: o.e1,
+                e2: o.e2,
+            }),
+            brdf: 1,
+            emitter: None,
+        });
+    }
+    let lambert = |c: Color| {
+        Brdf::Lambert(Lambert {
+            albedo: Texture::Constant(c),
+        })
+    };
+    let parts = SceneParts {
+        camera: CameraParams {
+            position: Vec3A::new(0.0, 1.0, 5.0),
+            look_at: Vec3A::ZERO,
+            up: Vec3A::Y,
+            vfov_deg: 40.0,
+            aperture_radius: 0.0,
+            focus_distance: 5.0,
+            shift: Vec2::ZERO,
+        },
+        settings: RenderSettings {
+            width: 8,
+            height: 8,
+            ..RenderSettings::default()
+        },
+        brdf_names: vec!["floor".into(), "grey".into()],
+        brdfs: vec![lambert(FLOOR_ALBEDO), lambert(Color::splat(0.5))],
+        objects,
+        lights: Vec::new(),
+    };
+    let scene = Scene::build("grader-nee", parts);
+    let ng = Vec3A::new(0.0, floor_normal, 0.0);
+    let it = Interaction {
+        p: X,
+        ng,
+        frame: Frame::from_normal(ng),
+        uv: Vec2::splat(0.5),
+        wo: Vec3A::new(0.3, 1.0, 0.2).normalize(),
+        t: 1.0,
+        shape: 0,
+    };
+    (scene, it)
+}
+
+/// `f_r L E` at [`X`] (normal +y) for the lights, by Lambert's formula.
+fn exact(lights: &[TestLight]) -> Color {
+    lights
+        .iter()
+        .map(|l| {
+            FLOOR_ALBEDO * INV_PI * l.radiance * irradiance(X, Vec3A::Y, &l.corners(), 1.0) as f32
+        })
+        .sum()
+}
+
+/// The cases, in the order they are graded (each adds one difficulty).
+pub fn cases() -> Vec<NeeCase> {
+    let a = light_a();
+    let f = FLOOR_ALBEDO * INV_PI;
+    let value = |l: &TestLight, g: &dyn Fn(DVec3, f64, f64) -> f64| {
+        f * l.radiance * l.integrate(X, g) as f32
+    };
+    let exact_a = exact(&[a]);
+    let mut out = Vec::new();
+
+    // 1. One light.
+    let (scene1, it1) = scene(&[a], None, 1.0);
+    out.push(NeeCase {
+        what: "direct light at a point of a Lambertian floor under one square light (exact: Lambert's polygon formula)".into(),
+        scene: scene1,
+        it: it1,
+        exact: exact_a,
+        named: vec![
+            (
+                value(&a, &|_, r2, cy| cy / r2),
+                "the cosine at the surface is missing: the estimate is f_r · L_e · |cos θ_i| / (pmf · p_ω), with cos θ_i = |wi.z| in the local frame".into(),
+            ),
+            (
+                value(&a, &|w, r2, cy| w.y * cy / r2.sqrt()),
+                "you divided by r instead of r²: a patch of the light covers the solid angle |cos θ_y| dA / r²".into(),
+            ),
+            (
+                value(&a, &|w, r2, _| w.y / r2),
+                "the cosine at the light is missing: p_ω = p_A · r² / |cos θ_y|".into(),
+            ),
+            (
+                value(&a, &|w, _, _| w.y),
+                "you divided by the density per unit AREA (1/A): convert it to solid angle first, p_ω = p_A · r² / |cos θ_y| (part 1)".into(),
+            ),
+            (
+                exact_a / f,
+                "the BRDF is missing: multiply by f_r = scene.brdf(it).eval(wo, wi, it.uv)".into(),
+            ),
+        ],
+    });
+
+    // 2. The same light behind an occluder half way, parallel to it, whose
+    // shadow projected from x onto the light lies inside the light.
+    let c = a.origin + 0.5 * (a.e1 + a.e2);
+    let occluder = TestLight {
+        origin: 0.5 * c - 0.25 * (a.e1 + a.e2) * 0.5,
+        e1: 0.25 * a.e1,
+        e2: 0.25 * a.e2,
+        radiance: Color::ZERO,
+    };
+    let shadow: Vec<Vec3A> = corners(occluder.origin, occluder.e1, occluder.e2)
+        .iter()
+        .map(|&p| project_from(X, p, a.origin, a.normal()))
+        .collect();
+    let blocked = f * a.radiance * irradiance(X, Vec3A::Y, &shadow, 1.0) as f32;
+    let (scene2, it2) = scene(&[a], Some(occluder), 1.0);
+    out.push(NeeCase {
+        what: "the same light, partly hidden behind an occluder (exact: the light's irradiance minus that of the occluder's shadow on it)".into(),
+        scene: scene2,
+        it: it2,
+        exact: exact_a - blocked,
+        named: vec![(
+            exact_a,
+            "the occluder makes no difference to your estimate: test visibility with a shadow ray, scene.unoccluded(&it.spawn_ray_to(y, n_y))".into(),
+        )],
+    });
+
+    // 3. Two lights: each chosen with probability 1/2.
+    let b = light_b();
+    let both = exact(&[a, b]);
+    let (scene3, it3) = scene(&[a, b], None, 1.0);
+    out.push(NeeCase {
+        what: "two square lights (each chosen with probability 1/2)".into(),
+        scene: scene3,
+        it: it3,
+        exact: both,
+        named: vec![
+            (
+                both * 0.5,
+                "your estimate is half the light: divide by the probability of choosing the light (choice.pmf = 1/2 here), do not multiply by it".into(),
+            ),
+            (
+                both * 0.25,
+                "your estimate is a quarter of the light: divide by the probability of choosing the light (choice.pmf), do not multiply by it".into(),
+            ),
+            (
+                both * 2.0,
+                "your estimate is twice the light: divide by the probability of choosing the light (choice.pmf = 1/2 with two lights)".into(),
+            ),
+        ],
+    });
+
+    // 4. A light above x that faces up, away from it: one-sided, it sends x nothing.
+    let d = light_d();
+    let (scene4, it4) = scene(&[a, d], None, 1.0);
+    let d_two_sided = f * d.radiance * irradiance(X, Vec3A::Y, &d.corners(), 1.0) as f32;
+    out.push(NeeCase {
+        what: "two lights, one of them turning its back to the point (it emits only on the side of its normal)".into(),
+        scene: scene4,
+        it: it4,
+        exact: exact_a,
+        named: vec![(
+            exact_a + d_two_sided,
+            "the light that turns its back to x lights it in your estimate: an area light emits on one side only — take L_e from AreaLight::le(n_y, −wi), which is zero behind it".into(),
+        )],
+    });
+
+    // 5. The floor seen from its back side: its normal points down, the
+    // viewer and the light are above (wo.z < 0 and wi.z < 0 in the local frame).
+    let (scene5, it5) = scene(&[a], None, -1.0);
+    out.push(NeeCase {
+        what: "one light over a floor seen from its back side (its normal points away from the viewer and the light)".into(),
+        scene: scene5,
+        it: it5,
+        exact: exact_a,
+        named: vec![
+            (
+                -exact_a,
+                "your estimate is negative: a signed cos θ_i. Here the surface is seen from its back (wo.z < 0) and so is the light (wi.z < 0): the cosine is taken with the normal on the side of ω_o, |wi.z|".into(),
+            ),
+            (
+                Color::ZERO,
+                "your estimate is 0: cos θ_i clamped at 0. Here the surface is seen from its back (wo.z < 0) and so is the light (wi.z < 0): the cosine is taken with the normal on the side of ω_o, |wi.z|".into(),
+            ),
+        ],
+    });
+    out
+}

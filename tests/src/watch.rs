@@ -1,0 +1,192 @@
+//! `lesson11 exercises --watch`: the rustlings loop. Each time a file of
+//! `exercises/src/` is saved, the exercise it holds is graded again (by
+//! `cargo test -p grading --test exercises -- NAME`, which rebuilds the
+//! student's code), and its verdict is shown with the next hint command.
+//!
+//! Saves are found by polling the files' modification times every
+//! [`POLL`]: fifteen small files cost nothing to poll, and a file-watching
+//! crate (with its platform back-ends) would add to every student's cold
+//! build for no gain here.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::{Duration, SystemTime};
+
+use exercises::Exercise;
+
+/// How often the files are polled.
+pub const POLL: Duration = Duration::from_millis(300);
+
+/// The files being watched and their last modification times.
+#[derive(Debug)]
+pub struct Watcher {
+    files: Vec<(PathBuf, Option<SystemTime>)>,
+}
+
+fn mtime(p: &Path) -> Option<SystemTime> {
+    std::fs::metadata(p).and_then(|m| m.modified()).ok()
+}
+
+impl Watcher {
+    /// Starts watching `files` (their current times are the baseline).
+    pub fn new(files: Vec<PathBuf>) -> Watcher {
+        Watcher {
+            files: files.into_iter().map(|f| (f.clone(), mtime(&f))).collect(),
+        }
+    }
+
+    /// The files modified since the last call (or since [`Watcher::new`]).
+    pub fn changed(&mut self) -> Vec<PathBuf> {
+        let mut out = Vec::new();
+        for (path, seen) in &mut self.files {
+            let now = mtime(path);
+            if now != *seen {
+                *seen = now;
+                out.push(path.clone());
+            }
+        }
+        out
+    }
+}
+
+/// The exercise whose student file is `path`.
+pub fn exercise_of(path: &Path, registry: &[Exercise]) -> Option<Exercise> {
+    let name = path.file_stem()?.to_str()?;
+    registry.iter().find(|e| e.name == name).cloned()
+}
+
+/// The command that grades the exercises matching `filter` (all if empty)
+/// in the workspace at `root`: the grading harness alone, quietly.
+pub fn grade_command(root: &Path, filter: &str) -> Command {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let mut cmd = Command::new(cargo);
+    cmd.current_dir(root)
+        .args(["test", "-q", "-p", "grading", "--test", "exercises"]);
+    if !filter.is_empty() {
+        cmd.args(["--", filter]);
+    }
+    cmd
+}
+
+/// What to show for one grading run, from its standard output and error:
+/// the harness's report, or — if the code did not compile and the harness
+/// never ran — the compiler's errors.
+pub fn verdict(stdout: &[u8], stderr: &[u8]) -> String {
+    let stdout = String::from_utf8_lossy(stdout);
+    if stdout.contains("Exercise") {
+        return stdout.trim_end().to_string();
+    }
+    let stderr = String::from_utf8_lossy(stderr);
+    let lines: Vec<&str> = stderr.lines().collect();
+    let first = lines
+        .iter()
+        .position(|l| l.starts_with("error") || l.starts_with("warning: unused"))
+        .unwrap_or(0);
+    let shown: Vec<&str> = lines[first..].iter().take(60).copied().collect();
+    format!(
+        "Your code does not compile yet (cargo test says):\n{}",
+        shown.join("\n")
+    )
+}
+
+/// Watches `exercises/src/` until interrupted: grades everything once, then
+/// the exercise of each file saved.
+pub fn run() -> std::io::Result<()> {
+    let root = crate::texts::repo_root();
+    let registry = exercises::registry();
+    let files: Vec<PathBuf> = registry
+        .iter()
+        .map(|e| exercises::crate_dir().join(&e.file))
+        .collect();
+    let mut watcher = Watcher::new(files);
+    println!("Grading every exercise once…");
+    let out = grade_command(&root, "").output()?;
+    println!("{}", verdict(&out.stdout, &out.stderr));
+    loop {
+        println!(
+            "\nWatching exercises/src/ — save an exercise's file to grade it again (Ctrl-C to stop)."
+        );
+        let exercise = loop {
+            std::thread::sleep(POLL);
+            if let Some(e) = watcher
+                .changed()
+                .iter()
+                .rev()
+                .find_map(|p| exercise_of(p, &registry))
+            {
+                break e;
+            }
+        };
+        println!(
+            "\n── exercises/{} saved: grading exercise {} ──",
+            exercise.file,
+            exercise.number().unwrap_or(0)
+        );
+        let out = grade_command(&root, &exercise.name).output()?;
+        println!("{}", verdict(&out.stdout, &out.stderr));
+        // Saves made while grading belong to this run.
+        watcher.changed();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_save_is_seen_once_and_mapped_to_its_exercise() {
+        let dir = std::env::temp_dir().join(format!("grading-watch-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("ex05_cone_lobe.rs");
+        std::fs::write(&file, "a").unwrap();
+        let mut w = Watcher::new(vec![file.clone(), dir.join("missing.rs")]);
+        assert!(w.changed().is_empty());
+        // Make sure the new time differs even on coarse file systems.
+        let later = SystemTime::now() + Duration::from_secs(5);
+        std::fs::File::options()
+            .write(true)
+            .open(&file)
+            .and_then(|f| f.set_modified(later))
+            .unwrap();
+        assert_eq!(w.changed(), vec![file.clone()]);
+        assert!(w.changed().is_empty());
+        let reg = exercises::registry();
+        assert_eq!(exercise_of(&file, &reg).map(|e| e.number()), Some(Some(5)));
+        assert!(exercise_of(&dir.join("notes.rs"), &reg).is_none());
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn the_verdict_is_the_report_or_the_compiler_errors() {
+        let v = verdict(b"Exercise 5 - x\n  passed\n", b"   Compiling exercises\n");
+        assert!(v.starts_with("Exercise 5"), "{v}");
+        let v = verdict(
+            b"",
+            b"   Compiling exercises\nerror[E0308]: mismatched types\n --> exercises/src/ex05_cone_lobe.rs:3:5\n",
+        );
+        assert!(
+            v.contains("does not compile")
+                && v.contains("error[E0308]")
+                && !v.contains("Compiling"),
+            "{v}"
+        );
+        let cmd = grade_command(Path::new("/tmp"), "ex05_cone_lobe");
+        let args: Vec<_> = cmd
+            .get_args()
+            .map(|a| a.to_string_lossy().into_owned())
+            .collect();
+        assert_eq!(
+            args,
+            [
+                "test",
+                "-q",
+                "-p",
+                "grading",
+                "--test",
+                "exercises",
+                "--",
+                "ex05_cone_lobe"
+            ]
+        );
+    }
+}
