@@ -18,14 +18,21 @@
 //! Passes make the image converge evenly: an interrupted render is a
 //! complete image with fewer samples, not a half-finished one.
 //!
-//! **Interruption.** [`install_interrupt_handler`] makes Ctrl-C set a global
-//! flag (a second Ctrl-C quits). The loop checks it before every pixel sample,
-//! stops, and keeps every sample already computed: pixels may then hold
-//! different sample counts, each pixel's mean is still right, and
-//! `stats.interrupted` is set.
+//! **Interruption.** [`install_interrupt_handler`] makes Ctrl-C, SIGTERM and
+//! SIGHUP set a global flag (a second one quits). The loop checks it before
+//! every pixel sample, and integrators whose samples can be long (naive
+//! recursion, unlimited paths) check it inside a sample through
+//! [`crate::integrator::stop`]: such a sample is dropped whole. The loop then
+//! stops and keeps every sample already computed: pixels may hold different
+//! sample counts (some none at all, [`crate::film::Film::unsampled_pixels`]),
+//! each pixel's mean is still right, and `stats.interrupted` is set.
+//!
+//! **Resources.** [`thread_limit`] caps the worker threads a command line may
+//! ask for, and [`memory_needed`] with [`MemoryCap`] lets a front-end refuse
+//! an image that would not fit in memory before allocating it.
 
 use crate::film::{Film, FilmTile, Splat};
-use crate::integrator::Integrator;
+use crate::integrator::{Integrator, stop};
 use crate::math::{Color, UVec2};
 use crate::sampling::Sampler;
 use crate::scene::Scene;
@@ -106,18 +113,22 @@ pub struct RenderResult {
 static INTERRUPTED: AtomicBool = AtomicBool::new(false);
 static HANDLER: Once = Once::new();
 
-/// Makes Ctrl-C request a clean stop of the running render (see
-/// [`interrupted`]); a second Ctrl-C exits the process with status 130.
+/// Makes Ctrl-C (SIGINT), SIGTERM and SIGHUP request a clean stop of the
+/// running render (see [`interrupted`]): the samples computed so far are
+/// kept and written. A second signal exits the process at once with status
+/// 130 (files are written atomically, so none is left half-written).
 /// Calling it again does nothing. If the handler cannot be installed (another
-/// one exists), a warning is printed and Ctrl-C keeps its default effect.
+/// one exists), a warning is printed and the signals keep their default effect.
 pub fn install_interrupt_handler() {
     HANDLER.call_once(|| {
         let installed = ctrlc::set_handler(|| {
             if INTERRUPTED.swap(true, Ordering::SeqCst) {
-                eprintln!("\ninterrupted twice: exiting");
+                eprintln!("\ninterrupted twice: exiting without writing");
                 std::process::exit(130);
             }
-            eprintln!("\ninterrupted: keeping the samples computed so far (Ctrl-C again to quit)");
+            eprintln!(
+                "\ninterrupted: stopping and keeping the samples computed so far (interrupt again to quit)"
+            );
         });
         if let Err(e) = installed {
             eprintln!("warning: cannot install the Ctrl-C handler: {e}");
@@ -202,15 +213,15 @@ where
         });
     };
     let mut threads = rayon::current_num_threads();
-    match options.threads {
+    match options.threads.map(|n| n.clamp(1, thread_limit())) {
         None => run(),
         Some(n) => match rayon::ThreadPoolBuilder::new()
-            .num_threads(n.max(1))
+            .num_threads(n)
             .thread_name(|i| format!("render-{i}"))
             .build()
         {
             Ok(pool) => {
-                threads = n.max(1);
+                threads = n;
                 pool.install(run)
             }
             Err(e) => {
@@ -233,6 +244,90 @@ where
         eprintln!("{}", summary(options, width, height, threads, &stats));
     }
     RenderResult { film, stats }
+}
+
+/// The most worker threads a render uses: four per core, and at least 64
+/// (more only cost memory and switching; [`render_pixels`] uses at most this
+/// many whatever [`RenderOptions::threads`] says).
+pub fn thread_limit() -> usize {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    (4 * cores).max(64)
+}
+
+/// Bytes a render of `width × height` pixels needs at its peak, whatever the
+/// integrator (`None` if the number does not even fit in 64 bits): the
+/// film's sums (`f64` sum and square per channel and a count, 56 bytes), the
+/// sums of splats (48), the mean and variance images (12 each), the 8-bit
+/// PNG bytes (3) and the EXR writer's copy (12); tiles are small.
+pub fn memory_needed(width: u32, height: u32) -> Option<u64> {
+    const BYTES_PER_PIXEL: u64 = 56 + 48 + 12 + 12 + 3 + 12;
+    (width as u64)
+        .checked_mul(height as u64)?
+        .checked_mul(BYTES_PER_PIXEL)
+}
+
+/// How much memory one command may take, and where that figure comes from.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MemoryCap {
+    pub bytes: u64,
+    /// E.g. "half of the 23.4 GiB of physical memory, from /proc/meminfo".
+    pub source: String,
+}
+
+impl MemoryCap {
+    /// Half of the physical memory (`MemTotal` of `/proc/meminfo`) where it
+    /// can be read, else a fixed 4 GiB: the other half is left to the system
+    /// and to other programs.
+    pub fn of_this_machine() -> MemoryCap {
+        let total = std::fs::read_to_string("/proc/meminfo")
+            .ok()
+            .and_then(|text| {
+                let line = text.lines().find(|l| l.starts_with("MemTotal:"))?;
+                let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+                kib.checked_mul(1024)
+            });
+        match total {
+            Some(total) => MemoryCap {
+                bytes: total / 2,
+                source: format!(
+                    "half of the {} of physical memory, from /proc/meminfo",
+                    gib(total)
+                ),
+            },
+            None => MemoryCap {
+                bytes: 4 << 30,
+                source: "a fixed 4 GiB (no /proc/meminfo to read the physical memory from)"
+                    .to_string(),
+            },
+        }
+    }
+
+    /// `Err` with one line naming `what` needs `bytes` (`None`: more than 2⁶⁴)
+    /// if that is over the cap.
+    pub fn check(&self, what: &str, bytes: Option<u64>) -> Result<(), String> {
+        match bytes {
+            Some(b) if b <= self.bytes => Ok(()),
+            Some(b) => Err(format!(
+                "{what} needs about {} of memory, more than the cap of {} ({})",
+                gib(b),
+                gib(self.bytes),
+                self.source
+            )),
+            None => Err(format!(
+                "{what} needs more than 2^64 bytes of memory, more than any machine has"
+            )),
+        }
+    }
+}
+
+/// `bytes` in GiB with one decimal (`0.1 GiB` at least, for readability).
+fn gib(bytes: u64) -> String {
+    let g = bytes as f64 / (1u64 << 30) as f64;
+    if g >= 1000.0 {
+        format!("{g:.0} GiB")
+    } else {
+        format!("{:.1} GiB", g.max(0.1))
+    }
 }
 
 /// How the image is cut into units of work (see the module doc).
@@ -336,17 +431,20 @@ where
             let mut m = lock();
             m.spare.pop().unwrap_or_else(|| m.new_tile())
         };
-        while !self.stop.load(Ordering::Relaxed) {
-            let u = self.next_unit.fetch_add(1, Ordering::Relaxed);
-            if u >= self.layout.units {
-                break;
+        // Long samples see the stop flag too (see `integrator::stop`).
+        stop::watch(self.stop, || {
+            while !self.stop.load(Ordering::Relaxed) {
+                let u = self.next_unit.fetch_add(1, Ordering::Relaxed);
+                if u >= self.layout.units {
+                    break;
+                }
+                // Once taken, a unit is always submitted (maybe partly done), so
+                // the units merged are exactly 0..(last taken).
+                let done = self.render_unit(u, &mut tile);
+                self.bar.inc(done);
+                tile = lock().submit(u, tile);
             }
-            // Once taken, a unit is always submitted (maybe partly done), so
-            // the units merged are exactly 0..(last taken).
-            let done = self.render_unit(u, &mut tile);
-            self.bar.inc(done);
-            tile = lock().submit(u, tile);
-        }
+        });
     }
 
     /// Computes unit `u` into `tile`; returns the number of samples taken.
@@ -363,7 +461,14 @@ where
                         return done;
                     }
                     let mut sampler = Sampler::new(self.seed, index, k as u64);
-                    tile.record(pixel, |splats| (self.sample)(pixel, &mut sampler, splats));
+                    // A sample cut short by a stop request is dropped whole.
+                    let kept = tile.record_unless_abandoned(pixel, |splats| {
+                        let value = (self.sample)(pixel, &mut sampler, splats);
+                        (!stop::take_abandoned()).then_some(value)
+                    });
+                    if !kept {
+                        return done;
+                    }
                     done += 1;
                 }
             }
@@ -673,6 +778,132 @@ mod tests {
                 assert_eq!(img.get(x, y), expected);
             }
         }
+    }
+
+    /// Samples that would never end by themselves (they loop until
+    /// `stop_requested`) end within moments of the stop request, and are
+    /// dropped whole: the film holds only the samples that finished.
+    #[test]
+    fn a_stop_request_ends_a_sample_from_inside() {
+        let stop = AtomicBool::new(false);
+        let calls = AtomicU64::new(0);
+        let start = Instant::now();
+        let r = std::thread::scope(|s| {
+            s.spawn(|| {
+                std::thread::sleep(Duration::from_millis(100));
+                stop.store(true, Ordering::Relaxed);
+            });
+            render_pixels_with_stop(8, 8, &options(4, 1, 4), &stop, |p, _, splats| {
+                // The first 20 samples are quick; the others never end alone.
+                if calls.fetch_add(1, Ordering::Relaxed) < 20 {
+                    return Color::ONE;
+                }
+                splats.push(Splat {
+                    raster: p.as_vec2(),
+                    value: Color::ONE,
+                });
+                while !stop::stop_requested() {
+                    std::hint::spin_loop();
+                }
+                Color::splat(1000.0)
+            })
+        });
+        assert!(start.elapsed() < Duration::from_secs(10));
+        assert!(r.stats.interrupted);
+        assert_eq!(r.stats.samples, 20);
+        let img = r.film.image();
+        assert!(
+            img.pixels
+                .iter()
+                .all(|&c| c == Color::ZERO || c == Color::ONE)
+        );
+        assert_eq!(r.film.unsampled_pixels(), 64 - 5);
+        // Outside a render nothing asks to stop.
+        assert!(!stop::stop_requested());
+    }
+
+    /// Naive recursion with N = 1000 (10¹² rays per sample) and a path
+    /// tracer that never ends a path in a closed white furnace both stop
+    /// within moments of the request, keeping no half-computed sample.
+    #[test]
+    fn endless_integrators_see_the_stop_request() {
+        use crate::integrator::{NaiveRecursive, PathTracer};
+        let naive = NaiveRecursive::new(vec![1000], Some(5));
+        let endless = PathTracer {
+            max_depth: None,
+            rr_depth: u32::MAX,
+            ..PathTracer::default()
+        };
+        // Inside a white sphere: no path ever escapes.
+        let closed = "[camera]\nposition = [0, 0, 0]\nlook_at = [0, 0, -1]\nfov = 40\n\
+                      [materials.white]\ntype = \"lambert\"\nalbedo = 1\n\
+                      [[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 5\n\
+                      material = \"white\"\nemission = 1\ntwo_sided = true\n";
+        let closed = crate::scene::load_str(
+            closed,
+            &crate::scene::SceneOrigin::Dir {
+                name: "closed".into(),
+                dir: ".".into(),
+            },
+        )
+        .unwrap();
+        for (mut scene, integrator) in [
+            (
+                Scene::builtin("cornell").unwrap(),
+                &naive as &dyn Integrator,
+            ),
+            (Scene::build("closed", closed), &endless),
+        ] {
+            scene.set_resolution(2, 2);
+            let stop = AtomicBool::new(false);
+            let start = Instant::now();
+            let r = std::thread::scope(|s| {
+                s.spawn(|| {
+                    std::thread::sleep(Duration::from_millis(200));
+                    stop.store(true, Ordering::Relaxed);
+                });
+                render_pixels_with_stop(2, 2, &options(1, 2, 2), &stop, |p, sampler, splats| {
+                    integrator.sample(&scene, p, sampler, splats)
+                })
+            });
+            let seconds = start.elapsed().as_secs_f64();
+            assert!(seconds < 1.2, "{}: {seconds} s", integrator.name());
+            assert!(r.stats.interrupted && r.stats.samples == 0);
+        }
+    }
+
+    #[test]
+    fn absurd_thread_counts_are_capped() {
+        assert!(thread_limit() >= 64);
+        let r = render_pixels_with_stop(
+            4,
+            4,
+            &options(1, 1_000_000, 4),
+            &AtomicBool::new(false),
+            |_, _, _| Color::ONE,
+        );
+        assert_eq!(r.stats.samples, 16);
+    }
+
+    #[test]
+    fn memory_estimates_and_the_cap() {
+        assert_eq!(memory_needed(10, 10), Some(14_300));
+        assert_eq!(memory_needed(u32::MAX, u32::MAX), None);
+        let cap = MemoryCap {
+            bytes: 1 << 30,
+            source: "a test".into(),
+        };
+        assert!(cap.check("a tiny image", memory_needed(64, 64)).is_ok());
+        let e = cap
+            .check("a 100000×100000 image", memory_needed(100_000, 100_000))
+            .unwrap_err();
+        assert_eq!(
+            e,
+            "a 100000×100000 image needs about 1332 GiB of memory, more than the cap of 1.0 GiB (a test)"
+        );
+        assert!(cap.check("x", None).unwrap_err().contains("2^64"));
+        let here = MemoryCap::of_this_machine();
+        assert!(here.bytes >= 1 << 20, "{here:?}");
     }
 
     #[test]

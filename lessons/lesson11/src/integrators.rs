@@ -1,13 +1,20 @@
 //! The integrators a command line can choose (`--integrator`) and their
 //! options: the lecture's algorithms from direct light to bidirectional path
 //! tracing, shared by `lesson11 render` and the stereo chapter.
+//!
+//! Every option is checked before anything is rendered: an option the chosen
+//! integrator does not use is an error, not silently ignored, and naive
+//! recursion states its worst-case ray count and refuses more than
+//! [`RAY_BUDGET`] rays without `--force`.
 
+use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
 use raytracer::integrator::{
     AmbientOcclusion, Bdpt, Direct, DirectStrategy, Integrator, LightTracer, NaiveRecursive,
     PathTracer,
 };
-use raytracer::scene::Scene;
+use raytracer::render::RenderOptions;
+use raytracer::scene::{Scene, max_depth_from};
 
 /// The integrators this build offers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -30,9 +37,29 @@ pub enum IntegratorKind {
     Bdpt,
 }
 
+/// The most rays a naive recursive render may trace without `--force`, in
+/// the worst case (every ray hits, nothing ends early): 10¹⁰, some minutes
+/// on two cores.
+pub const RAY_BUDGET: f64 = 1e10;
+
+/// The max depth of naive recursion when neither the command line nor the
+/// scene gives a finite one (an unlimited one must be asked for with
+/// `--max-depth -1 --roulette`).
+pub const NAIVE_DEFAULT_DEPTH: u32 = 4;
+
 impl IntegratorKind {
-    pub fn build(self, args: &IntegratorArgs, scene: &Scene) -> Box<dyn Integrator> {
-        let (max_depth, rr_depth) = args.depths(scene);
+    /// The integrator with the command line's options, checked; `options`
+    /// and `force` decide whether naive recursion stays within its budget.
+    pub fn build(
+        self,
+        args: &IntegratorArgs,
+        scene: &Scene,
+        options: &RenderOptions,
+        force: bool,
+    ) -> Result<Box<dyn Integrator>> {
+        args.check(self)?;
+        let max_depth = args.max_depth(self, scene)?;
+        let rr_depth = args.rr_depth.unwrap_or(scene.settings.rr_depth);
         let path = |strategy| {
             Box::new(PathTracer {
                 max_depth,
@@ -40,18 +67,19 @@ impl IntegratorKind {
                 strategy,
             })
         };
-        match self {
+        Ok(match self {
             IntegratorKind::Direct => Box::new(Direct),
             IntegratorKind::Ao => Box::new(AmbientOcclusion {
-                distance: args.ao_distance,
+                distance: args.ao_distance.unwrap_or(1.0),
             }),
             IntegratorKind::Path => path(DirectStrategy::Mis),
             IntegratorKind::PathBrdf => path(DirectStrategy::BrdfOnly),
             IntegratorKind::PathNee => path(DirectStrategy::LightOnly),
             IntegratorKind::Naive => {
-                let mut naive = NaiveRecursive::new(args.branching.clone(), max_depth.or(Some(4)));
+                let mut naive = NaiveRecursive::new(args.branching(), max_depth);
                 naive.roulette_depth = args.roulette.then_some(rr_depth);
                 naive.cutoff = args.cutoff;
+                check_ray_budget(&naive, scene, options, force)?;
                 Box::new(naive)
             }
             IntegratorKind::Light => Box::new(LightTracer {
@@ -63,43 +91,276 @@ impl IntegratorKind {
                 rr_depth,
                 strategy_images: None,
             }),
-        }
+        })
     }
 }
 
+/// Prints the worst-case ray count of a naive recursive render and refuses
+/// more than [`RAY_BUDGET`] rays unless `force`.
+fn check_ray_budget(
+    naive: &NaiveRecursive,
+    scene: &Scene,
+    options: &RenderOptions,
+    force: bool,
+) -> Result<()> {
+    let depth = naive
+        .max_depth
+        .map_or_else(|| "unlimited".to_string(), |d| d.to_string());
+    let Some(per_sample) = naive.rays_per_sample_bound() else {
+        println!(
+            "naive recursion (N = {:?}, D = {depth}): no bound on the rays per sample; Russian roulette ends the recursion",
+            naive.branching
+        );
+        return Ok(());
+    };
+    let samples = scene.camera.width as f64 * scene.camera.height as f64 * options.spp as f64;
+    let total = per_sample as f64 * samples;
+    println!(
+        "naive recursion (N = {:?}, D = {depth}): at most {per_sample} rays per sample, {total:.2e} rays for {}×{} at {} spp",
+        naive.branching, scene.camera.width, scene.camera.height, options.spp
+    );
+    if total > RAY_BUDGET && !force {
+        bail!(
+            "naive recursion would trace up to {total:.2e} rays, more than the budget of {RAY_BUDGET:.0e}: \
+             lower --branching, --max-depth, --spp or the image size, or pass --force"
+        );
+    }
+    Ok(())
+}
+
 /// Options of the integrators.
-#[derive(Args, Debug, Clone)]
+#[derive(Args, Debug, Clone, Default)]
 pub struct IntegratorArgs {
-    /// Maximum path depth, Mitsuba's convention: 1 = emitters seen directly, 2 = direct light,
-    /// D = at most D−1 bounces, −1 = unlimited (default: the scene's).
+    /// Maximum path depth D, Mitsuba's convention: 1 = emitters seen directly, 2 = direct light,
+    /// D = at most D−1 bounces, −1 = unlimited; at most 65535, as in a scene file (default: the
+    /// scene's; naive recursion: 4 unless the scene's is finite). Not for direct or ao.
     #[arg(long, allow_negative_numbers = true)]
-    pub max_depth: Option<i32>,
-    /// Russian roulette may end paths after this many bounces (default: the scene's).
+    pub max_depth: Option<i64>,
+    /// Russian roulette may end paths after this many bounces (default: the scene's). Not for direct or ao.
     #[arg(long)]
     pub rr_depth: Option<u32>,
-    /// Branching factor of naive recursion, one per level (the last repeats), e.g. 16,4,2.
-    #[arg(long, value_delimiter = ',', default_value = "8")]
+    /// Naive recursion: branching factor N, one per level (the last repeats), e.g. 16,4,2 (default: 8).
+    #[arg(long, value_delimiter = ',')]
     pub branching: Vec<u32>,
     /// Naive recursion: end by Russian roulette (unbiased) from --rr-depth on.
     #[arg(long)]
     pub roulette: bool,
     /// Naive recursion: stop once the product of BRDF weights is below this (the lecture's idea; biased).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub cutoff: Option<f32>,
-    /// Length of the occlusion rays of `--integrator ao`, in scene units (metres).
-    #[arg(long, default_value_t = 1.0)]
-    pub ao_distance: f32,
+    /// Ambient occlusion: length of the occlusion rays, in scene units (metres; default 1).
+    #[arg(long, allow_negative_numbers = true)]
+    pub ao_distance: Option<f32>,
 }
 
 impl IntegratorArgs {
-    /// The maximum depth (`None`: unlimited) and the depth where Russian
-    /// roulette may start, the scene's where the command line gives none.
-    pub fn depths(&self, scene: &Scene) -> (Option<u32>, u32) {
-        let max_depth = match self.max_depth {
-            Some(d) if d < 0 => None,
-            Some(d) => Some(d as u32),
-            None => scene.settings.max_depth,
+    /// Refuses options that `kind` does not use, and values that mean nothing.
+    fn check(&self, kind: IntegratorKind) -> Result<()> {
+        use IntegratorKind::{Ao, Direct, Naive};
+        let name = kind
+            .to_possible_value()
+            .map_or_else(String::new, |v| v.get_name().to_string());
+        let unused = |option: &str, why: &str| -> Result<()> {
+            bail!("{option} does not apply to --integrator {name}: {why}")
         };
-        (max_depth, self.rr_depth.unwrap_or(scene.settings.rr_depth))
+        if matches!(kind, Direct | Ao) {
+            let why = if kind == Direct {
+                "direct lighting is D = 2 by definition (emitters seen directly and one bounce); \
+                 for another depth use --integrator path --max-depth D"
+            } else {
+                "ambient occlusion traces one occlusion ray, no paths"
+            };
+            if self.max_depth.is_some() {
+                unused("--max-depth", why)?;
+            }
+            if self.rr_depth.is_some() {
+                unused("--rr-depth", why)?;
+            }
+        }
+        if kind != Naive {
+            let why = "it is an option of --integrator naive";
+            if !self.branching.is_empty() {
+                unused("--branching", why)?;
+            }
+            if self.roulette {
+                unused("--roulette", why)?;
+            }
+            if self.cutoff.is_some() {
+                unused("--cutoff", why)?;
+            }
+        }
+        if kind != Ao && self.ao_distance.is_some() {
+            unused("--ao-distance", "it is an option of --integrator ao")?;
+        }
+        if self.branching.contains(&0) {
+            bail!("--branching factors must be at least 1");
+        }
+        if let Some(c) = self.cutoff
+            && !(c.is_finite() && c >= 0.0)
+        {
+            bail!("--cutoff must be a number ≥ 0 (a product of BRDF weights), got {c}");
+        }
+        if let Some(d) = self.ao_distance
+            && !(d.is_finite() && d > 0.0)
+        {
+            bail!("--ao-distance must be a positive distance, got {d}");
+        }
+        Ok(())
+    }
+
+    /// The branching factors of naive recursion (8 if none were given).
+    pub fn branching(&self) -> Vec<u32> {
+        if self.branching.is_empty() {
+            vec![8]
+        } else {
+            self.branching.clone()
+        }
+    }
+
+    /// The max depth D (`None`: unlimited) for `kind`: `--max-depth` under
+    /// the scene file's rule, else the scene's. Naive recursion takes
+    /// [`NAIVE_DEFAULT_DEPTH`] where neither gives a finite depth, and an
+    /// unlimited one only with `--roulette` (it would never end).
+    pub fn max_depth(&self, kind: IntegratorKind, scene: &Scene) -> Result<Option<u32>> {
+        let given = match self.max_depth {
+            Some(d) => Some(max_depth_from(d).map_err(|e| anyhow::anyhow!("--max-depth {e}"))?),
+            None => None,
+        };
+        if kind != IntegratorKind::Naive {
+            return Ok(given.unwrap_or(scene.settings.max_depth));
+        }
+        match given {
+            Some(None) if !self.roulette => bail!(
+                "naive recursion with --max-depth -1 (unlimited) never ends: add --roulette, \
+                 or give a depth such as --max-depth 4"
+            ),
+            Some(d) => Ok(d),
+            None => Ok(Some(
+                scene.settings.max_depth.unwrap_or(NAIVE_DEFAULT_DEPTH),
+            )),
+        }
+    }
+
+    /// The roulette depth: `--rr-depth`, else the scene's.
+    pub fn rr_depth(&self, scene: &Scene) -> u32 {
+        self.rr_depth.unwrap_or(scene.settings.rr_depth)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn build(kind: IntegratorKind, args: &IntegratorArgs, spp: u32) -> Result<Box<dyn Integrator>> {
+        let scene = Scene::builtin("cornell").unwrap();
+        let options = RenderOptions {
+            spp,
+            ..RenderOptions::default()
+        };
+        kind.build(args, &scene, &options, false)
+    }
+
+    #[test]
+    fn unused_and_meaningless_options_are_refused() {
+        use IntegratorKind::*;
+        let with = |f: fn(&mut IntegratorArgs)| {
+            let mut a = IntegratorArgs::default();
+            f(&mut a);
+            a
+        };
+        let cases: [(IntegratorKind, IntegratorArgs, &str); 9] = [
+            (
+                Direct,
+                with(|a| a.max_depth = Some(5)),
+                "D = 2 by definition",
+            ),
+            (
+                Ao,
+                with(|a| a.rr_depth = Some(5)),
+                "--rr-depth does not apply",
+            ),
+            (
+                Path,
+                with(|a| a.branching = vec![4]),
+                "--branching does not apply",
+            ),
+            (
+                Path,
+                with(|a| a.cutoff = Some(0.1)),
+                "--cutoff does not apply",
+            ),
+            (
+                Bdpt,
+                with(|a| a.ao_distance = Some(1.0)),
+                "--ao-distance does not apply",
+            ),
+            (
+                Naive,
+                with(|a| a.cutoff = Some(f32::NAN)),
+                "--cutoff must be",
+            ),
+            (Naive, with(|a| a.cutoff = Some(-1.0)), "--cutoff must be"),
+            (
+                Ao,
+                with(|a| a.ao_distance = Some(0.0)),
+                "--ao-distance must be",
+            ),
+            (
+                Path,
+                with(|a| a.max_depth = Some(0)),
+                "--max-depth must be -1",
+            ),
+        ];
+        for (kind, args, expected) in cases {
+            let e = build(kind, &args, 1).err().expect("refused").to_string();
+            assert!(e.contains(expected), "{kind:?} {args:?}: {e}");
+        }
+    }
+
+    #[test]
+    fn max_depth_follows_the_scene_files_rule() {
+        use IntegratorKind::*;
+        let scene = Scene::builtin("cornell").unwrap();
+        let depth = |kind, d: Option<i64>, roulette| {
+            let args = IntegratorArgs {
+                max_depth: d,
+                roulette,
+                ..IntegratorArgs::default()
+            };
+            args.max_depth(kind, &scene).map_err(|e| e.to_string())
+        };
+        for bad in [0, -2, 65_536, 70_000] {
+            let e = depth(Path, Some(bad), false).unwrap_err();
+            assert!(e.starts_with("--max-depth must be -1 (unlimited)"), "{e}");
+        }
+        assert_eq!(depth(Path, Some(-1), false), Ok(None));
+        assert_eq!(depth(Path, Some(65_535), false), Ok(Some(65_535)));
+        // The Cornell box's own depth is unlimited.
+        assert_eq!(depth(Path, None, false), Ok(None));
+        assert_eq!(depth(Naive, None, false), Ok(Some(4)));
+        assert!(
+            depth(Naive, Some(-1), false)
+                .unwrap_err()
+                .contains("never ends")
+        );
+        assert_eq!(depth(Naive, Some(-1), true), Ok(None));
+    }
+
+    #[test]
+    fn naive_recursion_stays_within_its_ray_budget() {
+        let args = IntegratorArgs {
+            branching: vec![1000],
+            ..IntegratorArgs::default()
+        };
+        let e = build(IntegratorKind::Naive, &args, 4)
+            .err()
+            .unwrap()
+            .to_string();
+        assert!(
+            e.contains("more than the budget") && e.contains("--force"),
+            "{e}"
+        );
+        // N = 8, D = 4: 585 rays per sample, 3.8e7 for 256×256 at 1 spp.
+        assert!(build(IntegratorKind::Naive, &IntegratorArgs::default(), 1).is_ok());
     }
 }

@@ -5,16 +5,19 @@
 //! options, with errors that say what to do.
 
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use anyhow::{Context, Result, bail};
 use clap::Args;
-use raytracer::render::RenderOptions;
-use raytracer::scene::Scene;
+use raytracer::film::output::StagedFile;
+use raytracer::render::{MemoryCap, RenderOptions, memory_needed, thread_limit};
+use raytracer::scene::{Scene, builtin};
 
 /// Scene and sampling options common to the chapters.
 #[derive(Args, Clone, Debug, Default)]
 pub struct SceneArgs {
     /// A built-in scene name (see `lesson11 scenes`) or a path to a scene file (.toml).
+    /// A built-in name wins over a file of that name in the current folder (pass ./NAME for the file).
     #[arg(long, short)]
     pub scene: Option<String>,
     /// Image width in pixels (default: the scene's).
@@ -29,17 +32,25 @@ pub struct SceneArgs {
     /// Seed of the random numbers: the same seed gives the same image, bit for bit.
     #[arg(long)]
     pub seed: Option<u64>,
-    /// Worker threads (default: all cores). The image does not depend on it.
+    /// Worker threads (default: all cores; at most 4 per core, and at least 64 are allowed).
+    /// The image does not depend on it.
     #[arg(long)]
     pub threads: Option<usize>,
     /// Output folder.
     #[arg(long, default_value = "out/lesson11")]
     pub out: PathBuf,
+    /// Go ahead although the render needs more memory than the cap (half of the physical
+    /// memory) or naive recursion more rays than its budget.
+    #[arg(long)]
+    pub force: bool,
 }
 
 impl SceneArgs {
-    /// Loads the scene (`default` if none was named) and applies the overrides.
+    /// Loads the scene (`default` if none was named), applies the overrides
+    /// and checks, before anything is rendered, that the threads and the
+    /// memory are within bounds.
     pub fn load(&self, default: &str) -> Result<(Scene, RenderOptions)> {
+        check_threads(self.threads)?;
         let name = self.scene.as_deref().unwrap_or(default);
         let mut scene = load_scene(name)?;
         let width = self.width.unwrap_or(scene.settings.width);
@@ -49,6 +60,12 @@ impl SceneArgs {
                 "the image size must be positive, got {width}×{height}: pass e.g. --width 256 --height 256"
             );
         }
+        check_memory(
+            &format!("a {width}×{height} render"),
+            memory_needed(width, height),
+            "--width and --height",
+            self.force,
+        )?;
         if width != scene.settings.width || height != scene.settings.height {
             scene.set_resolution(width, height);
         }
@@ -58,9 +75,6 @@ impl SceneArgs {
         let spp = self.spp.unwrap_or(scene.settings.spp);
         if spp == 0 {
             bail!("--spp must be at least 1");
-        }
-        if self.threads == Some(0) {
-            bail!("--threads must be at least 1 (or left out to use every core)");
         }
         scene.settings.spp = spp;
         let options = RenderOptions {
@@ -74,23 +88,103 @@ impl SceneArgs {
     }
 }
 
-/// A built-in scene by name, or a scene file by path.
-pub fn load_scene(name: &str) -> Result<Scene> {
-    let path = Path::new(name);
-    let looks_like_file = name.ends_with(".toml") || name.contains('/') || name.contains('\\');
-    if looks_like_file || (path.exists() && path.is_file()) {
-        Ok(Scene::load(path)?)
-    } else {
-        Ok(Scene::builtin(name)?)
+/// `--exposure`: stops in [−64, 64] (NaN would make the PNG black, and
+/// beyond ±128 the factor 2^stops is 0 or infinite in `f32`).
+pub fn check_exposure(stops: f32) -> Result<()> {
+    if !(-64.0..=64.0).contains(&stops) {
+        bail!(
+            "--exposure must be a number of stops in [-64, 64] (+1 doubles the brightness), got {stops}"
+        );
+    }
+    Ok(())
+}
+
+/// `--threads`: at least 1 and at most [`thread_limit`].
+pub fn check_threads(threads: Option<usize>) -> Result<()> {
+    match threads {
+        Some(0) => bail!("--threads must be at least 1 (or left out to use every core)"),
+        Some(n) if n > thread_limit() => bail!(
+            "--threads {n} is more than the {} threads a render may use here (4 per core, at least 64)",
+            thread_limit()
+        ),
+        _ => Ok(()),
     }
 }
 
-/// Creates `dir` (and its parents), with an error that names it.
+/// Refuses, in one line naming the options to change, what needs more memory
+/// than the cap ([`MemoryCap::of_this_machine`]). With `--force` the cap is
+/// the whole physical memory instead of half of it.
+pub fn check_memory(what: &str, bytes: Option<u64>, options: &str, force: bool) -> Result<()> {
+    let usual = MemoryCap::of_this_machine();
+    let forced = MemoryCap {
+        bytes: usual.bytes.saturating_mul(2),
+        source: "with --force, twice the usual cap".into(),
+    };
+    let cap = if force { &forced } else { &usual };
+    cap.check(what, bytes).map_err(|e| {
+        // Suggest --force only where it would help.
+        let advice = if !force && forced.check(what, bytes).is_ok() {
+            format!("choose smaller {options}, or pass --force")
+        } else {
+            format!("choose smaller {options}")
+        };
+        anyhow::anyhow!("{e}: {advice}")
+    })
+}
+
+/// A built-in scene by name, or a scene file by path. A built-in name wins
+/// over a file of that name in the current folder (a note says so once):
+/// `./cornell` names the file.
+pub fn load_scene(name: &str) -> Result<Scene> {
+    static NOTED: AtomicBool = AtomicBool::new(false);
+    let path = Path::new(name);
+    let looks_like_file = name.ends_with(".toml") || name.contains('/') || name.contains('\\');
+    if looks_like_file {
+        return Ok(Scene::load(path)?);
+    }
+    if builtin(name).is_some() {
+        if path.exists() && !NOTED.swap(true, Ordering::Relaxed) {
+            eprintln!(
+                "note: `{name}` is the built-in scene; to load the file {name} of this folder, \
+                 pass --scene ./{name}"
+            );
+        }
+        return Ok(Scene::builtin(name)?);
+    }
+    if path.is_file() {
+        return Ok(Scene::load(path)?);
+    }
+    Ok(Scene::builtin(name)?)
+}
+
+/// Creates the output folder `dir` (and its parents) and checks that files
+/// can be written in it, before any work is done; errors name `dir` and the
+/// option (`--out`, `--to`) that chose it.
 pub fn create_dir(dir: &Path) -> Result<()> {
+    create_dir_for(dir, "--out")
+}
+
+/// [`create_dir`] for a folder chosen by the option `flag`.
+pub fn create_dir_for(dir: &Path, flag: &str) -> Result<()> {
+    if dir.exists() && !dir.is_dir() {
+        bail!(
+            "the output folder {} is a file, not a folder: choose another with {flag}",
+            dir.display()
+        );
+    }
     std::fs::create_dir_all(dir).with_context(|| {
         format!(
-            "cannot create the output folder {}: choose another with --out",
+            "cannot create the output folder {}: choose another with {flag}",
             dir.display()
         )
-    })
+    })?;
+    // A staged file that is never committed: created, then removed.
+    StagedFile::write(dir.join("write-test"), "a test file", |_| Ok(()))
+        .map(drop)
+        .with_context(|| {
+            format!(
+                "cannot write into the output folder {}: choose another with {flag}",
+                dir.display()
+            )
+        })
 }

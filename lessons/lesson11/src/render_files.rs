@@ -1,20 +1,28 @@
 //! Rendering to files: PNG to look at, EXR to measure, and the variance of
 //! each pixel's mean, written where a chapter or a command asks.
+//!
+//! The files of one picture are replaced together: all are written to
+//! temporary files first and only then renamed over the old ones (see
+//! `raytracer::film::output`), so a full disk, a kill or an error leaves the
+//! previous picture whole.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use raytracer::film::Image;
+use raytracer::film::output::commit_all;
 use raytracer::integrator::Integrator;
-use raytracer::render::{RenderOptions, render};
+use raytracer::render::{RenderOptions, RenderStats, render};
 use raytracer::scene::Scene;
 
 use crate::options::create_dir;
 use crate::page::Picture;
 
 /// Renders and writes `dir/stem.png`, `dir/stem.exr` and `dir/stem-variance.exr`,
-/// then prints one summary line. An interrupted render (Ctrl-C) still writes
-/// what it computed.
+/// then prints one summary line. An interrupted render (Ctrl-C, SIGTERM,
+/// SIGHUP) still writes what it computed, says how much that is, and
+/// returns an error.
 pub fn render_to_files(
     scene: &Scene,
     integrator: &dyn Integrator,
@@ -24,30 +32,37 @@ pub fn render_to_files(
     exposure: f32,
 ) -> Result<Picture> {
     create_dir(dir)?;
-    let result = render(scene, integrator, options);
     let png = dir.join(format!("{stem}.png"));
     let exr = dir.join(format!("{stem}.exr"));
     let variance = dir.join(format!("{stem}-variance.exr"));
-    result
-        .film
-        .write_png(&png, exposure)
-        .with_context(|| format!("cannot write {}", png.display()))?;
-    result
-        .film
-        .write_exr(&exr)
-        .with_context(|| format!("cannot write {}", exr.display()))?;
-    result
-        .film
-        .variance_image()
-        .write_exr(&variance)
-        .with_context(|| format!("cannot write {}", variance.display()))?;
+    // Found now, not after the render (a folder cannot be replaced by a file).
+    if let Some(folder) = [&png, &exr, &variance].into_iter().find(|p| p.is_dir()) {
+        anyhow::bail!(
+            "cannot write {}: a folder has that name; move it or choose another --out",
+            folder.display()
+        );
+    }
+    warn_if_unlit(scene, integrator);
+    let result = render(scene, integrator, options);
+    if result.stats.samples == 0 && result.stats.interrupted {
+        // A black picture would only replace a better one.
+        println!(
+            "  {}: interrupted before any sample was computed; nothing written",
+            png.display()
+        );
+        anyhow::bail!("interrupted before any sample was computed");
+    }
+    let image = result.film.image();
+    let staged = [
+        image.stage_exr(&exr),
+        result.film.variance_image().stage_exr(&variance),
+        image.stage_png(&png, exposure),
+    ];
+    // All written before any is renamed: an error leaves the old three.
+    let staged = staged.into_iter().collect::<std::io::Result<Vec<_>>>()?;
+    commit_all(staged)?;
     let stats = &result.stats;
     let seconds = stats.elapsed.as_secs_f64();
-    println!(
-        "  wrote {} and .exr ({} spp, {seconds:.2} s)",
-        png.display(),
-        options.spp
-    );
     if stats.nonfinite > 0 {
         println!(
             "  note: {} samples were NaN, infinite or negative and counted as zero",
@@ -55,11 +70,21 @@ pub fn render_to_files(
         );
     }
     if stats.interrupted {
+        println!(
+            "  wrote {} and .exr: {}",
+            png.display(),
+            interrupted_summary(stats, options, result.film.unsampled_pixels(), scene)
+        );
         anyhow::bail!(
-            "interrupted by Ctrl-C; what was rendered so far is in {}",
+            "interrupted; what was rendered so far is in {}",
             exr.display()
         );
     }
+    println!(
+        "  wrote {} and .exr ({} spp, {seconds:.2} s)",
+        png.display(),
+        options.spp
+    );
     Ok(Picture {
         png,
         exr,
@@ -68,13 +93,60 @@ pub fn render_to_files(
     })
 }
 
+/// What an interrupted render computed: its samples, their average per
+/// pixel, and how many pixels have none (they are black in the files).
+fn interrupted_summary(
+    stats: &RenderStats,
+    options: &RenderOptions,
+    unsampled: u64,
+    scene: &Scene,
+) -> String {
+    let pixels = scene.camera.width as u64 * scene.camera.height as u64;
+    let expected = pixels * options.spp as u64;
+    format!(
+        "INTERRUPTED after {} of {expected} samples ({:.2} of {} spp on average, {:.2} s); \
+         {unsampled} of {pixels} pixels ({:.0} %) have no sample and are black",
+        stats.samples,
+        stats.samples as f64 / pixels.max(1) as f64,
+        options.spp,
+        stats.elapsed.as_secs_f64(),
+        100.0 * unsampled as f64 / pixels.max(1) as f64
+    )
+}
+
+/// Warns, once per run, that a scene without lights renders black (ambient
+/// occlusion needs none).
+fn warn_if_unlit(scene: &Scene, integrator: &dyn Integrator) {
+    static WARNED: AtomicBool = AtomicBool::new(false);
+    if scene.lights.is_empty() && integrator.name() != "ao" && !WARNED.swap(true, Ordering::Relaxed)
+    {
+        eprintln!(
+            "warning: scene `{}` has no light, no emitting shape and no environment: \
+             its image is black (add an `emission`, a [[lights]] or an [environment])",
+            scene.name
+        );
+    }
+}
+
+/// Writes `dir/stem.png` (scaled by `2^exposure`) and `dir/stem.exr`
+/// together: both or neither replace the old ones.
+pub fn write_png_and_exr(
+    image: &Image,
+    dir: &Path,
+    stem: &str,
+    exposure: f32,
+) -> Result<(PathBuf, PathBuf)> {
+    let png = dir.join(format!("{stem}.png"));
+    let exr = dir.join(format!("{stem}.exr"));
+    let staged = vec![image.stage_exr(&exr)?, image.stage_png(&png, exposure)?];
+    commit_all(staged)?;
+    Ok((png, exr))
+}
+
 /// Writes an image computed outside `render` as `dir/stem.png` and
 /// `dir/stem.exr`, recorded as a picture of `spp` samples per pixel.
 pub fn write_image(dir: &Path, stem: &str, image: &Image, spp: u32) -> Result<Picture> {
-    let png = dir.join(format!("{stem}.png"));
-    let exr = dir.join(format!("{stem}.exr"));
-    image.write_png(&png, 0.0)?;
-    image.write_exr(&exr)?;
+    let (png, exr) = write_png_and_exr(image, dir, stem, 0.0)?;
     Ok(Picture {
         png,
         exr,

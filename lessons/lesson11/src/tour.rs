@@ -13,10 +13,10 @@ use std::path::PathBuf;
 use anyhow::Result;
 use clap::{ArgMatches, Args, ValueEnum};
 use raytracer::integrator::Integrator;
-use raytracer::render::RenderOptions;
+use raytracer::render::{RenderOptions, memory_needed};
 use raytracer::scene::Scene;
 
-use crate::options::{SceneArgs, create_dir, load_scene};
+use crate::options::{SceneArgs, check_memory, check_threads, create_dir, load_scene};
 use crate::page::{Figure, Section};
 use crate::render_files::render_to_files;
 
@@ -125,10 +125,8 @@ impl Tour {
     /// The tour the command line asks for; creates its output folder.
     pub fn new(args: &TourArgs) -> Result<Tour> {
         let out = &args.common.out;
+        check_threads(args.common.threads)?;
         create_dir(out)?;
-        if args.common.threads == Some(0) {
-            anyhow::bail!("--threads must be at least 1 (or left out to use every core)");
-        }
         let quality = if args.quick {
             Quality::Quick
         } else if args.full {
@@ -156,8 +154,9 @@ impl Tour {
         let mut scene = load_scene(name)?;
         let mut spp = match self.quality {
             Quality::Tiny => {
-                let (w, h) = (scene.settings.width, scene.settings.height);
-                scene.set_resolution(32, (32 * h / w).max(1));
+                let (w, h) = (scene.settings.width as u64, scene.settings.height as u64);
+                // In 64 bits: a scene file may give sizes up to 2³² − 1.
+                scene.set_resolution(32, (32 * h / w).clamp(1, u32::MAX as u64) as u32);
                 2.min(spp)
             }
             Quality::Quick => spp,
@@ -173,6 +172,13 @@ impl Tour {
             }
             scene.set_resolution(w, h);
         }
+        let (w, h) = (scene.settings.width, scene.settings.height);
+        check_memory(
+            &format!("a {w}×{h} render"),
+            memory_needed(w, h),
+            "--width and --height",
+            o.force,
+        )?;
         if let Some(s) = o.spp {
             if s == 0 {
                 anyhow::bail!("--spp must be at least 1");

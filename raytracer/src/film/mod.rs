@@ -266,6 +266,12 @@ impl Film {
         self.pixels[self.index(pixel)].count
     }
 
+    /// How many pixels have no sample at all (an interrupted render: their
+    /// mean is shown as 0, and their variance as infinite).
+    pub fn unsampled_pixels(&self) -> u64 {
+        self.pixels.iter().filter(|p| p.count == 0).count() as u64
+    }
+
     /// `M`, the number of pixel samples on the whole film.
     pub fn total_samples(&self) -> u64 {
         self.total_samples

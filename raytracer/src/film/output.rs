@@ -13,15 +13,33 @@
 //! unclamped, bit for bit what the film computed (references for the grader,
 //! environment maps).
 //!
+//! The same pixels always give the same bytes, PNG and EXR alike (the EXR's
+//! blocks are compressed and written in order, on one thread), so a rerun
+//! with the same seed can be compared file by file.
+//!
+//! **No file is ever left half-written.** Every file goes first to a hidden
+//! temporary file in the destination's folder (`.NAME.PID-N.tmp`) and is
+//! renamed over the destination once complete ([`StagedFile`]). A rename
+//! within one folder replaces the file in one step: a reader, a kill -9 or a
+//! full disk sees the old file or the new one, never a truncated one. Files
+//! that belong together (a render's PNG, EXR and variance EXR) are all
+//! written to temporary files first and only then renamed, in order, by
+//! [`commit_all`]: if any of them cannot be written (a full disk, a
+//! permission), none is replaced. A crash *between* two renames, a window of
+//! microseconds, leaves the files renamed so far new and the others old; a
+//! crash while writing the temporaries leaves every old file in place and a
+//! stale hidden `.tmp` file beside them.
+//!
 //! Errors are `std::io::Error`s whose message names the file. Creating the
 //! parent directory is the caller's job; a missing one is reported as such.
 
 use super::Image;
 use crate::math::Color;
 use image::ImageEncoder;
-use std::fs::File;
-use std::io::{self, BufWriter};
-use std::path::Path;
+use std::fs::{File, OpenOptions};
+use std::io::{self, BufWriter, Write};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// The sRGB encoding `V(L)` of a linear value `L ∈ [0, 1]` (see the module doc).
 #[inline]
@@ -63,6 +81,105 @@ fn check_parent(path: &Path) -> io::Result<()> {
     }
 }
 
+/// A complete file under a temporary name beside its destination, not yet in
+/// place (see the module doc). [`StagedFile::commit`] renames it over the
+/// destination; dropped without a commit, it removes the temporary file.
+#[derive(Debug)]
+#[must_use = "a staged file replaces its destination only once committed"]
+pub struct StagedFile {
+    temp: PathBuf,
+    target: PathBuf,
+    committed: bool,
+}
+
+impl StagedFile {
+    /// Writes the new content of `target` with `fill` into a fresh temporary
+    /// file in `target`'s folder and flushes it to the disk. `what` names the
+    /// kind of file in errors ("PNG", "EXR", …). On an error the temporary
+    /// file is removed and `target` is untouched.
+    pub fn write(
+        target: impl AsRef<Path>,
+        what: &str,
+        fill: impl FnOnce(&mut BufWriter<File>) -> io::Result<()>,
+    ) -> io::Result<StagedFile> {
+        static COUNTER: AtomicU64 = AtomicU64::new(0);
+        let target = target.as_ref().to_path_buf();
+        check_parent(&target)?;
+        let name = target.file_name().ok_or_else(|| {
+            error(
+                &target,
+                "cannot write",
+                "the path names no file",
+                io::ErrorKind::InvalidInput,
+            )
+        })?;
+        let temp = target.with_file_name(format!(
+            ".{}.{}-{}.tmp",
+            name.to_string_lossy(),
+            std::process::id(),
+            COUNTER.fetch_add(1, Ordering::Relaxed)
+        ));
+        let file = OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&temp)
+            .map_err(|e| error(&target, "cannot create", &e, e.kind()))?;
+        // From here on, dropping `staged` removes the temporary file.
+        let staged = StagedFile {
+            temp,
+            target,
+            committed: false,
+        };
+        let mut writer = BufWriter::new(file);
+        let written = fill(&mut writer)
+            .and_then(|()| writer.flush())
+            .and_then(|()| writer.get_ref().sync_all());
+        match written {
+            Ok(()) => Ok(staged),
+            Err(e) => Err(error(
+                &staged.target,
+                &format!("cannot write {what}"),
+                &e,
+                e.kind(),
+            )),
+        }
+    }
+
+    /// The file this one will replace.
+    pub fn target(&self) -> &Path {
+        &self.target
+    }
+
+    /// Renames the temporary file over the destination (one step: readers see
+    /// the old file or the new one).
+    pub fn commit(mut self) -> io::Result<()> {
+        std::fs::rename(&self.temp, &self.target)
+            .map_err(|e| error(&self.target, "cannot replace", &e, e.kind()))?;
+        self.committed = true;
+        Ok(())
+    }
+}
+
+impl Drop for StagedFile {
+    fn drop(&mut self) {
+        if !self.committed {
+            let _ = std::fs::remove_file(&self.temp);
+        }
+    }
+}
+
+/// Puts files that belong together in place, in the order given, once all of
+/// them were written (see the module doc for what a crash in between leaves).
+pub fn commit_all(files: impl IntoIterator<Item = StagedFile>) -> io::Result<()> {
+    files.into_iter().try_for_each(StagedFile::commit)
+}
+
+/// Writes `bytes` to `path` through a temporary file (see [`StagedFile`]):
+/// the old file stays whole until the new one is.
+pub fn write_file(path: impl AsRef<Path>, bytes: impl AsRef<[u8]>) -> io::Result<()> {
+    StagedFile::write(path, "the file", |w| w.write_all(bytes.as_ref()))?.commit()
+}
+
 impl Image {
     /// The 8-bit sRGB bytes (RGB, row by row) of the image scaled by
     /// `2^exposure_stops`.
@@ -78,36 +195,55 @@ impl Image {
     }
 
     /// Writes an 8-bit sRGB PNG of the image scaled by `2^exposure_stops`
-    /// (0 = as rendered, +1 = twice as bright).
+    /// (0 = as rendered, +1 = twice as bright), replacing `path` in one step.
     pub fn write_png(&self, path: impl AsRef<Path>, exposure_stops: f32) -> io::Result<()> {
-        let path = path.as_ref();
-        check_parent(path)?;
-        let bytes = self.to_srgb8(exposure_stops);
-        let file = File::create(path).map_err(|e| error(path, "cannot create", &e, e.kind()))?;
-        let mut writer = BufWriter::new(file);
-        image::codecs::png::PngEncoder::new(&mut writer)
-            .write_image(
-                &bytes,
-                self.width,
-                self.height,
-                image::ExtendedColorType::Rgb8,
-            )
-            .map_err(|e| error(path, "cannot write PNG", e, io::ErrorKind::Other))?;
-        io::Write::flush(&mut writer).map_err(|e| error(path, "cannot write PNG", &e, e.kind()))
+        self.stage_png(path, exposure_stops)?.commit()
     }
 
-    /// Writes the image as a linear, unclamped float32 RGB OpenEXR file.
+    /// The PNG of [`Image::write_png`], written but not yet in place.
+    pub fn stage_png(&self, path: impl AsRef<Path>, exposure_stops: f32) -> io::Result<StagedFile> {
+        let bytes = self.to_srgb8(exposure_stops);
+        StagedFile::write(path, "PNG", |w| {
+            image::codecs::png::PngEncoder::new(w)
+                .write_image(
+                    &bytes,
+                    self.width,
+                    self.height,
+                    image::ExtendedColorType::Rgb8,
+                )
+                .map_err(|e| match e {
+                    image::ImageError::IoError(e) => e,
+                    e => io::Error::other(e),
+                })
+        })
+    }
+
+    /// Writes the image as a linear, unclamped float32 RGB OpenEXR file,
+    /// replacing `path` in one step.
     pub fn write_exr(&self, path: impl AsRef<Path>) -> io::Result<()> {
-        let path = path.as_ref();
-        check_parent(path)?;
+        self.stage_exr(path)?.commit()
+    }
+
+    /// The EXR of [`Image::write_exr`], written but not yet in place. Its
+    /// blocks are written in order on one thread (the `exr` crate's parallel
+    /// writer puts them in the order they finish): same pixels, same bytes.
+    pub fn stage_exr(&self, path: impl AsRef<Path>) -> io::Result<StagedFile> {
+        use exr::prelude::{Image as ExrImage, SpecificChannels, Vec2, WritableImage};
         let width = self.width as usize;
-        exr::prelude::write_rgb_file(path, width, self.height as usize, |x, y| {
+        let channels = SpecificChannels::rgb(|Vec2(x, y): Vec2<usize>| {
             let c = self.pixels[y * width + x];
             (c.x, c.y, c.z)
-        })
-        .map_err(|e| match e {
-            exr::error::Error::Io(io) => error(path, "cannot write EXR", &io, io.kind()),
-            e => error(path, "cannot write EXR", e, io::ErrorKind::Other),
+        });
+        let image = ExrImage::from_channels((width, self.height as usize), channels);
+        StagedFile::write(path, "EXR", |w| {
+            image
+                .write()
+                .non_parallel()
+                .to_buffered(w)
+                .map_err(|e| match e {
+                    exr::error::Error::Io(e) => e,
+                    e => io::Error::other(e),
+                })
         })
     }
 
@@ -189,6 +325,85 @@ mod tests {
             image::open(&png).unwrap().to_rgb8().get_pixel(0, 0).0[0],
             255
         );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    /// The names in `dir`, sorted (to see that no temporary file is left).
+    fn names(dir: &Path) -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    }
+
+    /// Five writes of the same 300×200 image (20 blocks of 64×64 pixels,
+    /// which the `exr` crate's parallel writer would put in the order they
+    /// finish) give the same bytes.
+    #[test]
+    fn the_same_pixels_give_the_same_bytes() {
+        let dir = temp_dir("deterministic");
+        let img = Image::from_fn(300, 200, |x, y| {
+            Color::new(
+                (x * y) as f32 * 0.37,
+                (x ^ y) as f32,
+                (x + 7 * y) as f32 % 3.0,
+            )
+        });
+        let bytes = |ext: &str, i: usize| {
+            let path = dir.join(format!("{i}.{ext}"));
+            match ext {
+                "exr" => img.write_exr(&path).unwrap(),
+                _ => img.write_png(&path, 0.0).unwrap(),
+            }
+            std::fs::read(&path).unwrap()
+        };
+        for ext in ["exr", "png"] {
+            let first = bytes(ext, 0);
+            for i in 1..5 {
+                assert!(bytes(ext, i) == first, "{ext} write {i} differs");
+            }
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    /// A staged file replaces its destination only on commit; an error while
+    /// writing, or a drop without commit, leaves the old file and no
+    /// temporary one.
+    #[test]
+    fn files_are_replaced_whole_or_not_at_all() {
+        let dir = temp_dir("staged");
+        let target = dir.join("a.txt");
+        write_file(&target, "old").unwrap();
+        let staged = StagedFile::write(&target, "text", |w| w.write_all(b"new")).unwrap();
+        assert_eq!(std::fs::read_to_string(&target).unwrap(), "old");
+        assert_eq!(names(&dir).len(), 2, "{:?}", names(&dir));
+        assert_eq!(staged.target(), target);
+        drop(staged);
+        assert_eq!(names(&dir), ["a.txt"]);
+
+        let e = StagedFile::write(&target, "text", |w| {
+            w.write_all(b"half")?;
+            Err(io::Error::other("disk full"))
+        })
+        .unwrap_err();
+        assert!(
+            e.to_string().contains("a.txt") && e.to_string().contains("disk full"),
+            "{e}"
+        );
+        assert_eq!(std::fs::read_to_string(&target).unwrap(), "old");
+        assert_eq!(names(&dir), ["a.txt"]);
+
+        let b = dir.join("b.txt");
+        let staged = [
+            StagedFile::write(&target, "text", |w| w.write_all(b"new a")).unwrap(),
+            StagedFile::write(&b, "text", |w| w.write_all(b"new b")).unwrap(),
+        ];
+        commit_all(staged).unwrap();
+        assert_eq!(std::fs::read_to_string(&target).unwrap(), "new a");
+        assert_eq!(std::fs::read_to_string(&b).unwrap(), "new b");
+        assert_eq!(names(&dir), ["a.txt", "b.txt"]);
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

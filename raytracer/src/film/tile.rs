@@ -104,12 +104,28 @@ impl FilmTile {
     /// [`FilmTile::finish_splats`]).
     #[inline]
     pub fn record(&mut self, pixel: UVec2, sample: impl FnOnce(&mut Vec<Splat>) -> Color) {
+        self.record_unless_abandoned(pixel, |splats| Some(sample(splats)));
+    }
+
+    /// [`FilmTile::record`] for a sample that may be abandoned half-way
+    /// (`None`, a render asked to stop): then neither its value nor its
+    /// splats are kept, and it does not count. Returns whether it was kept.
+    #[inline]
+    pub fn record_unless_abandoned(
+        &mut self,
+        pixel: UVec2,
+        sample: impl FnOnce(&mut Vec<Splat>) -> Option<Color>,
+    ) -> bool {
         let start = self.splats.len();
-        let value = sample(&mut self.splats);
+        let Some(value) = sample(&mut self.splats) else {
+            self.splats.truncate(start);
+            return false;
+        };
         self.add_sample(pixel, value);
         if self.splats.len() > start {
             self.finish_splats(start);
         }
+        true
     }
 
     /// Cleans up the splats of one light path, `splats[start..]`: drops

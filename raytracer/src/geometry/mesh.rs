@@ -23,6 +23,11 @@ pub struct Mesh {
     pub indices: Vec<[u32; 3]>,
 }
 
+/// The largest OBJ file [`Mesh::load_obj`] reads: 256 MiB, some 5 million
+/// triangles, which take a few GiB with their BVH (tobj's arrays, the mesh
+/// and the BVH need up to about 20 bytes of memory per byte of OBJ text).
+pub const MAX_OBJ_FILE_BYTES: u64 = 256 << 20;
+
 /// Why a mesh could not be loaded.
 #[derive(Debug)]
 pub struct MeshError {
@@ -45,13 +50,40 @@ impl Mesh {
     /// triangulated as fans; materials are ignored. Normals (uvs) are kept
     /// only when every vertex has one; otherwise the mesh is flat shaded
     /// (untextured).
+    ///
+    /// Only a regular file of at most [`MAX_OBJ_FILE_BYTES`] is read (a
+    /// folder, a device such as `/dev/zero` or a huge file is refused before
+    /// anything is read into memory).
     pub fn load_obj(path: &std::path::Path) -> Result<Mesh, MeshError> {
+        use std::io::Read;
         let name = path.display().to_string();
-        let file = std::fs::File::open(path).map_err(|e| MeshError {
+        let err = |message: String| MeshError {
             path: name.clone(),
-            message: format!("cannot open the OBJ file: {e}"),
-        })?;
-        Self::from_obj_reader(&mut std::io::BufReader::new(file), &name)
+            message,
+        };
+        let file =
+            std::fs::File::open(path).map_err(|e| err(format!("cannot open the OBJ file: {e}")))?;
+        let meta = file
+            .metadata()
+            .map_err(|e| err(format!("cannot read the OBJ file: {e}")))?;
+        if meta.is_dir() {
+            return Err(err("is a folder, not an OBJ file".into()));
+        }
+        if !meta.is_file() {
+            return Err(err(
+                "is not a regular file (a device, a pipe or a socket), not an OBJ file".into(),
+            ));
+        }
+        if meta.len() > MAX_OBJ_FILE_BYTES {
+            return Err(err(format!(
+                "the OBJ file has {} MiB, more than the {} MiB a mesh file may have",
+                meta.len() >> 20,
+                MAX_OBJ_FILE_BYTES >> 20
+            )));
+        }
+        // `take`: a file that grows while it is read stays bounded too.
+        let bounded = file.take(MAX_OBJ_FILE_BYTES);
+        Self::from_obj_reader(&mut std::io::BufReader::new(bounded), &name)
     }
 
     /// Parses OBJ text (for meshes that ship inside the crate); `name` is used in errors.
@@ -356,6 +388,18 @@ f 1/1/1 3/3/1 4/4/1
         let m = Mesh::from_obj_str("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n", "q").unwrap();
         assert_eq!(m.indices.len(), 2);
         assert!(m.normals.is_empty() && m.uvs.is_empty());
+    }
+
+    #[test]
+    fn folders_and_devices_are_not_read_as_meshes() {
+        let dir = std::env::temp_dir();
+        let e = Mesh::load_obj(&dir).unwrap_err();
+        assert!(e.message.contains("is a folder"), "{e}");
+        let zero = std::path::Path::new("/dev/zero");
+        if zero.exists() {
+            let e = Mesh::load_obj(zero).unwrap_err();
+            assert!(e.message.contains("not a regular file"), "{e}");
+        }
     }
 
     #[test]

@@ -33,6 +33,7 @@ mod light_tracing;
 mod naive;
 pub mod nee;
 mod path;
+pub mod stop;
 pub mod vertex;
 
 pub use ao::AmbientOcclusion;

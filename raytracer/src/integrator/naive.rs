@@ -17,6 +17,7 @@
 
 use std::sync::atomic::{AtomicU64, Ordering};
 
+use super::stop::stop_requested;
 use super::{Integrator, camera_ray};
 use crate::brdf::TransportMode;
 use crate::film::Splat;
@@ -89,6 +90,10 @@ impl NaiveRecursive {
         sampler: &mut Sampler,
         rays: &mut u64,
     ) -> Color {
+        // N^D rays can take minutes: a stop request ends the sample at once.
+        if stop_requested() {
+            return Color::ZERO;
+        }
         *rays += 1;
         let Some(it) = scene.intersect(ray) else {
             return scene.escaped_radiance(ray.d);

@@ -89,6 +89,11 @@ impl Integrator for PathTracer {
             return l;
         }
         loop {
+            // Without a depth limit or roulette a path may bounce for ever
+            // (a closed white furnace): a stop request ends it.
+            if depth % 64 == 63 && super::stop::stop_requested() {
+                break;
+            }
             let hit = scene.intersect(&ray);
             // Emitted light reached by the ray (counted while depth < max_depth).
             if let Some(e) = nee::emitter_hit(scene, &ray, hit.as_ref()) {

@@ -87,10 +87,35 @@ pub fn uv_to_direction(uv: Vec2) -> Vec3A {
     Vec3A::new(sin_t * sin_p, cos_t, -sin_t * cos_p)
 }
 
+/// The most pixels an environment map may have: 2²⁷ (134 million, e.g.
+/// 16384 × 8192), 1.6 GB as RGB floats plus its sampling tables.
+pub const MAX_MAP_PIXELS: u64 = 1 << 27;
+
 impl EnvironmentMap {
     /// Loads a lat-long map from an EXR file (linear RGB; alpha is ignored;
     /// negative values are clamped to zero). The first RGB layer is used.
+    ///
+    /// The size the file's header declares is checked before any pixel
+    /// memory is taken: at most [`MAX_MAP_PIXELS`].
     pub fn load(path: &Path) -> Result<EnvironmentMap, String> {
+        let meta = exr::meta::MetaData::read_from_file(path, false).map_err(|e| {
+            format!(
+                "cannot read environment map {}: {e} (an RGB EXR file is expected)",
+                path.display()
+            )
+        })?;
+        if let Some(big) = meta.headers.iter().find(|h| {
+            (h.layer_size.width() as u64).saturating_mul(h.layer_size.height() as u64)
+                > MAX_MAP_PIXELS
+        }) {
+            return Err(format!(
+                "environment map {} declares {}×{} pixels, more than the {} million a map may have",
+                path.display(),
+                big.layer_size.width(),
+                big.layer_size.height(),
+                MAX_MAP_PIXELS / 1_000_000
+            ));
+        }
         let image = exr::prelude::read_first_rgba_layer_from_file(
             path,
             |size, _| {
@@ -472,6 +497,28 @@ mod tests {
         let up_ish = uv_to_direction(Vec2::new(0.8, 0.2));
         let env = EnvironmentLight::new(Color::ONE, Some(Arc::new(m)));
         assert_eq!(env.environment_radiance(up_ish), Color::new(3.5, 0.0, 0.75));
+    }
+
+    /// A file whose header claims 100000 × 100000 pixels is refused before
+    /// 120 GB of pixels are allocated.
+    #[test]
+    fn a_map_declaring_too_many_pixels_is_refused() {
+        let dir = std::env::temp_dir().join(format!("light_huge_exr_{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("huge.exr");
+        exr::prelude::write_rgb_file(&path, 2, 1, |_, _| (1.0f32, 1.0f32, 1.0f32)).unwrap();
+        let mut bytes = std::fs::read(&path).unwrap();
+        // dataWindow: name, type, size (16), then xMin, yMin, xMax, yMax.
+        let key = b"dataWindow\0box2i\0";
+        let at = bytes.windows(key.len()).position(|w| w == key).unwrap() + key.len() + 4;
+        for (i, v) in [0i32, 0, 99_999, 99_999].iter().enumerate() {
+            bytes[at + 4 * i..at + 4 * i + 4].copy_from_slice(&v.to_le_bytes());
+        }
+        std::fs::write(&path, bytes).unwrap();
+        let err = EnvironmentMap::load(&path).unwrap_err();
+        std::fs::remove_dir_all(&dir).ok();
+        assert!(err.contains("huge.exr"), "{err}");
+        assert!(err.contains("declares 100000×100000"), "{err}");
     }
 
     /// A text file with an .exr name gives an error naming the file.

@@ -60,7 +60,37 @@ impl SceneError {
     /// The error of the toml crate (syntax, unknown field, wrong type) in the
     /// scene's words.
     pub fn from_toml(file: &str, text: &str, error: &toml::de::Error) -> Self {
-        SceneError::at(file, text, error.span(), error.message().trim().to_string())
+        let span = error.span();
+        let message = error.message().trim();
+        let spanned = span
+            .as_ref()
+            .and_then(|s| text.get(s.clone()))
+            .map(str::trim);
+        // The line of the error, to tell a `[table]` header from a `key = …`.
+        let line = span.as_ref().and_then(|s| {
+            let start = text.get(..s.start)?.rfind('\n').map_or(0, |i| i + 1);
+            let end = text[start..].find('\n').map_or(text.len(), |i| start + i);
+            Some(text[start..end].trim())
+        });
+        let message = match (message, spanned, line) {
+            // The toml crate does not say which key; its span does.
+            ("duplicate key", Some(_), Some(header)) if header.starts_with('[') => {
+                // `[a.b]` or `[[a]]`, without a trailing comment.
+                let close = if header.starts_with("[[") { "]]" } else { "]" };
+                let header = header
+                    .find(close)
+                    .map_or(header, |i| &header[..i + close.len()]);
+                format!("duplicate table `{header}`: each table may be defined only once")
+            }
+            ("duplicate key", Some(key), _) if !key.is_empty() => {
+                format!("duplicate key `{key}`: each key may appear only once in a table")
+            }
+            (m, _, _) if m.contains("recursion") => {
+                "arrays or tables nested too deeply: a scene file needs only a few levels".into()
+            }
+            (m, _, _) => m.to_string(),
+        };
+        SceneError::at(file, text, span, message)
     }
 }
 
@@ -179,6 +209,38 @@ mod tests {
             field_path(text, &(three..three + 1)),
             "materials.white.albedo[2]"
         );
+    }
+
+    fn toml_error(text: &str) -> SceneError {
+        let e = toml::from_str::<toml::Table>(text).unwrap_err();
+        SceneError::from_toml("s.toml", text, &e)
+    }
+
+    #[test]
+    fn duplicates_name_the_key_or_the_table() {
+        let e = toml_error("[camera]\nfov = 1\nfov = 2\n");
+        assert_eq!(
+            e.to_string(),
+            "s.toml:3:1: duplicate key `fov`: each key may appear only once in a table"
+        );
+        let e = toml_error("[materials.m]\na = 1\n\n[materials.m]   # again\nb = 2\n");
+        assert_eq!((e.line, e.column), (Some(4), Some(12)));
+        assert_eq!(
+            e.message,
+            "duplicate table `[materials.m]`: each table may be defined only once"
+        );
+    }
+
+    #[test]
+    fn deep_nesting_is_reported_at_its_line() {
+        let text = format!(
+            "a = 1\nb = {}{}\n",
+            "[".repeat(100_000),
+            "]".repeat(100_000)
+        );
+        let e = toml_error(&text);
+        assert_eq!(e.line, Some(2), "{e}");
+        assert!(e.message.contains("nested too deeply"), "{e}");
     }
 
     #[test]
@@ -324,6 +386,45 @@ mod tests {
                     .ends_with(&format!("shapes[0].radius: must be positive, got {r}"))
             );
         }
+    }
+
+    /// `1e-50` is not 0, but becomes 0 as a 32-bit float: the error says so
+    /// instead of "got 0".
+    #[test]
+    fn a_number_too_small_for_f32_is_not_reported_as_zero() {
+        let text = format!(
+            "{HEAD}[[shapes]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1e-50\nmaterial = \"red\"\n"
+        );
+        let e = load_err(&text);
+        assert_at(&e, &text, "radius", "1e-50", "shapes[0].radius");
+        assert!(e.message.starts_with("1e-50 is too close to 0"), "{e}");
+    }
+
+    #[test]
+    fn mesh_files_that_are_folders_or_devices_say_so() {
+        let dir = std::env::temp_dir().join(format!("scenefmt-mesh-kinds-{}", std::process::id()));
+        std::fs::create_dir_all(dir.join("folder.obj")).unwrap();
+        let origin = SceneOrigin::Dir {
+            name: "test.toml".into(),
+            dir: dir.clone(),
+        };
+        let mesh = |file: &str| {
+            let text = format!(
+                "{HEAD}[[shapes]]\ntype = \"mesh\"\nfile = \"{file}\"\nmaterial = \"red\"\n"
+            );
+            load_str(&text, &origin).unwrap_err().to_string()
+        };
+        let e = mesh("folder.obj");
+        assert!(e.ends_with("folder.obj is a folder, not a file"), "{e}");
+        if std::path::Path::new("/dev/zero").exists() {
+            let e = mesh("/dev/zero");
+            assert!(
+                e.ends_with("/dev/zero is not a regular file (a device, a pipe or a socket)"),
+                "{e}"
+            );
+        }
+        assert!(mesh("nope.obj").contains("mesh file not found"));
+        std::fs::remove_dir_all(&dir).ok();
     }
 
     #[test]

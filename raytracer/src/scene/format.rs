@@ -171,13 +171,21 @@ pub struct ScaleDesc(pub Vec3);
 #[derive(Clone, Debug, PartialEq)]
 pub struct RotateDesc(pub Vec<[f32; 4]>);
 
-/// Checks that a TOML number fits a finite `f32`.
+/// Checks that a TOML number fits a finite `f32`, and that a number that is
+/// not zero does not become zero (`1e-50` would, and then be reported as
+/// "0" by a later check).
 fn finite<E: de::Error>(v: f64) -> Result<f32, E> {
     let x = v as f32;
-    if x.is_finite() {
-        Ok(x)
+    if !x.is_finite() {
+        Err(E::custom(format!(
+            "must be a finite number (at most about 3.4e38), got {v}"
+        )))
+    } else if x == 0.0 && v != 0.0 {
+        Err(E::custom(format!(
+            "{v:e} is too close to 0 for a 32-bit float (it would become 0); use 0 or a number above about 1e-38"
+        )))
     } else {
-        Err(E::custom(format!("must be a finite number, got {v}")))
+        Ok(x)
     }
 }
 

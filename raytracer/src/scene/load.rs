@@ -57,12 +57,39 @@ impl SceneOrigin {
 }
 
 /// Loads and checks the scene file `path`.
+///
+/// Only a regular file of at most [`MAX_SCENE_FILE_BYTES`] is read: a
+/// folder, a device such as `/dev/zero` or a pipe is refused before it is
+/// opened.
 pub fn load_file(path: &Path) -> Result<SceneParts, SceneError> {
-    let text = std::fs::read_to_string(path).map_err(|e| {
-        SceneError::whole_file(path.display().to_string(), format!("cannot read: {e}"))
-    })?;
+    use std::io::Read;
+    let error = |message: String| SceneError::whole_file(path.display().to_string(), message);
+    let meta = std::fs::metadata(path).map_err(|e| error(format!("cannot read: {e}")))?;
+    if meta.is_dir() {
+        return Err(error("is a folder, not a scene file".into()));
+    }
+    if !meta.is_file() {
+        return Err(error(
+            "is not a regular file (a device, a pipe or a socket), not a scene file".into(),
+        ));
+    }
+    if meta.len() > MAX_SCENE_FILE_BYTES {
+        return Err(error(format!(
+            "has {} MiB; a scene file may have at most {} MiB (put big meshes in OBJ files)",
+            meta.len() >> 20,
+            MAX_SCENE_FILE_BYTES >> 20
+        )));
+    }
+    let mut text = String::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_SCENE_FILE_BYTES).read_to_string(&mut text))
+        .map_err(|e| error(format!("cannot read: {e}")))?;
     load_str(&text, &SceneOrigin::file(path))
 }
+
+/// The largest scene file [`load_file`] reads: 16 MiB, far more than a
+/// hand-written scene (meshes live in OBJ files of their own).
+pub const MAX_SCENE_FILE_BYTES: u64 = 16 << 20;
 
 /// Loads and checks the scene text `text`.
 pub fn load_str(text: &str, origin: &SceneOrigin) -> Result<SceneParts, SceneError> {
@@ -257,16 +284,8 @@ impl Context<'_> {
         s.height = at_least_one(&r.height, s.height)?;
         s.spp = at_least_one(&r.spp, s.spp)?;
         if let Some(d) = &r.max_depth {
-            s.max_depth = match *d.get_ref() {
-                -1 => None,
-                d @ 1..=0xffff => Some(d as u32),
-                other => {
-                    return Err(self.error(
-                        d.span(),
-                        format!("must be -1 (unlimited) or in [1, 65535], got {other}"),
-                    ));
-                }
-            };
+            s.max_depth =
+                super::max_depth_from(*d.get_ref()).map_err(|e| self.error(d.span(), e))?;
         }
         if let Some(d) = &r.rr_depth {
             s.rr_depth = *d.get_ref();
@@ -391,14 +410,27 @@ impl Context<'_> {
         match self.origin {
             SceneOrigin::Dir { dir, .. } => {
                 let path = dir.join(file.get_ref());
-                if path.is_file() {
-                    Ok(path)
-                } else {
-                    Err(self.error(
-                        file.span(),
-                        format!("{what} file not found: {}", path.display()),
-                    ))
-                }
+                let problem = match std::fs::metadata(&path) {
+                    Ok(m) if m.is_file() => return Ok(path),
+                    Ok(m) if m.is_dir() => "is a folder, not a file",
+                    Ok(_) => "is not a regular file (a device, a pipe or a socket)",
+                    Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                        return Err(self.error(
+                            file.span(),
+                            format!("{what} file not found: {}", path.display()),
+                        ));
+                    }
+                    Err(e) => {
+                        return Err(self.error(
+                            file.span(),
+                            format!("cannot read the {what} file {}: {e}", path.display()),
+                        ));
+                    }
+                };
+                Err(self.error(
+                    file.span(),
+                    format!("the {what} file {} {problem}", path.display()),
+                ))
             }
             SceneOrigin::Builtin(scene) => Err(self.error(
                 file.span(),
@@ -596,6 +628,29 @@ mod tests {
         assert_eq!(parts.objects.len(), 3);
         assert_eq!(parts.lights.len(), 1);
         assert!(parts.objects[2].emitter.is_some());
+    }
+
+    #[test]
+    fn load_file_reads_only_regular_files_of_a_sane_size() {
+        let dir = std::env::temp_dir().join(format!("scenefmt-kinds-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let e = load_file(&dir).unwrap_err();
+        assert!(
+            e.to_string().ends_with(": is a folder, not a scene file"),
+            "{e}"
+        );
+        if Path::new("/dev/zero").exists() {
+            let e = load_file(Path::new("/dev/zero")).unwrap_err();
+            assert!(e.message.starts_with("is not a regular file"), "{e}");
+        }
+        let big = dir.join("big.toml");
+        std::fs::File::create(&big)
+            .unwrap()
+            .set_len(MAX_SCENE_FILE_BYTES + 1)
+            .unwrap();
+        let e = load_file(&big).unwrap_err();
+        assert!(e.message.contains("at most 16 MiB"), "{e}");
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

@@ -7,6 +7,8 @@
 pub mod builtin;
 pub mod error;
 pub mod format;
+#[cfg(test)]
+mod fuzz;
 pub mod load;
 
 pub use builtin::{BUILTIN_SCENES, BuiltinScene, builtin, load_builtin, write_builtin};
@@ -21,6 +23,27 @@ use crate::light::{AreaLight, AreaShape, Light};
 use crate::math::{Color, Ray};
 
 pub use interaction::Interaction;
+
+/// The largest max depth D a scene file or a command line may ask for.
+pub const MAX_DEPTH_LIMIT: u32 = 65_535;
+
+/// The one rule for the max depth D of a scene file's `max_depth` and of the
+/// command line's `--max-depth` alike. D is the largest number of segments
+/// of a path in Mitsuba's sense: 1 = only emitters seen directly, 2 = direct
+/// illumination, D = at most D − 1 bounces; `-1` = unlimited (`None`:
+/// Russian roulette or an escape ends the paths). 0 (a black image) and any
+/// other negative number are refused, and so is more than
+/// [`MAX_DEPTH_LIMIT`].
+pub fn max_depth_from(value: i64) -> Result<Option<u32>, String> {
+    match value {
+        -1 => Ok(None),
+        d if (1..=MAX_DEPTH_LIMIT as i64).contains(&d) => Ok(Some(d as u32)),
+        other => Err(format!(
+            "must be -1 (unlimited) or in [1, {MAX_DEPTH_LIMIT}] (1 = emitters seen directly, \
+             2 = direct light, D = at most D − 1 bounces), got {other}"
+        )),
+    }
+}
 
 /// How to render a scene unless the command line says otherwise.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -260,5 +283,21 @@ impl Scene {
     pub fn emitted(&self, it: &Interaction) -> Color {
         self.area_light(it)
             .map_or(Color::ZERO, |(_, l)| l.le(it.ng, it.wo))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn max_depth_has_one_rule() {
+        assert_eq!(max_depth_from(-1), Ok(None));
+        assert_eq!(max_depth_from(1), Ok(Some(1)));
+        assert_eq!(max_depth_from(65_535), Ok(Some(65_535)));
+        for bad in [0, -2, -5, 65_536, 70_000, i64::MIN, i64::MAX] {
+            let e = max_depth_from(bad).unwrap_err();
+            assert!(e.ends_with(&format!("got {bad}")), "{e}");
+        }
     }
 }

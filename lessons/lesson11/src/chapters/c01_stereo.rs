@@ -8,13 +8,13 @@ use std::time::Instant;
 use anyhow::{Context, Result, bail};
 use clap::{ArgMatches, Args, FromArgMatches};
 use raytracer::film::Image;
-use raytracer::render::RenderOptions;
+use raytracer::render::{RenderOptions, memory_needed};
 use raytracer::stereo::{Anaglyph, Composite, Eye, LightField, StereoRig, crosstalk};
 
 use crate::integrators::{IntegratorArgs, IntegratorKind};
-use crate::options::{SceneArgs, create_dir};
+use crate::options::{SceneArgs, check_exposure, check_memory, create_dir};
 use crate::page::{Figure, Page, Section};
-use crate::render_files::render_to_files;
+use crate::render_files::{render_to_files, write_png_and_exr};
 use crate::tour::{Chapter, ChapterOptions, Quality, Tour};
 
 pub const CHAPTER: Chapter = Chapter {
@@ -95,14 +95,7 @@ impl Default for StereoArgs {
                 ..SceneArgs::default()
             },
             integrator: IntegratorKind::Path,
-            integrator_args: IntegratorArgs {
-                max_depth: None,
-                rr_depth: None,
-                branching: vec![8],
-                roulette: false,
-                cutoff: None,
-                ao_distance: 1.0,
-            },
+            integrator_args: IntegratorArgs::default(),
             separation: 0.065,
             convergence: None,
             mode: vec!["all".into()],
@@ -202,8 +195,26 @@ fn check(args: &StereoArgs) -> Result<()> {
     if let Some(d) = args.refocus.iter().find(|d| !(d.is_finite() && **d > 0.0)) {
         bail!("--refocus depths must be positive, got {d}");
     }
-    if args.integrator_args.branching.contains(&0) {
-        bail!("--branching factors must be at least 1");
+    check_exposure(args.exposure)
+}
+
+/// The light field's views, before they are rendered: `n × n` images of
+/// `w × h` pixels in memory at once (12 bytes a pixel) beside one render's
+/// film.
+fn check_light_field_memory(args: &StereoArgs, w: u32, h: u32) -> Result<()> {
+    let n = args.lf_views as u64;
+    let views = n
+        .checked_mul(n)
+        .and_then(|v| v.checked_mul(w as u64 * h as u64 * 12));
+    let bytes = views.and_then(|v| v.checked_add(memory_needed(w, h)?));
+    check_memory(
+        &format!("a light field of {n}×{n} views of {w}×{h}"),
+        bytes,
+        "--lf-views or a larger --lf-downscale",
+        args.scene.force,
+    )?;
+    if n > 0xffff {
+        bail!("--lf-views must be at most 65535 (the views are counted in 32 bits), got {n}");
     }
     Ok(())
 }
@@ -218,14 +229,7 @@ fn save(
     exposure: f32,
     caption: String,
 ) -> Result<Figure> {
-    let png = dir.join(format!("{stem}.png"));
-    let exr = dir.join(format!("{stem}.exr"));
-    image
-        .write_png(&png, exposure)
-        .with_context(|| format!("cannot write {}", png.display()))?;
-    image
-        .write_exr(&exr)
-        .with_context(|| format!("cannot write {}", exr.display()))?;
+    let (png, exr) = write_png_and_exr(image, dir, stem, exposure)?;
     println!("  wrote {} and .exr", png.display());
     Ok(Figure::image(page_root, &png, &exr, caption))
 }
@@ -283,7 +287,13 @@ fn render_section(args: &StereoArgs, page_root: &Path) -> Result<Section> {
     };
     rig.validate()?;
     let (scene, options) = args.scene.load("stereo")?;
-    let integrator = args.integrator.build(&args.integrator_args, &scene);
+    let integrator =
+        args.integrator
+            .build(&args.integrator_args, &scene, &options, args.scene.force)?;
+    if args.lf_views > 0 {
+        let (w, h) = light_field_size(args, &scene);
+        check_light_field_memory(args, w, h)?;
+    }
     let dir = args.scene.out.join(CHAPTER_DIR);
     create_dir(&dir)?;
     let convergence = rig.convergence_distance(&scene.camera.params);
@@ -382,6 +392,14 @@ fn render_section(args: &StereoArgs, page_root: &Path) -> Result<Section> {
     Ok(section)
 }
 
+/// The size of each light-field view: the eyes' size over `--lf-downscale`.
+fn light_field_size(args: &StereoArgs, scene: &raytracer::scene::Scene) -> (u32, u32) {
+    (
+        (scene.camera.width / args.lf_downscale).max(1),
+        (scene.camera.height / args.lf_downscale).max(1),
+    )
+}
+
 /// Renders the light field and writes its contact sheet, refocused images
 /// and an anaglyph of a pair from the grid.
 #[allow(clippy::too_many_arguments)]
@@ -397,10 +415,7 @@ fn light_field(
 ) -> Result<()> {
     let n = args.lf_views;
     let mut lf_scene = scene.clone();
-    let (w, h) = (
-        (scene.camera.width / args.lf_downscale).max(1),
-        (scene.camera.height / args.lf_downscale).max(1),
-    );
+    let (w, h) = light_field_size(args, scene);
     lf_scene.set_resolution(w, h);
     let spp = args.lf_spp.unwrap_or((options.spp / 4).max(1));
     let lf_options = RenderOptions {
@@ -411,7 +426,7 @@ fn light_field(
     let start = Instant::now();
     let lf = LightField::render(&lf_scene, integrator, &lf_options, n, args.lf_aperture);
     if raytracer::render::interrupted() {
-        bail!("interrupted by Ctrl-C while rendering the light field");
+        bail!("interrupted while rendering the light field; its pictures were not written");
     }
     println!(
         "  light field: {n}×{n} views of {w}×{h} at {spp} spp in {:.1} s",

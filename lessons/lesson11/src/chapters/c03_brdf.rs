@@ -113,7 +113,7 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
         points: vec![(0.0, 0.0), (incoming, 1.0)],
     });
     let path = c.dir.join("lobes.svg");
-    std::fs::write(
+    raytracer::film::output::write_file(
         &path,
         polar_svg(
             "BRDF lobes, light from 30°, each scaled to its peak",

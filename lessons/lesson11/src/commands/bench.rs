@@ -2,7 +2,7 @@
 
 mod rays;
 
-use anyhow::Result;
+use anyhow::{Result, bail};
 use clap::Args;
 use raytracer::integrator::{Direct, DirectStrategy, Integrator, PathTracer};
 use raytracer::render::{RenderOptions, render};
@@ -26,7 +26,25 @@ pub struct BenchArgs {
     pub equal_time: f64,
 }
 
+/// Checks the options before any measurement starts.
+fn check(args: &BenchArgs) -> Result<()> {
+    if args.spp == 0 {
+        bail!("--spp must be at least 1");
+    }
+    for &n in &args.threads {
+        crate::options::check_threads(Some(n))?;
+    }
+    if !(args.equal_time.is_finite() && args.equal_time >= 0.0) {
+        bail!(
+            "--equal-time must be a number of seconds ≥ 0 (0 skips the comparison), got {}",
+            args.equal_time
+        );
+    }
+    Ok(())
+}
+
 pub fn run(args: &BenchArgs) -> Result<()> {
+    check(args)?;
     if cfg!(debug_assertions) {
         println!("note: this is not a --release build; figures will be lower than the README's");
     }

@@ -123,7 +123,7 @@ pub fn run_hint(args: &HintArgs) -> Result<()> {
         let _ = std::fs::create_dir_all(dir);
     }
     // Losing the counter only means the next hint is shown again.
-    if let Err(err) = std::fs::write(&path, text) {
+    if let Err(err) = raytracer::film::output::write_file(&path, text) {
         eprintln!(
             "note: cannot remember the hints shown ({}: {err})",
             path.display()

@@ -6,7 +6,7 @@ use anyhow::Result;
 use clap::Args;
 
 use crate::integrators::{IntegratorArgs, IntegratorKind};
-use crate::options::SceneArgs;
+use crate::options::{SceneArgs, check_exposure};
 use crate::render_files::render_to_files;
 
 /// Render a scene with one integrator and write NAME.png (tone mapped, sRGB),
@@ -29,6 +29,7 @@ pub struct RenderArgs {
 }
 
 pub fn run(args: &RenderArgs) -> Result<()> {
+    check_exposure(args.exposure)?;
     if args.student {
         return student::run(
             &args.scene,
@@ -38,10 +39,9 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         );
     }
     let (scene, options) = args.scene.load("cornell")?;
-    if args.integrator_args.branching.contains(&0) {
-        anyhow::bail!("--branching factors must be at least 1");
-    }
-    let integrator = args.integrator.build(&args.integrator_args, &scene);
+    let integrator =
+        args.integrator
+            .build(&args.integrator_args, &scene, &options, args.scene.force)?;
     let stem = format!("{}-{}", scene.name, integrator.name());
     render_to_files(
         &scene,

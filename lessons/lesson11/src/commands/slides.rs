@@ -17,6 +17,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
 use clap::Args;
+use raytracer::film::output::write_file;
 
 pub use deck::Deck;
 
@@ -261,7 +262,8 @@ pub fn build(args: &SlidesArgs) -> Result<Vec<PathBuf>> {
         if let Some(parent) = to.parent() {
             create_dir(parent)?;
         }
-        std::fs::copy(args.out.join(p), &to)
+        std::fs::read(args.out.join(p))
+            .and_then(|bytes| write_file(&to, bytes))
             .with_context(|| format!("cannot copy {} to {}", p, to.display()))?;
     }
 
@@ -272,7 +274,7 @@ pub fn build(args: &SlidesArgs) -> Result<Vec<PathBuf>> {
         create_dir(&dir)?;
         let page = html::deck_html(deck, "../img/")?;
         let path = dir.join("index.html");
-        std::fs::write(&path, page).with_context(|| format!("cannot write {}", path.display()))?;
+        write_file(&path, page).with_context(|| format!("cannot write {}", path.display()))?;
         println!(
             "wrote {} ({} slides)",
             path.display(),
@@ -286,7 +288,7 @@ pub fn build(args: &SlidesArgs) -> Result<Vec<PathBuf>> {
         written.push(path);
     }
     let index = slides_out.join("index.html");
-    std::fs::write(
+    write_file(
         &index,
         format!(
             "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>Lecture 11 slides</title></head>\

@@ -105,7 +105,7 @@ impl Page {
     /// Writes the page as `dir/file`.
     pub fn write(&self, dir: &Path, file: &str) -> Result<PathBuf> {
         let path = dir.join(file);
-        std::fs::write(&path, self.to_html())
+        raytracer::film::output::write_file(&path, self.to_html())
             .with_context(|| format!("cannot write {}", path.display()))?;
         Ok(path)
     }

@@ -34,6 +34,7 @@ impl Table {
             text.push_str(&row.iter().map(|f| field(f)).collect::<Vec<_>>().join(","));
             text.push('\n');
         }
-        std::fs::write(path, text).with_context(|| format!("cannot write {}", path.display()))
+        raytracer::film::output::write_file(path, text)
+            .with_context(|| format!("cannot write {}", path.display()))
     }
 }

@@ -212,7 +212,7 @@ impl Chart {
     }
 
     pub fn write(&self, path: &Path) -> Result<()> {
-        std::fs::write(path, self.to_svg())
+        raytracer::film::output::write_file(path, self.to_svg())
             .with_context(|| format!("cannot write {}", path.display()))
     }
 }

@@ -21,15 +21,19 @@ pub fn run(
     exposure: f32,
 ) -> Result<()> {
     let (scene, options) = scene_args.load("cornell")?;
-    let (max_depth, rr_depth) = ia.depths(&scene);
+    // The checks of the options (naive recursion's ray budget among them)
+    // apply to the student's integrator as to the renderer's.
+    integrator.build(ia, &scene, &options, scene_args.force)?;
+    let max_depth = ia.max_depth(integrator, &scene)?;
+    let rr_depth = ia.rr_depth(&scene);
     let which = match integrator {
         IntegratorKind::Path | IntegratorKind::PathBrdf => StudentRender::Path {
             max_depth,
             rr_depth,
         },
         IntegratorKind::Naive => StudentRender::Naive {
-            max_depth: max_depth.unwrap_or(4),
-            branching: ia.branching.first().copied().unwrap_or(8),
+            max_depth: max_depth.unwrap_or(crate::integrators::NAIVE_DEFAULT_DEPTH),
+            branching: ia.branching()[0],
         },
         IntegratorKind::Direct | IntegratorKind::PathNee => StudentRender::Direct,
         IntegratorKind::Ao | IntegratorKind::Light | IntegratorKind::Bdpt => bail!(
