@@ -1,7 +1,8 @@
 //! `lesson11 lab`: the lecture live in the browser. A local web page with
 //! a progressive render and the lecture's knobs (scene, integrator, max
 //! depth D, samples, seed, exposure), a stereo pair composed live, the BRDF
-//! lobes with their directional albedo, and the path inspector.
+//! lobes with their directional albedo, and the path inspector (which
+//! answers 501 until the integrators record their paths, see `lab/paths.rs`).
 //!
 //! The program serves one page and a small HTTP API on 127.0.0.1; the page
 //! (HTML, CSS and script embedded in the program, no network beyond the
@@ -40,8 +41,8 @@ use clap::Args;
 pub use server::{Lab, LabConfig};
 
 /// Serve the lab: a local web page with a progressive render and the lecture's knobs,
-/// a live stereo pair, BRDF lobes with their albedo, and the path inspector.
-/// It prints the address to open; Ctrl-C stops it.
+/// a live stereo pair, and BRDF lobes with their albedo. It prints the address to open;
+/// Ctrl-C stops it.
 #[derive(Args, Debug)]
 pub struct LabArgs {
     /// The address to listen on. Only 127.0.0.1 (this machine) by default; any other

@@ -1,17 +1,22 @@
 //! The pages that use the lab, each with at most one render: a new render
 //! of a page stops the one it replaces. At most [`MAX_PAGES`] pages are
 //! kept (the least recently used one is dropped, its render stopped), so
-//! memory stays bounded whatever the clients do.
+//! memory stays bounded whatever the clients do; and a page that stopped
+//! asking (its tab was closed) has its render stopped after [`IDLE`].
 
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex, MutexGuard};
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use super::job::{Job, JobSpec};
 
 /// The most pages with a render of their own (four browser tabs).
 pub const MAX_PAGES: usize = 4;
+
+/// A page asks for its render's progress at least every 2 s while it is
+/// open; after this long without a word its render is stopped.
+pub const IDLE: Duration = Duration::from_secs(10);
 
 struct Page {
     job: Option<Arc<Job>>,
@@ -79,6 +84,15 @@ impl Pages {
     pub fn stop(&self, page: &str) {
         if let Some(job) = self.job(page) {
             job.cancel();
+        }
+    }
+
+    /// Stops the renders of pages not heard from for `idle`.
+    pub fn stop_idle(&self, idle: Duration) {
+        for p in self.lock().values() {
+            if p.used.elapsed() > idle {
+                p.job.iter().for_each(|j| j.cancel());
+            }
         }
     }
 

@@ -33,7 +33,7 @@ use tiny_http::{Header, Method, Request, Response, Server};
 
 use super::brdf::{self, BRDF_PARAMS};
 use super::job::Job;
-use super::pages::Pages;
+use super::pages::{IDLE, Pages};
 use super::paths::{PathQuery, PathSource, not_recorded, project};
 use super::query::Query;
 use super::settings::{MAX_PIXELS, MAX_SPP, RENDER_PARAMS, SceneFolder, render_setup};
@@ -108,6 +108,18 @@ impl Lab {
                     .map_err(|e| format!("cannot start the lab's threads: {e}"))
             })
             .collect::<Result<Vec<_>, _>>()?;
+        // Closed pages: their renders stop after a while without a request.
+        let watched = Arc::downgrade(&state);
+        std::thread::Builder::new()
+            .name("lab-idle".into())
+            .spawn(move || {
+                while let Some(state) = watched.upgrade() {
+                    state.pages.stop_idle(IDLE);
+                    drop(state);
+                    std::thread::sleep(Duration::from_secs(1));
+                }
+            })
+            .map_err(|e| format!("cannot start the lab's threads: {e}"))?;
         Ok(Lab {
             server,
             state,
@@ -119,6 +131,12 @@ impl Lab {
     /// The page's address, e.g. `http://127.0.0.1:8011/`.
     pub fn url(&self) -> String {
         format!("http://{}/", self.address)
+    }
+
+    /// The pages and their renders (for the tests).
+    #[cfg(test)]
+    pub fn pages(&self) -> &Pages {
+        &self.state.pages
     }
 
     /// Stops the renders and the server.

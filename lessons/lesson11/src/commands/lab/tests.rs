@@ -139,6 +139,33 @@ fn the_inspector_serves_a_record_projected_into_the_picture() {
     lab.stop();
 }
 
+/// A page that stops asking (a closed tab) has its render stopped; one
+/// that asks keeps it.
+#[test]
+fn the_render_of_a_closed_page_stops() {
+    let lab = start();
+    for page in ["gone", "here"] {
+        let (status, _) = request(
+            &lab,
+            "POST",
+            &format!("/api/render?page={page}&width=32&height=32&spp=65536"),
+        );
+        assert_eq!(status, 200);
+    }
+    std::thread::sleep(Duration::from_millis(300));
+    request(&lab, "GET", "/api/status?page=here");
+    lab.pages().stop_idle(Duration::from_millis(200));
+    std::thread::sleep(Duration::from_millis(300));
+    let done = |page: &str| {
+        let (_, body) = request(&lab, "GET", &format!("/api/status?page={page}"));
+        let s: Value = serde_json::from_str(&body).unwrap();
+        s["job"]["done"] == true && s["job"]["interrupted"] == true
+    };
+    assert!(done("gone"), "the render of the page that went away stops");
+    assert!(!done("here"), "the render of the page that asks goes on");
+    lab.stop();
+}
+
 /// The page draws the record: the path, its vertices and the shadow ray
 /// over the picture, and a table row per vertex and segment.
 #[test]

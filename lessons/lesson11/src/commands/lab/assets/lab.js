@@ -103,7 +103,7 @@ function brdfParams() {
 function startSphere() {
   const params = brdfParams();
   delete params.theta;
-  params.spp = '64';
+  params.spp = '256';
   return start('brdf', '/api/brdf-sphere', params, 'b-error');
 }
 
@@ -321,11 +321,16 @@ function plotBrdf(a) {
   // Lobe: polar, the normal up, θ measured from it (+ to the right).
   const lobe = $('b-lobe');
   lobe.replaceChildren();
+  // Below the surface only glass sends light.
+  const refracts = a.deltas.some(([d]) => Math.abs(d) > 90);
+  lobe.setAttribute('viewBox', refracts ? '-110 -110 220 220' : '-110 -110 220 120');
   svg('line', { x1: -105, y1: 0, x2: 105, y2: 0, stroke: '#666', 'stroke-width': 0.8 }, lobe);
   svg('line', { x1: 0, y1: 0, x2: 0, y2: -100, stroke: '#444', 'stroke-dasharray': '2 2', 'stroke-width': 0.6 }, lobe);
   const polar = (deg, r) => [r * Math.sin(deg * Math.PI / 180), -r * Math.cos(deg * Math.PI / 180)];
   const [lx, ly] = polar(-a.theta, 100);
-  svg('line', { x1: lx, y1: ly, x2: 0, y2: 0, stroke: '#fc3', 'stroke-width': 1.5, 'marker-end': '' }, lobe);
+  svg('line', { x1: lx, y1: ly, x2: 0, y2: 0, stroke: '#fc3', 'stroke-width': 1.5 }, lobe);
+  const [mx, my] = polar(a.theta, 100);
+  svg('line', { x1: 0, y1: 0, x2: mx, y2: my, stroke: '#666', 'stroke-dasharray': '3 3', 'stroke-width': 0.8 }, lobe);
   const peak = Math.max(...a.lobe.map((p) => p[1]));
   if (peak > 0) {
     const pts = a.lobe.map(([d, f]) => polar(d, 95 * f / peak).join(',')).join(' ');
@@ -398,6 +403,7 @@ function selectTab(tab) {
     $(`tab-${name}`).setAttribute('aria-selected', String(name === tab));
     $(`panel-${name}`).hidden = name !== tab;
   }
+  if (location.hash !== '#selftest') history.replaceState(null, '', tab === 'render' ? location.pathname : `#${tab}`);
   // One render at a time per page: the tab shown is the one rendering.
   if (tab === 'render') return startRender();
   if (tab === 'stereo') return startStereo();
@@ -474,8 +480,10 @@ async function setup() {
     $(`tab-${name}`).addEventListener('click', () => selectTab(name));
   }
   pollLoop();
-  if (location.hash === '#selftest') selftest();
-  else selectTab('render');
+  // `#stereo` or `#brdf` opens that tab (links from the tour page and the slides).
+  const tab = location.hash.slice(1);
+  if (tab === 'selftest') selftest();
+  else selectTab(['stereo', 'brdf'].includes(tab) ? tab : 'render');
 }
 
 // ---- the self-test (#selftest) ----
