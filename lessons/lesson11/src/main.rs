@@ -161,6 +161,7 @@ mod tests {
             ]
         );
         assert!(names[chapters.len() + 1..].contains(&"render"));
+        assert!(names[chapters.len() + 1..].contains(&"lab"));
     }
 
     #[test]

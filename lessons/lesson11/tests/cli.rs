@@ -50,6 +50,11 @@ fn the_tour_writes_every_picture_its_page_shows() {
     let o = lesson11(&["tour", "--quality", "tiny", "--out", out.to_str().unwrap()]);
     assert!(o.status.success(), "tour failed: {}", stderr(&o));
     assert_links_exist(&out.join("index.html"));
+    let index = std::fs::read_to_string(out.join("index.html")).unwrap();
+    assert!(
+        index.contains("cargo run --release -p lesson11 -- lab"),
+        "the tour page points to the lab"
+    );
     let csv = std::fs::read_to_string(out.join("04-rendering-equation/naive-rays.csv")).unwrap();
     assert!(csv.starts_with("N (branching),max depth D,"), "{csv}");
     assert_eq!(csv.lines().count(), 10, "a header and 9 rows");

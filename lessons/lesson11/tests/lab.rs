@@ -740,3 +740,25 @@ fn the_page_works_in_a_real_browser() {
         "{r}"
     );
 }
+
+/// The README presents the lab, and its first screen still gives exactly
+/// the two set-up commands.
+#[test]
+fn the_readme_presents_the_lab_and_keeps_its_two_commands() {
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../../README.md"))
+            .unwrap();
+    let first_screen = readme.split("\n---\n").next().unwrap();
+    let block = first_screen
+        .split("```sh\n")
+        .nth(1)
+        .and_then(|b| b.split("```").next())
+        .expect("a command block on the first screen");
+    assert_eq!(
+        block.lines().collect::<Vec<_>>(),
+        ["cargo run --release -p lesson11", "cargo test --workspace"]
+    );
+    assert_eq!(first_screen.matches("```sh").count(), 1);
+    assert!(readme.contains("cargo run --release -p lesson11 -- lab"));
+    assert!(readme.contains("### The lab"));
+}
