@@ -144,14 +144,12 @@ pub fn render_setup(
         "--integrator={}",
         q.get("integrator").unwrap_or(default_integrator)
     ));
+    if q.flag("roulette")? {
+        words.push("--roulette".into());
+    }
     for (name, value) in q.iter() {
         match name {
-            "scene" | "integrator" => {}
-            "roulette" => {
-                if q.flag(name)? {
-                    words.push("--roulette".into());
-                }
-            }
+            "scene" | "integrator" | "roulette" => {}
             _ if RENDER_PARAMS.contains(&name) => words.push(format!("--{name}={value}")),
             _ => {}
         }
