@@ -435,7 +435,7 @@ fn packets_match_single_rays() {
 /// Where a primary ray's time goes (run by hand with `--ignored --nocapture`):
 /// traversal alone versus traversal with the primitive tests.
 #[test]
-#[ignore]
+#[ignore = "a measurement, not a test"]
 fn profile_primary_rays() {
     let g = Geometry::new(vec![Shape::Mesh(Arc::new(Mesh::icosphere(6)))]);
     let t = 20f32.to_radians().tan();
