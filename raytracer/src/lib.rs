@@ -23,9 +23,10 @@
 //! the estimates on a film:
 //!
 //! ```no_run
-//! use raytracer::{integrator::Direct, render, scene::Scene};
+//! use raytracer::{integrator::Direct, render, render::RenderOptions, scene::Scene};
 //! let scene = Scene::builtin("cornell").unwrap();
-//! let result = render::render(&scene, &Direct::default(), &scene.settings.render_options());
+//! let options = RenderOptions::from(&scene.settings);
+//! let result = render::render(&scene, &Direct::default(), &options);
 //! result.film.write_png("cornell.png", 0.0).unwrap();
 //! ```
 

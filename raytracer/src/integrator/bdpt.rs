@@ -26,16 +26,16 @@
 //! `s + t ≤ D + 1`; the camera subpath keeps at most `D + 1` vertices, the
 //! light subpath at most `D`.
 //!
-//! For the lesson, [`render_strategies`] renders the contribution of each
-//! `(s, t)` separately, weighted and unweighted (pbrt's `visualizestrategies`).
+//! For the lesson, a [`StrategyFilter`] keeps the contribution of one
+//! `(s, t)` alone, weighted or unweighted (pbrt's `visualizestrategies`);
+//! [`crate::render::render_strategies`] renders every strategy's image.
 
 use super::Integrator;
 use super::vertex::{
     self, EMPTY_VERTEX, MAX_VERTICES, Subpath, Vertex, mis_weight, path_vertices, visible,
 };
-use crate::film::{Image, Splat};
+use crate::film::Splat;
 use crate::math::{Color, UVec2, Vec2};
-use crate::render::{RenderOptions, render_pixels};
 use crate::sampling::Sampler;
 use crate::scene::Scene;
 
@@ -249,42 +249,4 @@ impl Integrator for Bdpt {
     ) -> Color {
         self.estimate(scene, pixel, sampler, splats)
     }
-}
-
-/// One image per strategy `(s, t)` with `s + t ≤ D + 1` (`t ≥ 1`,
-/// `max_depth = D`, paths of at least two vertices): `((s, t), weighted,
-/// unweighted)`. The weighted images add up to the BDPT image; an unweighted
-/// image is that strategy's own estimate of all the paths it can generate
-/// (noisy where it is a poor strategy, black where it is impossible). Two
-/// renders per strategy with `options`; keep the image small.
-pub fn render_strategies(
-    scene: &Scene,
-    options: &RenderOptions,
-    max_depth: u32,
-) -> Vec<((u32, u32), Image, Image)> {
-    let mut out = Vec::new();
-    let (w, h) = (scene.camera.width, scene.camera.height);
-    for n in 2..=max_depth + 1 {
-        for t in 1..=n {
-            let s = n - t;
-            let image = |weighted: bool| {
-                let bdpt = Bdpt {
-                    max_depth: Some(max_depth),
-                    rr_depth: u32::MAX,
-                    strategy_images: Some(StrategyFilter { s, t, weighted }),
-                };
-                let options = RenderOptions {
-                    label: format!("bdpt s={s} t={t}"),
-                    ..options.clone()
-                };
-                render_pixels(w, h, &options, |pixel, sampler, splats| {
-                    bdpt.sample(scene, pixel, sampler, splats)
-                })
-                .film
-                .image()
-            };
-            out.push(((s, t), image(true), image(false)));
-        }
-    }
-    out
 }

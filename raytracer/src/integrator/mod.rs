@@ -37,7 +37,7 @@ pub mod stop;
 pub mod vertex;
 
 pub use ao::AmbientOcclusion;
-pub use bdpt::{Bdpt, StrategyFilter, render_strategies};
+pub use bdpt::{Bdpt, StrategyFilter};
 pub use direct::Direct;
 pub use light_tracing::LightTracer;
 pub use naive::NaiveRecursive;

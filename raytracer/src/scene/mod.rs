@@ -61,17 +61,6 @@ pub struct RenderSettings {
     pub seed: u64,
 }
 
-impl RenderSettings {
-    /// Render options with this scene's samples per pixel and seed.
-    pub fn render_options(&self) -> crate::render::RenderOptions {
-        crate::render::RenderOptions {
-            spp: self.spp,
-            seed: self.seed,
-            ..Default::default()
-        }
-    }
-}
-
 impl Default for RenderSettings {
     fn default() -> Self {
         RenderSettings {
