@@ -11,13 +11,13 @@
 //!   `z_{t−1}` with `sample_li` (as pbrt does; it is a better point than
 //!   `y_0`), `C = β_z f_r |cos θ| L_i / (P(light) p_ω)`;
 //! - `t = 1`: light tracing — `y_{s−1}` joined to a new lens point and
-//!   splatted where it lands ([`vertex::connect_to_camera`]);
+//!   splatted where it lands ([`connect_to_camera`]);
 //! - otherwise: `C = β_y f_r(y_{s−2} → y_{s−1} → z_{t−1}) G(y_{s−1}, z_{t−1})
 //!   f_r(y_{s−1} → z_{t−1} → z_{t−2}) β_z`, with the geometry term
 //!   `G = V |cos θ_y| |cos θ_z| / d²`.
 //!
 //! Every `C` is weighted by the power heuristic over all strategies that
-//! could have generated the same path ([`vertex::mis_weight`]), so the sum
+//! could have generated the same path ([`mis_weight`]), so the sum
 //! over `(s, t)` is an unbiased estimate that keeps the best of each: NEE for
 //! small lights, light tracing for caustics seen through diffuse surfaces,
 //! hitting for large lights and glossy paths.
@@ -31,9 +31,10 @@
 //! [`crate::render::render_strategies`] renders every strategy's image.
 
 use super::Integrator;
-use super::vertex::{
-    self, EMPTY_VERTEX, MAX_VERTICES, Subpath, Vertex, mis_weight, path_vertices, visible,
-};
+use super::camera_connection::connect_to_camera;
+use super::mis_weight::mis_weight;
+use super::subpath::{camera_subpath, light_subpath};
+use super::vertex::{EMPTY_VERTEX, MAX_VERTICES, Subpath, Vertex, path_vertices, visible};
 use crate::film::Splat;
 use crate::math::{Color, UVec2, Vec2};
 use crate::sampling::Sampler;
@@ -102,7 +103,7 @@ fn connect(
     }
     if t == 1 {
         // Light tracing: y_{s−1} joined to the lens.
-        let (cs, value) = vertex::connect_to_camera(scene, &light[s - 1], sampler.next_2d())?;
+        let (cs, value) = connect_to_camera(scene, &light[s - 1], sampler.next_2d())?;
         return Some(Connection {
             value,
             raster: Some(cs.raster),
@@ -118,7 +119,7 @@ fn connect(
         let u = sampler.next_2d();
         let (index, l, pmf) = scene.choose_light(u_choice)?;
         if l.is_environment() {
-            // Not a strategy here (see `vertex`): environment light comes
+            // Not a strategy here (see `subpath`): environment light comes
             // only through escaping camera paths.
             return None;
         }
@@ -181,7 +182,7 @@ impl Bdpt {
         let max_vertices = path_vertices(self.max_depth); // D + 1
         let mut camera: Subpath = [EMPTY_VERTEX; MAX_VERTICES];
         let mut light: Subpath = [EMPTY_VERTEX; MAX_VERTICES];
-        let cam = vertex::camera_subpath(
+        let cam = camera_subpath(
             scene,
             pixel,
             sampler,
@@ -189,7 +190,7 @@ impl Bdpt {
             max_vertices,
             self.rr_depth,
         );
-        let n_light = vertex::light_subpath(
+        let n_light = light_subpath(
             scene,
             sampler,
             &mut light,

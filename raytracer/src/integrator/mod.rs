@@ -28,12 +28,15 @@ pub trait Integrator: Sync {
 
 mod ao;
 pub mod bdpt;
+pub mod camera_connection;
 mod direct;
 mod light_tracing;
+pub mod mis_weight;
 mod naive;
 pub mod nee;
 mod path;
 pub mod stop;
+pub mod subpath;
 pub mod vertex;
 
 pub use ao::AmbientOcclusion;
