@@ -29,12 +29,14 @@ pub trait Integrator: Sync {
 mod ao;
 pub mod bdpt;
 pub mod camera_connection;
+pub mod continuation;
 mod direct;
 mod light_tracing;
 pub mod mis_weight;
 mod naive;
 pub mod nee;
 mod path;
+pub mod roulette;
 pub mod stop;
 pub mod subpath;
 pub mod vertex;

@@ -16,6 +16,8 @@
 //! Depth follows Mitsuba: with `max_depth = D`, a path has at most `D − 1`
 //! scattering vertices (D = 1: only emitters seen directly).
 
+use super::continuation::sample_continuation;
+use super::roulette::russian_roulette;
 use super::{Integrator, camera_ray, nee};
 use crate::brdf::TransportMode;
 use crate::film::Splat;
@@ -118,23 +120,19 @@ impl Integrator for PathTracer {
                 l += beta * nee::sample_light(scene, &it, brdf, sampler, mis);
             }
             // Continue the path in one direction sampled from the BRDF.
-            let wo = it.frame.to_local(it.wo);
-            let (u_lobe, u) = (sampler.next_1d(), sampler.next_2d());
-            let Some(bs) = brdf.sample(wo, it.uv, u_lobe, u, TransportMode::Radiance) else {
+            let Some(c) = sample_continuation(&it, brdf, TransportMode::Radiance, sampler) else {
                 break;
             };
-            beta *= bs.f * (bs.wi.z.abs() / bs.pdf_w);
-            eta_scale *= bs.eta * bs.eta;
-            let wi = it.frame.to_world(bs.wi);
-            ray = it.spawn_ray(wi);
-            prev = Some((it.p, bs.pdf_w, bs.is_delta));
+            beta *= c.weight;
+            eta_scale *= c.sample.eta * c.sample.eta;
+            ray = c.ray;
+            prev = Some((it.p, c.sample.pdf_w, c.sample.is_delta));
             depth += 1;
             // Russian roulette (unbiased: survivors are divided by q).
             if depth >= self.rr_depth {
-                let q = (beta.max_element() * eta_scale).min(0.95);
-                if q <= 0.0 || sampler.next_1d() >= q {
+                let Some(q) = russian_roulette(beta, eta_scale, sampler) else {
                     break;
-                }
+                };
                 beta /= q;
             }
         }

@@ -14,6 +14,8 @@
 //! tracing counts the environment through camera paths that escape (`s = 0`,
 //! the only strategy that can then produce such paths, with weight 1).
 
+use super::continuation::sample_continuation;
+use super::roulette::russian_roulette;
 use super::vertex::{MAX_VERTICES, Subpath, Vertex, convert_density};
 use crate::brdf::TransportMode;
 use crate::math::{Color, Ray, UVec2, Vec3A};
@@ -74,34 +76,31 @@ pub fn random_walk(
             break;
         }
         let brdf = scene.brdf(&it);
-        let wo = it.frame.to_local(it.wo);
-        let (u_lobe, u) = (sampler.next_1d(), sampler.next_2d());
-        let Some(bs) = brdf.sample(wo, it.uv, u_lobe, u, mode) else {
+        let Some(c) = sample_continuation(&it, brdf, mode, sampler) else {
             break;
         };
+        let bs = c.sample;
         pdf_w = bs.pdf_w;
         // The reverse walk would sample ω_o from ω_i.
-        let mut pdf_rev = brdf.pdf(bs.wi, wo, it.uv);
+        let mut pdf_rev = brdf.pdf(bs.wi, c.wo, it.uv);
         if bs.is_delta {
             path[n - 1].delta = true;
             pdf_w = 0.0;
             pdf_rev = 0.0;
         }
-        let factor = bs.f * (bs.wi.z.abs() / bs.pdf_w);
-        beta *= factor;
-        walk *= factor;
+        beta *= c.weight;
+        walk *= c.weight;
         if mode == TransportMode::Radiance {
             eta_scale *= bs.eta * bs.eta;
         }
         let (cur, prev) = (path[n - 1], path[n - 2]);
         path[n - 2].pdf_rev = convert_density(pdf_rev, &cur, &prev);
-        ray = it.spawn_ray(it.frame.to_world(bs.wi));
+        ray = c.ray;
         scatterings += 1;
         if scatterings >= rr_depth {
-            let q = (walk.max_element() * eta_scale).min(0.95);
-            if q <= 0.0 || sampler.next_1d() >= q {
+            let Some(q) = russian_roulette(walk, eta_scale, sampler) else {
                 break;
-            }
+            };
             beta /= q;
             walk /= q;
         }

@@ -47,8 +47,9 @@ use crate::scene::{Interaction, Scene};
 
 /// Capacity of a subpath buffer (vertices). With unlimited depth Russian
 /// roulette ends paths long before: a path of 64 vertices has survived 63
-/// bounces (probability below 0.95^58 ≈ 0.05 even at the roulette's cap, and
-/// far less at realistic albedos); the truncation drops that tail.
+/// bounces (probability below 0.95^58 ≈ 0.05 even at the roulette's cap
+/// [`MAX_SURVIVAL`](super::roulette::MAX_SURVIVAL), and far less at
+/// realistic albedos); the truncation drops that tail.
 pub const MAX_VERTICES: usize = 64;
 
 /// No light at this vertex.
