@@ -8,8 +8,9 @@
 //! - `s = 0`: the camera subpath itself hits a light, `C = β_z · L_e`
 //!   (what a path tracer without next event estimation does);
 //! - `s = 1`: next event estimation — the light vertex is *resampled* from
-//!   `z_{t−1}` with `sample_li` (as pbrt does; it is a better point than
-//!   `y_0`), `C = β_z f_r |cos θ| L_i / (P(light) p_ω)`;
+//!   `z_{t−1}` by the path tracer's own light sampling
+//!   ([`nee::sample_light_point`]; pbrt does the same: it is a better point
+//!   than `y_0`), `C = β_z f_r |cos θ| L_i / (P(light) p_ω)`;
 //! - `t = 1`: light tracing — `y_{s−1}` joined to a new lens point and
 //!   splatted where it lands ([`connect_to_camera`]);
 //! - otherwise: `C = β_y f_r(y_{s−2} → y_{s−1} → z_{t−1}) G(y_{s−1}, z_{t−1})
@@ -33,6 +34,7 @@
 use super::Integrator;
 use super::camera_connection::connect_to_camera;
 use super::mis_weight::mis_weight;
+use super::nee::{self, LightPoint};
 use super::subpath::{camera_subpath, light_subpath};
 use super::vertex::{EMPTY_VERTEX, MAX_VERTICES, Subpath, Vertex, path_vertices, visible};
 use crate::film::Splat;
@@ -115,27 +117,22 @@ fn connect(
     }
     if s == 1 {
         // Next event estimation: a fresh light point seen from z_{t−1}.
-        let u_choice = sampler.next_1d();
-        let u = sampler.next_2d();
-        let (index, l, pmf) = scene.choose_light(u_choice)?;
-        if l.is_environment() {
+        let LightPoint { choice, sample: ls } = nee::sample_light_point(scene, pt.p(), sampler)?;
+        if choice.light.is_environment() {
             // Not a strategy here (see `subpath`): environment light comes
             // only through escaping camera paths.
             return None;
         }
-        let ls = l.sample_li(pt.p(), u)?;
-        if ls.pdf_w <= 0.0 || ls.li == Color::ZERO {
-            return None;
-        }
         // C = β_z f_r |cos θ_z| L_i / (P(light) p_ω).
-        let value = pt.beta * pt.f(scene, ls.wi) * (pt.abs_cos(ls.wi) / (pmf * ls.pdf_w)) * ls.li;
+        let pdf_light = choice.pmf * ls.pdf_w;
+        let value = pt.beta * pt.f(scene, ls.wi) * (pt.abs_cos(ls.wi) / pdf_light) * ls.li;
         if value == Color::ZERO {
             return None;
         }
         // For MIS the resampled point counts with the density of a light
         // path's origin, P(light) p_A (pbrt does the same): the weights of
         // all strategies use the same densities, so they still sum to one.
-        let mut y = Vertex::light(index, ls.p, ls.n, Color::ZERO, 0.0);
+        let mut y = Vertex::light(choice.index, ls.p, ls.n, Color::ZERO, 0.0);
         y.pdf_fwd = y.pdf_light_origin(scene);
         if !visible(scene, pt, &y) {
             return None;

@@ -9,9 +9,42 @@
 //! every integrator that connects a surface point to a light.
 
 use crate::brdf::Brdf;
+use crate::light::LightSample;
 use crate::math::{Color, Ray, Vec3A};
 use crate::sampling::{Sampler, power_heuristic};
-use crate::scene::{Interaction, Scene};
+use crate::scene::{Interaction, LightChoice, Scene};
+
+/// A light chosen, and a point on it sampled as seen from a receiver.
+#[derive(Clone, Copy, Debug)]
+pub struct LightPoint<'a> {
+    /// Which light, with the probability `P(light)` of choosing it.
+    pub choice: LightChoice<'a>,
+    /// The point: direction `ω_i`, `L_i`, its density `p_ω` per unit solid
+    /// angle at the receiver, distance, normal.
+    pub sample: LightSample,
+}
+
+/// The sampling half of next event estimation, shared by every integrator
+/// that aims at a light (this file's [`sample_light`], and the `s = 1`
+/// strategy of bidirectional tracing): chooses a light with `P(light)` and
+/// samples a point on it as seen from `p`. Draws three numbers (the light's
+/// choice, then the point). `None` if the scene has no light or the sample
+/// carries nothing (zero density or radiance).
+#[inline]
+pub fn sample_light_point<'a>(
+    scene: &'a Scene,
+    p: Vec3A,
+    sampler: &mut Sampler,
+) -> Option<LightPoint<'a>> {
+    let u_choice = sampler.next_1d();
+    let u = sampler.next_2d();
+    let choice = scene.choose_light(u_choice)?;
+    let sample = choice.light.sample_li(p, u)?;
+    if sample.pdf_w <= 0.0 || sample.li == Color::ZERO {
+        return None;
+    }
+    Some(LightPoint { choice, sample })
+}
 
 /// One light sample for the point `it` with BRDF `brdf`: the estimate
 /// `w_light · f_r · L_e · |cos θ_i| / (P(light) · p(ω_i))`, where `w_light` is
@@ -26,17 +59,9 @@ pub fn sample_light(
     sampler: &mut Sampler,
     mis: bool,
 ) -> Color {
-    let u_choice = sampler.next_1d();
-    let u = sampler.next_2d();
-    let Some((_, light, pmf)) = scene.choose_light(u_choice) else {
+    let Some(LightPoint { choice, sample: ls }) = sample_light_point(scene, it.p, sampler) else {
         return Color::ZERO;
     };
-    let Some(ls) = light.sample_li(it.p, u) else {
-        return Color::ZERO;
-    };
-    if ls.pdf_w <= 0.0 || ls.li == Color::ZERO {
-        return Color::ZERO;
-    }
     let wo = it.frame.to_local(it.wo);
     let wi = it.frame.to_local(ls.wi);
     let f = brdf.eval(wo, wi, it.uv);
@@ -51,7 +76,7 @@ pub fn sample_light(
     if !scene.unoccluded(&shadow) {
         return Color::ZERO;
     }
-    let pdf_light = pmf * ls.pdf_w;
+    let pdf_light = choice.pmf * ls.pdf_w;
     // A point light cannot be hit by a BRDF sample: its sample takes all the weight.
     let weight = if ls.is_delta || !mis {
         1.0

@@ -20,7 +20,7 @@ use super::vertex::{MAX_VERTICES, Subpath, Vertex, convert_density};
 use crate::brdf::TransportMode;
 use crate::math::{Color, Ray, UVec2, Vec3A};
 use crate::sampling::Sampler;
-use crate::scene::Scene;
+use crate::scene::{LightChoice, Scene};
 
 /// How a random walk ended.
 #[derive(Clone, Copy, Debug)]
@@ -166,7 +166,7 @@ pub fn light_subpath(
     if max_vertices == 0 {
         return 0;
     }
-    let Some((index, light, pmf)) = scene.choose_light(u_choice) else {
+    let Some(LightChoice { index, light, pmf }) = scene.choose_light(u_choice) else {
         return 0;
     };
     if light.is_environment() {

@@ -113,6 +113,16 @@ pub struct ObjectInfo {
     pub light: Option<u32>,
 }
 
+/// A light picked by [`Scene::choose_light`].
+#[derive(Clone, Copy, Debug)]
+pub struct LightChoice<'a> {
+    /// Its index in [`Scene::lights`].
+    pub index: u32,
+    pub light: &'a Light,
+    /// The probability `P(light)` with which it was picked.
+    pub pmf: f32,
+}
+
 /// A scene ready to render: camera, geometry with its BVH, BRDFs and lights.
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -225,17 +235,21 @@ impl Scene {
         !self.geometry.occluded(ray)
     }
 
-    /// Picks a light for next event estimation: uniformly, as Mitsuba does
-    /// (each of `n` lights with probability `1/n`). Returns the index, the
-    /// light and the probability.
+    /// Picks a light for next event estimation with the number `u`:
+    /// uniformly, as Mitsuba does (each of `n` lights with probability
+    /// `1/n`). `None` if the scene has no light.
     #[inline]
-    pub fn choose_light(&self, u: f32) -> Option<(u32, &Light, f32)> {
+    pub fn choose_light(&self, u: f32) -> Option<LightChoice<'_>> {
         let n = self.lights.len();
         if n == 0 {
             return None;
         }
         let i = ((u * n as f32) as usize).min(n - 1);
-        Some((i as u32, &self.lights[i], 1.0 / n as f32))
+        Some(LightChoice {
+            index: i as u32,
+            light: &self.lights[i],
+            pmf: 1.0 / n as f32,
+        })
     }
 
     /// Probability that [`Self::choose_light`] picks light `index`.
