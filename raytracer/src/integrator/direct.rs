@@ -48,7 +48,7 @@ impl Integrator for Direct {
             return l;
         };
         let next = scene.intersect(&c.ray);
-        if let Some(e) = nee::emitter_hit(scene, &c.ray, next.as_ref()) {
+        if let Some(e) = scene.emitter_hit(&c.ray, next.as_ref()) {
             let w = if c.sample.is_delta {
                 1.0
             } else {

@@ -10,7 +10,7 @@
 
 use crate::brdf::Brdf;
 use crate::light::LightSample;
-use crate::math::{Color, Ray, Vec3A};
+use crate::math::{Color, Vec3A};
 use crate::sampling::{Sampler, power_heuristic};
 use crate::scene::{Interaction, LightChoice, Scene};
 
@@ -84,39 +84,6 @@ pub fn sample_light(
         power_heuristic(1.0, pdf_light, 1.0, brdf.pdf(wo, wi, it.uv))
     };
     f * ls.li * (wi.z.abs() * weight / pdf_light)
-}
-
-/// An emitter found by a ray: the light's index, the radiance it sends back
-/// along the ray, and the point and normal where the ray met it (for the
-/// environment: the ray's origin and a zero normal, which its pdf ignores).
-#[derive(Clone, Copy, Debug)]
-pub struct EmitterHit {
-    pub light: u32,
-    pub le: Color,
-    pub p: Vec3A,
-    pub n: Vec3A,
-}
-
-/// What emitter, if any, `ray` reached: the area light of the surface `hit`,
-/// or the environment if the ray escaped. `None` if no light was reached or
-/// it sends nothing back.
-#[inline]
-pub fn emitter_hit(scene: &Scene, ray: &Ray, hit: Option<&Interaction>) -> Option<EmitterHit> {
-    let found = match hit {
-        Some(it) => scene.area_light(it).map(|(light, l)| EmitterHit {
-            light,
-            le: l.le(it.ng, it.wo),
-            p: it.p,
-            n: it.ng,
-        }),
-        None => scene.environment.map(|light| EmitterHit {
-            light,
-            le: scene.escaped_radiance(ray.d),
-            p: ray.o,
-            n: Vec3A::ZERO,
-        }),
-    };
-    found.filter(|e| e.le != Color::ZERO)
 }
 
 /// The MIS weight of a (non-delta) BRDF sample of density `pdf_brdf` that

@@ -98,7 +98,7 @@ impl Integrator for PathTracer {
             }
             let hit = scene.intersect(&ray);
             // Emitted light reached by the ray (counted while depth < max_depth).
-            if let Some(e) = nee::emitter_hit(scene, &ray, hit.as_ref()) {
+            if let Some(e) = scene.emitter_hit(&ray, hit.as_ref()) {
                 let weight = match (&prev, self.strategy) {
                     (None, _) | (Some((_, _, true)), _) | (Some(_), DirectStrategy::BrdfOnly) => {
                         1.0

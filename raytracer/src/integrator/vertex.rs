@@ -41,7 +41,6 @@
 //! normal except smooth meshes).
 
 use crate::frame::Frame;
-use crate::light::Light;
 use crate::math::{Color, Ray, Vec2, Vec3A};
 use crate::scene::{Interaction, Scene};
 
@@ -159,16 +158,6 @@ fn point_interaction(p: Vec3A, n: Vec3A) -> Interaction {
     }
 }
 
-/// `L_e` leaving light `light` at a point with normal `n` in direction `w`;
-/// for a point light its intensity `I` (W/sr), which plays the same role.
-#[inline]
-pub fn emitted(scene: &Scene, light: u32, n: Vec3A, w: Vec3A) -> Color {
-    match &scene.lights[light as usize] {
-        Light::Point(l) => l.intensity,
-        l => l.le(n, w),
-    }
-}
-
 impl Vertex {
     /// The lens point `z_0` with throughput `beta`.
     pub fn camera(p: Vec3A, beta: Color) -> Vertex {
@@ -198,7 +187,7 @@ impl Vertex {
         Vertex {
             kind: VertexKind::Surface,
             it,
-            light: scene.area_light(&it).map_or(NO_LIGHT, |(i, _)| i),
+            light: scene.area_light(&it).unwrap_or(NO_LIGHT),
             beta,
             ..EMPTY_VERTEX
         }
@@ -242,7 +231,7 @@ impl Vertex {
                     .brdf(&self.it)
                     .eval(fr.to_local(self.it.wo), fr.to_local(w), self.it.uv)
             }
-            VertexKind::Light => emitted(scene, self.light, self.it.ng, w),
+            VertexKind::Light => scene.emitted_by(self.light, self.it.ng, w),
             VertexKind::Camera => Color::ZERO,
         }
     }
@@ -266,7 +255,7 @@ impl Vertex {
             return Color::ZERO;
         }
         let w = (to.p() - self.p()).normalize_or_zero();
-        emitted(scene, self.light, self.it.ng, w)
+        scene.emitted_by(self.light, self.it.ng, w)
     }
 
     /// Area density at `next` of sampling it from this vertex, having arrived

@@ -20,7 +20,7 @@ use crate::brdf::Brdf;
 use crate::camera::{Camera, CameraParams};
 use crate::geometry::{Geometry, Shape};
 use crate::light::{AreaLight, AreaShape, Light};
-use crate::math::{Color, Ray};
+use crate::math::{Color, Ray, Vec3A};
 
 pub use interaction::Interaction;
 
@@ -123,6 +123,18 @@ pub struct LightChoice<'a> {
     pub pmf: f32,
 }
 
+/// An emitter found by a ray ([`Scene::emitter_hit`]): the light's index,
+/// the radiance it sends back along the ray, and the point and normal where
+/// the ray met it (for the environment: the ray's origin and a zero normal,
+/// which its pdf ignores).
+#[derive(Clone, Copy, Debug)]
+pub struct EmitterHit {
+    pub light: u32,
+    pub le: Color,
+    pub p: Vec3A,
+    pub n: Vec3A,
+}
+
 /// A scene ready to render: camera, geometry with its BVH, BRDFs and lights.
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -187,7 +199,7 @@ impl Scene {
         let geometry = Geometry::new(shapes);
         let bounds = geometry.bounds();
         let (center, radius) = if bounds.is_empty() {
-            (crate::math::Vec3A::ZERO, 1.0)
+            (Vec3A::ZERO, 1.0)
         } else {
             let c = bounds.centroid();
             (c, (bounds.max - c).length().max(1e-3))
@@ -260,7 +272,7 @@ impl Scene {
 
     /// Radiance arriving along a ray that left the scene (the environment, or black).
     #[inline]
-    pub fn escaped_radiance(&self, d: crate::math::Vec3A) -> Color {
+    pub fn escaped_radiance(&self, d: Vec3A) -> Color {
         match self.environment.map(|i| &self.lights[i as usize]) {
             Some(Light::Environment(env)) => env.environment_radiance(d),
             _ => Color::ZERO,
@@ -273,19 +285,55 @@ impl Scene {
         &self.brdfs[self.objects[it.shape as usize].brdf as usize]
     }
 
-    /// The area light of the shape hit, if it emits, with its index.
+    /// The index in [`Scene::lights`] of the area light of the shape hit, if
+    /// it emits.
     #[inline]
-    pub fn area_light(&self, it: &Interaction) -> Option<(u32, &Light)> {
-        self.objects[it.shape as usize]
-            .light
-            .map(|i| (i, &self.lights[i as usize]))
+    pub fn area_light(&self, it: &Interaction) -> Option<u32> {
+        self.objects[it.shape as usize].light
+    }
+
+    /// `L_e` that light `light` sends from its point with normal `n` in the
+    /// direction `w` (pointing away from the light); for a point light its
+    /// intensity `I` (W/sr), which plays the same role where a light path
+    /// starts (no ray hits a point light, so a surface never asks for it).
+    /// The one place emission is looked up: [`Scene::emitted`] and
+    /// [`Scene::emitter_hit`] ask it, and the vertices of light and
+    /// bidirectional tracing too.
+    #[inline]
+    pub fn emitted_by(&self, light: u32, n: Vec3A, w: Vec3A) -> Color {
+        match &self.lights[light as usize] {
+            Light::Point(l) => l.intensity,
+            l => l.le(n, w),
+        }
     }
 
     /// Radiance emitted by the hit surface towards `it.wo` (zero unless it is a light).
     #[inline]
     pub fn emitted(&self, it: &Interaction) -> Color {
         self.area_light(it)
-            .map_or(Color::ZERO, |(_, l)| l.le(it.ng, it.wo))
+            .map_or(Color::ZERO, |light| self.emitted_by(light, it.ng, it.wo))
+    }
+
+    /// What emitter, if any, `ray` reached: the area light of the surface
+    /// `hit`, or the environment if the ray escaped (`hit` is `None`). `None`
+    /// if no light was reached or it sends nothing back.
+    #[inline]
+    pub fn emitter_hit(&self, ray: &Ray, hit: Option<&Interaction>) -> Option<EmitterHit> {
+        let found = match hit {
+            Some(it) => self.area_light(it).map(|light| EmitterHit {
+                light,
+                le: self.emitted_by(light, it.ng, it.wo),
+                p: it.p,
+                n: it.ng,
+            }),
+            None => self.environment.map(|light| EmitterHit {
+                light,
+                le: self.escaped_radiance(ray.d),
+                p: ray.o,
+                n: Vec3A::ZERO,
+            }),
+        };
+        found.filter(|e| e.le != Color::ZERO)
     }
 }
 
