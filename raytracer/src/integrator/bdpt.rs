@@ -35,7 +35,7 @@ use super::Integrator;
 use super::camera_connection::connect_to_camera;
 use super::mis_weight::mis_weight;
 use super::nee::{self, LightPoint};
-use super::subpath::{camera_subpath, light_subpath};
+use super::subpath::{EscapedRay, camera_subpath, light_subpath};
 use super::vertex::{EMPTY_VERTEX, MAX_VERTICES, Subpath, Vertex, path_vertices, visible};
 use crate::film::Splat;
 use crate::math::{Color, UVec2, Vec2};
@@ -105,11 +105,11 @@ fn connect(
     }
     if t == 1 {
         // Light tracing: y_{s−1} joined to the lens.
-        let (cs, value) = connect_to_camera(scene, &light[s - 1], sampler.next_2d())?;
+        let c = connect_to_camera(scene, &light[s - 1], sampler.next_2d())?;
         return Some(Connection {
-            value,
-            raster: Some(cs.raster),
-            sampled: Some(Vertex::camera(cs.p_lens, Color::ZERO)),
+            value: c.value,
+            raster: Some(c.camera.raster),
+            sampled: Some(Vertex::camera(c.camera.p_lens, Color::ZERO)),
         });
     }
     if !pt.is_connectible(scene) {
@@ -124,8 +124,8 @@ fn connect(
             return None;
         }
         // C = β_z f_r |cos θ_z| L_i / (P(light) p_ω).
-        let pdf_light = choice.pmf * ls.pdf_w;
-        let value = pt.beta * pt.f(scene, ls.wi) * (pt.abs_cos(ls.wi) / pdf_light) * ls.li;
+        let pdf_light_w = choice.pmf * ls.pdf_w;
+        let value = pt.beta * pt.f(scene, ls.wi) * (pt.abs_cos(ls.wi) / pdf_light_w) * ls.li;
         if value == Color::ZERO {
             return None;
         }
@@ -133,7 +133,7 @@ fn connect(
         // path's origin, P(light) p_A (pbrt does the same): the weights of
         // all strategies use the same densities, so they still sum to one.
         let mut y = Vertex::light(choice.index, ls.p, ls.n, Color::ZERO, 0.0);
-        y.pdf_fwd = y.pdf_light_origin(scene);
+        y.pdf_fwd_a = y.pdf_light_origin_a(scene);
         if !visible(scene, pt, &y) {
             return None;
         }
@@ -203,7 +203,7 @@ impl Bdpt {
         let mut l = Color::ZERO;
         // The environment seen by an escaping camera path: strategy
         // (0, n_C + 1), the only one that generates such paths (weight 1).
-        if let Some((beta, d)) = cam.escaped
+        if let Some(EscapedRay { beta, d }) = cam.escaped
             && n_camera < max_vertices
             && keep(0, n_camera + 1)
         {

@@ -10,6 +10,16 @@ use crate::camera::CameraSample;
 use crate::math::{Color, Vec2};
 use crate::scene::Scene;
 
+/// A light-subpath vertex joined to the lens.
+#[derive(Clone, Copy, Debug)]
+pub struct CameraConnection {
+    /// The lens point, the raster position where the vertex is seen, the
+    /// importance and density of the connection.
+    pub camera: CameraSample,
+    /// The contribution to splat at `camera.raster`.
+    pub value: Color,
+}
+
 /// The `t = 1` connection: light-subpath vertex `q` joined to a lens point
 /// chosen by `u_lens`. Its contribution to the pixel at `CameraSample::raster`
 /// is (Veach's light tracing estimate)
@@ -23,7 +33,7 @@ use crate::scene::Scene;
 /// `camera.sample_wi` returns `p_ω = d² / (cos θ_lens · A_lens)` (the lens
 /// density per unit solid angle at `q`). Visibility-tested. `None` if the
 /// point is off the film, behind the camera or in shadow.
-pub fn connect_to_camera(scene: &Scene, q: &Vertex, u_lens: Vec2) -> Option<(CameraSample, Color)> {
+pub fn connect_to_camera(scene: &Scene, q: &Vertex, u_lens: Vec2) -> Option<CameraConnection> {
     if !q.is_connectible(scene) {
         return None;
     }
@@ -33,5 +43,8 @@ pub fn connect_to_camera(scene: &Scene, q: &Vertex, u_lens: Vec2) -> Option<(Cam
         return None;
     }
     let lens = Vertex::camera(cs.p_lens, Color::ZERO);
-    visible(scene, q, &lens).then_some((cs, l))
+    visible(scene, q, &lens).then_some(CameraConnection {
+        camera: cs,
+        value: l,
+    })
 }

@@ -52,7 +52,7 @@ impl Integrator for Direct {
             let w = if c.sample.is_delta {
                 1.0
             } else {
-                nee::brdf_sample_weight(scene, it.p, c.sample.pdf_w, e.light, e.p, e.n, c.wi)
+                nee::brdf_sample_weight(scene, it.p, c.sample.pdf_w, &e, c.wi)
             };
             l += c.weight * e.le * w;
         }

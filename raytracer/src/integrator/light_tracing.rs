@@ -80,10 +80,10 @@ impl Integrator for LightTracer {
         let n = light_subpath(scene, sampler, &mut path, max_vertices, self.rr_depth);
         for q in &path[..n] {
             let u_lens = sampler.next_2d();
-            if let Some((cs, value)) = connect_to_camera(scene, q, u_lens) {
+            if let Some(c) = connect_to_camera(scene, q, u_lens) {
                 splats.push(Splat {
-                    raster: cs.raster,
-                    value,
+                    raster: c.camera.raster,
+                    value: c.value,
                 });
             }
         }

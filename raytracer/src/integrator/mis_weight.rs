@@ -74,20 +74,20 @@ pub fn mis_weight(
     let pt = camera[t - 1];
     let pt_minus = (t > 1).then(|| camera[t - 2]);
     // Reverse densities across the connection.
-    camera[t - 1].pdf_rev = match &qs {
-        Some(q) => q.pdf(scene, qs_minus.as_ref(), &pt),
-        None => pt.pdf_light_origin(scene),
+    camera[t - 1].pdf_rev_a = match &qs {
+        Some(q) => q.pdf_a(scene, qs_minus.as_ref(), &pt),
+        None => pt.pdf_light_origin_a(scene),
     };
     if let Some(pm) = &pt_minus {
-        camera[t - 2].pdf_rev = match &qs {
-            Some(q) => pt.pdf(scene, Some(q), pm),
-            None => pt.pdf_light(scene, pm),
+        camera[t - 2].pdf_rev_a = match &qs {
+            Some(q) => pt.pdf_a(scene, Some(q), pm),
+            None => pt.pdf_light_a(scene, pm),
         };
     }
     if let Some(q) = &qs {
-        light[s - 1].pdf_rev = pt.pdf(scene, pt_minus.as_ref(), q);
+        light[s - 1].pdf_rev_a = pt.pdf_a(scene, pt_minus.as_ref(), q);
         if let Some(qm) = &qs_minus {
-            light[s - 2].pdf_rev = q.pdf(scene, Some(&pt), qm);
+            light[s - 2].pdf_rev_a = q.pdf_a(scene, Some(&pt), qm);
         }
     }
     #[inline]
@@ -99,7 +99,7 @@ pub fn mis_weight(
     // (a light path cannot hit a pinhole: t' = 0 is never a strategy).
     let mut r = 1.0f32;
     for i in (1..t).rev() {
-        r *= remap0(camera[i].pdf_rev) / remap0(camera[i].pdf_fwd);
+        r *= remap0(camera[i].pdf_rev_a) / remap0(camera[i].pdf_fwd_a);
         if !camera[i].delta && !camera[i - 1].delta {
             sum += r * r;
         }
@@ -107,7 +107,7 @@ pub fn mis_weight(
     // Strategies with fewer light vertices: (s−1, t+1), …, (0, s+t).
     let mut r = 1.0f32;
     for i in (0..s).rev() {
-        r *= remap0(light[i].pdf_rev) / remap0(light[i].pdf_fwd);
+        r *= remap0(light[i].pdf_rev_a) / remap0(light[i].pdf_fwd_a);
         let delta_before = if i > 0 {
             light[i - 1].delta
         } else {

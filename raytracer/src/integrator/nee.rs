@@ -12,7 +12,7 @@ use crate::brdf::Brdf;
 use crate::light::LightSample;
 use crate::math::{Color, Vec3A};
 use crate::sampling::{Sampler, power_heuristic};
-use crate::scene::{Interaction, LightChoice, Scene};
+use crate::scene::{EmitterHit, Interaction, LightChoice, Scene};
 
 /// A light chosen, and a point on it sampled as seen from a receiver.
 #[derive(Clone, Copy, Debug)]
@@ -76,33 +76,31 @@ pub fn sample_light(
     if !scene.unoccluded(&shadow) {
         return Color::ZERO;
     }
-    let pdf_light = choice.pmf * ls.pdf_w;
+    let pdf_light_w = choice.pmf * ls.pdf_w;
     // A point light cannot be hit by a BRDF sample: its sample takes all the weight.
     let weight = if ls.is_delta || !mis {
         1.0
     } else {
-        power_heuristic(1.0, pdf_light, 1.0, brdf.pdf(wo, wi, it.uv))
+        power_heuristic(1.0, pdf_light_w, 1.0, brdf.pdf(wo, wi, it.uv))
     };
-    f * ls.li * (wi.z.abs() * weight / pdf_light)
+    f * ls.li * (wi.z.abs() * weight / pdf_light_w)
 }
 
-/// The MIS weight of a (non-delta) BRDF sample of density `pdf_brdf` that
-/// left the point `from` in world direction `wi` and reached light
-/// `light_index` at the point `p_light` with normal `n_light` (for the
-/// environment both are ignored): the counterpart of [`sample_light`]'s
-/// weight. A sample from a delta lobe has weight 1 (no light sample could
-/// have produced it); callers handle that case.
+/// The MIS weight of a (non-delta) BRDF sample that left the point `from` in
+/// world direction `wi` with density `pdf_brdf_w` per unit solid angle and
+/// found the emitter `e`: the counterpart of [`sample_light`]'s weight, with
+/// the density light sampling would have had for the same direction,
+/// `P(light) · p_ω`. A sample from a delta lobe has weight 1 (no light sample
+/// could have produced it); callers handle that case.
 #[inline]
 pub fn brdf_sample_weight(
     scene: &Scene,
     from: Vec3A,
-    pdf_brdf: f32,
-    light_index: u32,
-    p_light: Vec3A,
-    n_light: Vec3A,
+    pdf_brdf_w: f32,
+    e: &EmitterHit,
     wi: Vec3A,
 ) -> f32 {
-    let light = &scene.lights[light_index as usize];
-    let pdf_light = scene.light_pmf(light_index) * light.pdf_li(from, p_light, n_light, wi);
-    power_heuristic(1.0, pdf_brdf, 1.0, pdf_light)
+    let light = &scene.lights[e.light as usize];
+    let pdf_light_w = scene.light_pmf(e.light) * light.pdf_li_w(from, e.p, e.n, wi);
+    power_heuristic(1.0, pdf_brdf_w, 1.0, pdf_light_w)
 }

@@ -21,7 +21,7 @@ use super::roulette::russian_roulette;
 use super::{Integrator, camera_ray, nee};
 use crate::brdf::TransportMode;
 use crate::film::Splat;
-use crate::math::{Color, UVec2};
+use crate::math::{Color, UVec2, Vec3A};
 use crate::sampling::Sampler;
 use crate::scene::Scene;
 
@@ -37,6 +37,19 @@ pub enum DirectStrategy {
     /// Light sampling only, without MIS: the BRDF-sampled path counts emitters
     /// only after a delta bounce (noisy on glossy surfaces under large lights).
     LightOnly,
+}
+
+/// The BRDF sample that sent the path's current ray: what the MIS weight of
+/// an emitter the ray hits needs.
+#[derive(Clone, Copy, Debug)]
+struct PreviousBounce {
+    /// Where the ray left.
+    p: Vec3A,
+    /// Density of its direction per unit solid angle.
+    pdf_w: f32,
+    /// Whether it came from a delta lobe (no light sample could have found
+    /// the same light: weight 1).
+    is_delta: bool,
 }
 
 /// The path tracer.
@@ -83,9 +96,8 @@ impl Integrator for PathTracer {
         // Relative IOR accumulated along the path (radiance is scaled by 1/η²
         // through glass; roulette undoes that to judge the path fairly).
         let mut eta_scale = 1.0f32;
-        // Density and delta flag of the BRDF sample that produced `ray`, and its
-        // origin, for the MIS weight of an emitter the ray hits.
-        let mut prev: Option<(crate::math::Vec3A, f32, bool)> = None;
+        // The BRDF sample that produced `ray` (none for the camera ray).
+        let mut prev: Option<PreviousBounce> = None;
         let mut depth = 0u32;
         if max_depth == 0 {
             return l;
@@ -100,12 +112,12 @@ impl Integrator for PathTracer {
             // Emitted light reached by the ray (counted while depth < max_depth).
             if let Some(e) = scene.emitter_hit(&ray, hit.as_ref()) {
                 let weight = match (&prev, self.strategy) {
-                    (None, _) | (Some((_, _, true)), _) | (Some(_), DirectStrategy::BrdfOnly) => {
-                        1.0
-                    }
+                    (None, _)
+                    | (Some(PreviousBounce { is_delta: true, .. }), _)
+                    | (Some(_), DirectStrategy::BrdfOnly) => 1.0,
                     (Some(_), DirectStrategy::LightOnly) => 0.0,
-                    (Some((from, pdf, false)), DirectStrategy::Mis) => {
-                        nee::brdf_sample_weight(scene, *from, *pdf, e.light, e.p, e.n, ray.d)
+                    (Some(b), DirectStrategy::Mis) => {
+                        nee::brdf_sample_weight(scene, b.p, b.pdf_w, &e, ray.d)
                     }
                 };
                 l += beta * e.le * weight;
@@ -126,7 +138,11 @@ impl Integrator for PathTracer {
             beta *= c.weight;
             eta_scale *= c.sample.eta * c.sample.eta;
             ray = c.ray;
-            prev = Some((it.p, c.sample.pdf_w, c.sample.is_delta));
+            prev = Some(PreviousBounce {
+                p: it.p,
+                pdf_w: c.sample.pdf_w,
+                is_delta: c.sample.is_delta,
+            });
             depth += 1;
             // Russian roulette (unbiased: survivors are divided by q).
             if depth >= self.rr_depth {

@@ -16,7 +16,7 @@
 
 use super::continuation::sample_continuation;
 use super::roulette::russian_roulette;
-use super::vertex::{MAX_VERTICES, Subpath, Vertex, convert_density};
+use super::vertex::{MAX_VERTICES, Subpath, Vertex, pdf_w_to_a};
 use crate::brdf::TransportMode;
 use crate::math::{Color, Ray, UVec2, Vec3A};
 use crate::sampling::Sampler;
@@ -27,16 +27,25 @@ use crate::scene::{LightChoice, Scene};
 pub struct WalkEnd {
     /// Number of vertices in the buffer (the start vertex included).
     pub vertices: usize,
-    /// Throughput and direction of a ray that left the scene (camera
-    /// subpaths only: it sees the environment).
-    pub escaped: Option<(Color, Vec3A)>,
+    /// The ray that left the scene, if one did (camera subpaths only: it
+    /// sees the environment).
+    pub escaped: Option<EscapedRay>,
+}
+
+/// A camera subpath's last ray, which hit nothing.
+#[derive(Clone, Copy, Debug)]
+pub struct EscapedRay {
+    /// The throughput it carries (that a vertex at its end would have had).
+    pub beta: Color,
+    /// Its direction, where the environment is looked up.
+    pub d: Vec3A,
 }
 
 /// Extends the subpath whose last vertex is `path[0..start+1]` by a random
 /// walk: `ray` leaves `path[start]` with solid-angle density `pdf_w`, and
 /// `beta` is the throughput the first new vertex gets. At every surface the
 /// BRDF is sampled in transport mode `mode`; each new vertex records
-/// `pdf_fwd`, and its predecessor `pdf_rev` (the reverse walk's density, the
+/// `pdf_fwd_a`, and its predecessor `pdf_rev_a` (the reverse walk's density, the
 /// BRDF's `pdf(ω_i → ω_o)`). Stops at `max_vertices`, at a failed sample or by
 /// Russian roulette after `rr_depth` scattering events (which divides the
 /// survivors' throughput by their probability `q`).
@@ -62,14 +71,15 @@ pub fn random_walk(
     let mut scatterings = 0u32;
     while n < max_vertices {
         let Some(it) = scene.intersect(&ray) else {
-            let escaped = (mode == TransportMode::Radiance).then_some((beta, ray.d));
+            let escaped =
+                (mode == TransportMode::Radiance).then_some(EscapedRay { beta, d: ray.d });
             return WalkEnd {
                 vertices: n,
                 escaped,
             };
         };
         let mut v = Vertex::surface(scene, it, beta);
-        v.pdf_fwd = convert_density(pdf_w, &path[n - 1], &v);
+        v.pdf_fwd_a = pdf_w_to_a(pdf_w, &path[n - 1], &v);
         path[n] = v;
         n += 1;
         if n >= max_vertices {
@@ -82,11 +92,11 @@ pub fn random_walk(
         let bs = c.sample;
         pdf_w = bs.pdf_w;
         // The reverse walk would sample ω_o from ω_i.
-        let mut pdf_rev = brdf.pdf(bs.wi, c.wo, it.uv);
+        let mut pdf_rev_w = brdf.pdf(bs.wi, c.wo, it.uv);
         if bs.is_delta {
             path[n - 1].delta = true;
             pdf_w = 0.0;
-            pdf_rev = 0.0;
+            pdf_rev_w = 0.0;
         }
         beta *= c.weight;
         walk *= c.weight;
@@ -94,7 +104,7 @@ pub fn random_walk(
             eta_scale *= bs.eta * bs.eta;
         }
         let (cur, prev) = (path[n - 1], path[n - 2]);
-        path[n - 2].pdf_rev = convert_density(pdf_rev, &cur, &prev);
+        path[n - 2].pdf_rev_a = pdf_w_to_a(pdf_rev_w, &cur, &prev);
         ray = c.ray;
         scatterings += 1;
         if scatterings >= rr_depth {
@@ -132,7 +142,7 @@ pub fn camera_subpath(
         };
     }
     // p_ω of the primary ray over the whole film (see `camera::pdf_we`).
-    let (_, pdf_w) = scene.camera.pdf_we(&ray);
+    let pdf_w = scene.camera.pdf_we(&ray).pdf_w;
     random_walk(
         scene,
         path,

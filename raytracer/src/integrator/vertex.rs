@@ -22,10 +22,12 @@
 //!
 //! **Densities.** A direction sampled with solid-angle density `p_ω` at `x`
 //! that reaches `y` gives `y` the area density (thesis, eq. 8.10)
-//! `p_A(y) = p_ω · |cos θ_y| / ‖x − y‖²` ([`convert_density`]). Every vertex
-//! stores two of them, as in pbrt-v4: `pdf_fwd`, the density with which its own
-//! subpath generated it, and `pdf_rev`, the density with which the *other*
-//! subpath would have generated it (the same walk run backwards).
+//! `p_A(y) = p_ω · |cos θ_y| / ‖x − y‖²` ([`pdf_w_to_a`]). Every vertex
+//! stores two of them, as in pbrt-v4: `pdf_fwd_a`, the density with which its
+//! own subpath generated it, and `pdf_rev_a`, the density with which the
+//! *other* subpath would have generated it (the same walk run backwards).
+//! Density names end in their measure, as in SmallVCM: `_w` per unit solid
+//! angle, `_a` per unit area.
 //!
 //! **Deltas.** A mirror or glass vertex cannot be connected to (its `f_r` is a
 //! delta, [`Vertex::is_connectible`]); a point light is a delta in position
@@ -82,9 +84,9 @@ pub struct Vertex {
     /// depends on where the path goes next).
     pub beta: Color,
     /// Area density with which this vertex's own subpath generated it.
-    pub pdf_fwd: f32,
+    pub pdf_fwd_a: f32,
     /// Area density with which the other subpath would generate it.
-    pub pdf_rev: f32,
+    pub pdf_rev_a: f32,
     /// Whether the scattering at this vertex was sampled from a delta lobe.
     pub delta: bool,
 }
@@ -107,8 +109,8 @@ pub const EMPTY_VERTEX: Vertex = Vertex {
     },
     light: NO_LIGHT,
     beta: Color::ZERO,
-    pdf_fwd: 0.0,
-    pdf_rev: 0.0,
+    pdf_fwd_a: 0.0,
+    pdf_rev_a: 0.0,
     delta: false,
 };
 
@@ -126,7 +128,7 @@ pub fn path_vertices(max_depth: Option<u32>) -> usize {
 /// density at `from` turned into an area density at `to` (no cosine if `to`
 /// is not on a surface: a point light or a pinhole).
 #[inline]
-pub fn convert_density(pdf_w: f32, from: &Vertex, to: &Vertex) -> f32 {
+pub fn pdf_w_to_a(pdf_w: f32, from: &Vertex, to: &Vertex) -> f32 {
     let d = to.it.p - from.it.p;
     let d2 = d.length_squared();
     if d2 == 0.0 {
@@ -170,14 +172,14 @@ impl Vertex {
     }
 
     /// The light point `y_0` on light `light` (normal `n`, zero for a point
-    /// light) with throughput `beta` and forward density `pdf_fwd`.
-    pub fn light(light: u32, p: Vec3A, n: Vec3A, beta: Color, pdf_fwd: f32) -> Vertex {
+    /// light) with throughput `beta` and forward density `pdf_fwd_a`.
+    pub fn light(light: u32, p: Vec3A, n: Vec3A, beta: Color, pdf_fwd_a: f32) -> Vertex {
         Vertex {
             kind: VertexKind::Light,
             it: point_interaction(p, n),
             light,
             beta,
-            pdf_fwd,
+            pdf_fwd_a,
             ..EMPTY_VERTEX
         }
     }
@@ -262,11 +264,11 @@ impl Vertex {
     /// from `prev`: the BRDF's `p_ω(ω_o → ω_i)` at a surface, the camera's
     /// direction density at the lens, the emission's direction density at a
     /// light — each converted to area measure at `next`.
-    pub fn pdf(&self, scene: &Scene, prev: Option<&Vertex>, next: &Vertex) -> f32 {
+    pub fn pdf_a(&self, scene: &Scene, prev: Option<&Vertex>, next: &Vertex) -> f32 {
         let w = (next.p() - self.p()).normalize_or_zero();
         let pdf_w = match self.kind {
-            VertexKind::Camera => scene.camera.pdf_we(&Ray::new(self.p(), w)).1,
-            VertexKind::Light => return self.pdf_light(scene, next),
+            VertexKind::Camera => scene.camera.pdf_we(&Ray::new(self.p(), w)).pdf_w,
+            VertexKind::Light => return self.pdf_light_a(scene, next),
             VertexKind::Surface => {
                 let Some(prev) = prev else { return 0.0 };
                 let wo = (prev.p() - self.p()).normalize_or_zero();
@@ -276,30 +278,30 @@ impl Vertex {
                     .pdf(fr.to_local(wo), fr.to_local(w), self.it.uv)
             }
         };
-        convert_density(pdf_w, self, next)
+        pdf_w_to_a(pdf_w, self, next)
     }
 
     /// Area density at `next` of a light path that starts at this (light or
     /// emitting surface) vertex and leaves towards `next`: the emission's
     /// `p_ω` converted to area measure.
-    pub fn pdf_light(&self, scene: &Scene, next: &Vertex) -> f32 {
+    pub fn pdf_light_a(&self, scene: &Scene, next: &Vertex) -> f32 {
         if self.light == NO_LIGHT {
             return 0.0;
         }
         let w = (next.p() - self.p()).normalize_or_zero();
-        let (_, pdf_w) = scene.lights[self.light as usize].pdf_le(self.p(), self.it.ng, w);
-        convert_density(pdf_w, self, next)
+        let emission = scene.lights[self.light as usize].pdf_le(self.p(), self.it.ng, w);
+        pdf_w_to_a(emission.pdf_w, self, next)
     }
 
     /// Area density of this point as the origin of a light path:
     /// `P(light) · p_A` of `sample_le`.
-    pub fn pdf_light_origin(&self, scene: &Scene) -> f32 {
+    pub fn pdf_light_origin_a(&self, scene: &Scene) -> f32 {
         if self.light == NO_LIGHT {
             return 0.0;
         }
         let light = &scene.lights[self.light as usize];
-        let (pdf_a, _) = light.pdf_le(self.p(), self.it.ng, self.it.ng);
-        scene.light_pmf(self.light) * pdf_a
+        let emission = light.pdf_le(self.p(), self.it.ng, self.it.ng);
+        scene.light_pmf(self.light) * emission.pdf_a
     }
 }
 
