@@ -33,6 +33,7 @@
 
 use super::Integrator;
 use super::camera_connection::connect_to_camera;
+use super::dimensions::LENS;
 use super::mis_weight::mis_weight;
 use super::nee::{self, LightPoint};
 use super::subpath::{EscapedRay, camera_subpath, light_subpath};
@@ -105,7 +106,7 @@ fn connect(
     }
     if t == 1 {
         // Light tracing: y_{s−1} joined to the lens.
-        let c = connect_to_camera(scene, &light[s - 1], sampler.next_2d())?;
+        let c = connect_to_camera(scene, &light[s - 1], LENS.draw(sampler))?;
         return Some(Connection {
             value: c.value,
             raster: Some(c.camera.raster),

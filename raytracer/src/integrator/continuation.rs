@@ -11,6 +11,7 @@
 //! half of direct lighting, each branch of naive recursion, each bounce of
 //! path tracing, and the random walks of light and bidirectional tracing.
 
+use super::dimensions::{BRDF_DIRECTION, BRDF_LOBE};
 use crate::brdf::{Brdf, BrdfSample, TransportMode};
 use crate::math::{Color, Ray, Vec3A};
 use crate::sampling::Sampler;
@@ -32,9 +33,9 @@ pub struct Continuation {
     pub ray: Ray,
 }
 
-/// Samples the BRDF `brdf` at `it` in transport mode `mode`. Draws three
-/// numbers (lobe, then direction). `None` if the sample carries nothing
-/// (see [`Brdf::sample`]).
+/// Samples the BRDF `brdf` at `it` in transport mode `mode`. Draws
+/// [`BRDF_LOBE`], then [`BRDF_DIRECTION`]. `None` if the sample carries
+/// nothing (see [`Brdf::sample`]).
 #[inline]
 pub fn sample_continuation(
     it: &Interaction,
@@ -43,7 +44,7 @@ pub fn sample_continuation(
     sampler: &mut Sampler,
 ) -> Option<Continuation> {
     let wo = it.frame.to_local(it.wo);
-    let (u_lobe, u) = (sampler.next_1d(), sampler.next_2d());
+    let (u_lobe, u) = (BRDF_LOBE.draw(sampler), BRDF_DIRECTION.draw(sampler));
     let sample = brdf.sample(wo, it.uv, u_lobe, u, mode)?;
     let wi = it.frame.to_world(sample.wi);
     Some(Continuation {

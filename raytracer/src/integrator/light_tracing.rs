@@ -35,6 +35,7 @@
 
 use super::Integrator;
 use super::camera_connection::connect_to_camera;
+use super::dimensions::LENS;
 use super::subpath::light_subpath;
 use super::vertex::{EMPTY_VERTEX, MAX_VERTICES};
 use crate::film::Splat;
@@ -79,7 +80,7 @@ impl Integrator for LightTracer {
         let mut path = [EMPTY_VERTEX; MAX_VERTICES];
         let n = light_subpath(scene, sampler, &mut path, max_vertices, self.rr_depth);
         for q in &path[..n] {
-            let u_lens = sampler.next_2d();
+            let u_lens = LENS.draw(sampler);
             if let Some(c) = connect_to_camera(scene, q, u_lens) {
                 splats.push(Splat {
                     raster: c.camera.raster,

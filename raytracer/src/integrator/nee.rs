@@ -8,6 +8,7 @@
 //! solid angle (the area pdf converted with `dist² / cos θ_light`). Shared by
 //! every integrator that connects a surface point to a light.
 
+use super::dimensions::{LIGHT_CHOICE, LIGHT_POINT};
 use crate::brdf::Brdf;
 use crate::light::LightSample;
 use crate::math::{Color, Vec3A};
@@ -27,17 +28,17 @@ pub struct LightPoint<'a> {
 /// The sampling half of next event estimation, shared by every integrator
 /// that aims at a light (this file's [`sample_light`], and the `s = 1`
 /// strategy of bidirectional tracing): chooses a light with `P(light)` and
-/// samples a point on it as seen from `p`. Draws three numbers (the light's
-/// choice, then the point). `None` if the scene has no light or the sample
-/// carries nothing (zero density or radiance).
+/// samples a point on it as seen from `p`. Draws [`LIGHT_CHOICE`], then
+/// [`LIGHT_POINT`]. `None` if the scene has no light or the sample carries
+/// nothing (zero density or radiance).
 #[inline]
 pub fn sample_light_point<'a>(
     scene: &'a Scene,
     p: Vec3A,
     sampler: &mut Sampler,
 ) -> Option<LightPoint<'a>> {
-    let u_choice = sampler.next_1d();
-    let u = sampler.next_2d();
+    let u_choice = LIGHT_CHOICE.draw(sampler);
+    let u = LIGHT_POINT.draw(sampler);
     let choice = scene.choose_light(u_choice)?;
     let sample = choice.light.sample_li(p, u)?;
     if sample.pdf_w <= 0.0 || sample.li == Color::ZERO {
@@ -50,7 +51,7 @@ pub fn sample_light_point<'a>(
 /// `w_light · f_r · L_e · |cos θ_i| / (P(light) · p(ω_i))`, where `w_light` is
 /// the power heuristic against BRDF sampling if `mis`, else 1.
 ///
-/// Uses three random numbers (light choice, point on the light).
+/// Draws as [`sample_light_point`].
 #[inline]
 pub fn sample_light(
     scene: &Scene,

@@ -13,6 +13,7 @@
 //! to end and one that carries much is likely to go on; it is capped below 1
 //! ([`MAX_SURVIVAL`]) so that even a path in a white furnace ends.
 
+use super::dimensions::ROULETTE;
 use crate::math::Color;
 use crate::sampling::Sampler;
 
@@ -27,12 +28,12 @@ pub const MAX_SURVIVAL: f32 = 0.95;
 /// the media it crossed (1 where that does not apply).
 ///
 /// Returns `Some(q)` if the path goes on (the caller divides its throughput
-/// by `q`), `None` if it ends. Draws one number, and none when `q ≤ 0` (the
-/// path ends for sure).
+/// by `q`), `None` if it ends. Draws [`ROULETTE`], and nothing when `q ≤ 0`
+/// (the path ends for sure).
 #[inline]
 pub fn russian_roulette(throughput: Color, eta_scale: f32, sampler: &mut Sampler) -> Option<f32> {
     let q = (throughput.max_element() * eta_scale).min(MAX_SURVIVAL);
-    if q <= 0.0 || sampler.next_1d() >= q {
+    if q <= 0.0 || ROULETTE.draw(sampler) >= q {
         return None;
     }
     Some(q)

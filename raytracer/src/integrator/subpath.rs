@@ -15,6 +15,7 @@
 //! the only strategy that can then produce such paths, with weight 1).
 
 use super::continuation::sample_continuation;
+use super::dimensions::{EMISSION_DIRECTION, EMISSION_POINT, LIGHT_CHOICE};
 use super::roulette::russian_roulette;
 use super::vertex::{MAX_VERTICES, Subpath, Vertex, pdf_w_to_a};
 use crate::brdf::TransportMode;
@@ -48,7 +49,9 @@ pub struct EscapedRay {
 /// `pdf_fwd_a`, and its predecessor `pdf_rev_a` (the reverse walk's density, the
 /// BRDF's `pdf(ω_i → ω_o)`). Stops at `max_vertices`, at a failed sample or by
 /// Russian roulette after `rr_depth` scattering events (which divides the
-/// survivors' throughput by their probability `q`).
+/// survivors' throughput by their probability `q`). Draws, per surface below
+/// `max_vertices`: a continuation, then (from `rr_depth` on) the roulette's
+/// number.
 #[allow(clippy::too_many_arguments)]
 pub fn random_walk(
     scene: &Scene,
@@ -123,8 +126,8 @@ pub fn random_walk(
 
 /// The camera subpath `z_0 z_1 …` of a pixel sample: `z_0` on the lens with
 /// `β = W_e cos θ / (p_A p_ω) = 1` (a pixel sample's importance is 1), then a
-/// random walk in radiance mode. Uses the sampler's next four numbers for the
-/// primary ray.
+/// random walk in radiance mode. Draws the camera ray's numbers, then the
+/// walk's.
 pub fn camera_subpath(
     scene: &Scene,
     pixel: UVec2,
@@ -163,7 +166,9 @@ pub fn camera_subpath(
 /// applied by whoever leaves it), the walk starts with
 /// `β_1 = L_e(y_0, ω) |cos θ_0| / (P(light) p_A p_ω)`, in importance mode.
 /// Returns the number of vertices (0 if no light path could start, e.g. the
-/// environment was chosen: not supported on the light side).
+/// environment was chosen: not supported on the light side). Draws
+/// [`LIGHT_CHOICE`], [`EMISSION_POINT`] and [`EMISSION_DIRECTION`] (always,
+/// also when no path starts), then the walk's.
 pub fn light_subpath(
     scene: &Scene,
     sampler: &mut Sampler,
@@ -171,8 +176,11 @@ pub fn light_subpath(
     max_vertices: usize,
     rr_depth: u32,
 ) -> usize {
-    let u_choice = sampler.next_1d();
-    let (u_pos, u_dir) = (sampler.next_2d(), sampler.next_2d());
+    let u_choice = LIGHT_CHOICE.draw(sampler);
+    let (u_pos, u_dir) = (
+        EMISSION_POINT.draw(sampler),
+        EMISSION_DIRECTION.draw(sampler),
+    );
     if max_vertices == 0 {
         return 0;
     }
