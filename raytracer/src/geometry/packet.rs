@@ -15,7 +15,7 @@
 
 use super::aabb::InverseDirection;
 use super::bvh::BvhNode;
-use super::triangle::KIND_TRIANGLE;
+use super::primitive::KIND_TRIANGLE;
 use super::{Geometry, Hit};
 use crate::math::{Ray, Vec2, Vec3A, Vec4};
 use glam::BVec4A;

@@ -13,9 +13,9 @@
 
 use super::dimensions::{BRDF_DIRECTION, BRDF_LOBE};
 use crate::brdf::{Brdf, BrdfSample, TransportMode};
+use crate::geometry::Interaction;
 use crate::math::{Color, Ray, Vec3A};
 use crate::sampling::Sampler;
-use crate::scene::Interaction;
 
 /// A continuation sampled at a surface point.
 #[derive(Clone, Copy, Debug)]

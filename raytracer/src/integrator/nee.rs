@@ -10,10 +10,11 @@
 
 use super::dimensions::{LIGHT_CHOICE, LIGHT_POINT};
 use crate::brdf::Brdf;
+use crate::geometry::Interaction;
 use crate::light::LightSample;
 use crate::math::{Color, Vec3A};
 use crate::sampling::{Sampler, power_heuristic};
-use crate::scene::{EmitterHit, Interaction, LightChoice, Scene};
+use crate::scene::{EmitterHit, LightChoice, Scene};
 
 /// A light chosen, and a point on it sampled as seen from a receiver.
 #[derive(Clone, Copy, Debug)]

@@ -43,8 +43,9 @@
 //! normal except smooth meshes).
 
 use crate::frame::Frame;
+use crate::geometry::Interaction;
 use crate::math::{Color, Ray, Vec2, Vec3A};
-use crate::scene::{Interaction, Scene};
+use crate::scene::Scene;
 
 /// Capacity of a subpath buffer (vertices). With unlimited depth Russian
 /// roulette ends paths long before: a path of 64 vertices has survived 63

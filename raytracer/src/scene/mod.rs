@@ -14,7 +14,6 @@ pub mod load;
 pub use builtin::{BUILTIN_SCENES, BuiltinScene, builtin, load_builtin, write_builtin};
 pub use error::SceneError;
 pub use load::{SceneOrigin, load_file, load_str};
-mod interaction;
 
 use crate::brdf::Brdf;
 use crate::camera::{Camera, CameraParams};
@@ -22,7 +21,9 @@ use crate::geometry::{Geometry, Shape};
 use crate::light::{AreaLight, AreaShape, Light};
 use crate::math::{Color, Ray, Vec3A};
 
-pub use interaction::Interaction;
+/// Geometry makes interactions; [`Scene::intersect`] returns them, so they
+/// are named here too (the exercises import them with the scene).
+pub use crate::geometry::Interaction;
 
 /// The largest max depth D a scene file or a command line may ask for.
 pub const MAX_DEPTH_LIMIT: u32 = 65_535;
@@ -236,9 +237,7 @@ impl Scene {
     /// The first surface along `ray`, with everything shading needs.
     #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<Interaction> {
-        let hit = self.geometry.intersect(ray)?;
-        let sp = self.geometry.surface_point(ray, &hit);
-        Some(Interaction::new(sp, hit.t, -ray.d))
+        self.geometry.interaction(ray)
     }
 
     /// Whether nothing blocks `ray` before its `t_max` (a shadow ray).
