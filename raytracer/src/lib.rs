@@ -38,7 +38,8 @@
 //! Arrows point down: a module uses only modules on lower layers, never one
 //! on its own layer or above, so each can be read (and tested) knowing only
 //! what lies below it. `tests/layering.rs` reads the sources and fails on an
-//! import against this order, which it takes from the block below:
+//! import against this order, which it takes from the block below (test code,
+//! `#[cfg(test)]`, may use the whole crate: a scene test may render):
 //!
 //! ```text
 //! 8 stereo metrics

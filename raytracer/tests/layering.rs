@@ -5,9 +5,10 @@
 //! The test reads every source file, drops comments and string literals, and
 //! collects each path that leaves the file's own top-level module:
 //! `crate::x` (also in groups, `use crate::{x, y::z}`) and `super::` chains
-//! that climb out of it. Inline modules (`mod tests { … }`) count as one more
-//! level for `super::`. Test modules inside `src/` obey the same order; a test
-//! that needs a higher module belongs in `tests/`.
+//! that climb out of it. Inline modules (`mod m { … }`) count as one more
+//! level for `super::`. Test code is left out — `#[cfg(test)] mod … { … }`
+//! blocks and files declared `#[cfg(test)] mod …;` — since a test may look at
+//! the whole crate (a scene test may render), as in lesson11's layering test.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -188,6 +189,54 @@ fn strip_comments_and_strings(text: &str) -> String {
     out
 }
 
+/// If `#[cfg(test)]` starts at `toks[i]`, the index just after it.
+fn after_cfg_test(toks: &[(Token, usize)], i: usize) -> Option<usize> {
+    let want = [
+        Token::Other('#'),
+        Token::Other('['),
+        Token::Ident("cfg".into()),
+        Token::Other('('),
+        Token::Ident("test".into()),
+        Token::Other(')'),
+        Token::Other(']'),
+    ];
+    let found = toks.get(i..i + want.len())?;
+    found
+        .iter()
+        .map(|(t, _)| t)
+        .eq(want.iter())
+        .then_some(i + want.len())
+}
+
+/// The index of the `mod` keyword at `toks[i]`, allowing a `pub` or
+/// `pub(…)` before it.
+fn mod_keyword(toks: &[(Token, usize)], mut i: usize) -> Option<usize> {
+    if toks.get(i).map(|t| &t.0) == Some(&Token::Ident("pub".into())) {
+        i += 1;
+        if toks.get(i).map(|t| &t.0) == Some(&Token::Other('(')) {
+            while toks.get(i).is_some_and(|t| t.0 != Token::Other(')')) {
+                i += 1;
+            }
+            i += 1;
+        }
+    }
+    (toks.get(i).map(|t| &t.0) == Some(&Token::Ident("mod".into()))).then_some(i)
+}
+
+/// The modules a file declares as test code (`#[cfg(test)] mod name;`).
+fn test_only_children(code: &str) -> Vec<String> {
+    let toks = tokens(code);
+    (0..toks.len())
+        .filter_map(|i| {
+            let m = mod_keyword(&toks, after_cfg_test(&toks, i)?)?;
+            match (toks.get(m + 1), toks.get(m + 2)) {
+                (Some((Token::Ident(name), _)), Some((Token::Other(';'), _))) => Some(name.clone()),
+                _ => None,
+            }
+        })
+        .collect()
+}
+
 #[derive(Clone, Debug, PartialEq)]
 enum Token {
     Ident(String),
@@ -281,6 +330,28 @@ fn references(code: &str, module: &[String]) -> Vec<(String, usize)> {
     let mut depth = 0usize;
     let mut i = 0;
     while i < toks.len() {
+        // Test code: skip a `#[cfg(test)] mod name { … }` block whole.
+        if let Some(m) = after_cfg_test(&toks, i).and_then(|j| mod_keyword(&toks, j))
+            && toks.get(m + 2).map(|t| &t.0) == Some(&Token::Open)
+        {
+            let mut open = 0;
+            i = m + 2;
+            while i < toks.len() {
+                match toks[i].0 {
+                    Token::Open => open += 1,
+                    Token::Close => {
+                        open -= 1;
+                        if open == 0 {
+                            break;
+                        }
+                    }
+                    _ => {}
+                }
+                i += 1;
+            }
+            i += 1;
+            continue;
+        }
         let (tok, line) = &toks[i];
         match tok {
             Token::Open => depth += 1,
@@ -390,10 +461,30 @@ fn every_module_uses_only_lower_layers() {
     assert!(files.len() > 40, "found only {} source files", files.len());
     let mut problems = Vec::new();
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    for (path, module) in &files {
-        let text = std::fs::read_to_string(path).unwrap();
+    let texts: Vec<String> = files
+        .iter()
+        .map(|(path, _)| std::fs::read_to_string(path).unwrap())
+        .collect();
+    // Files that are test code: declared `#[cfg(test)] mod name;`, and
+    // everything below them.
+    let mut test_only: Vec<Vec<String>> = Vec::new();
+    for ((_, module), text) in files.iter().zip(&texts) {
+        for child in test_only_children(&strip_comments_and_strings(text)) {
+            let mut m = module.clone();
+            m.push(child);
+            test_only.push(m);
+        }
+    }
+    assert!(
+        test_only.iter().any(|m| m == &["brdf", "testing"]),
+        "the test-only files were not recognized: {test_only:?}"
+    );
+    for ((path, module), text) in files.iter().zip(&texts) {
+        if test_only.iter().any(|t| module.starts_with(t)) {
+            continue;
+        }
         let shown = path.strip_prefix(root).unwrap_or(path);
-        problems.extend(violations(&layers, shown, module, &text));
+        problems.extend(violations(&layers, shown, module, text));
     }
     assert!(
         problems.is_empty(),
@@ -426,7 +517,11 @@ fn the_checker_finds_upward_imports_in_every_form() {
             &["scene", "load"],
             "use super::super::render::RenderOptions;",
         ),
-        (&["scene"], "mod tests { use super::super::render::*; }"),
+        (&["scene"], "mod helpers { use super::super::render::*; }"),
+        (
+            &["scene"],
+            "#[cfg(test)] mod tests { } use crate::render::render;",
+        ),
         (&["scene"], "use super::{render};"),
         (&["scene"], "use crate::*;"),
         (&["render"], "use crate::nowhere::Thing;"),
@@ -458,6 +553,14 @@ fn the_checker_finds_upward_imports_in_every_form() {
         ),
         (&["scene"], "mod tests { use super::*; }"),
         (
+            &["scene"],
+            "#[cfg(test)]\nmod tests { use crate::render::render; fn f() { {} } }",
+        ),
+        (
+            &["scene"],
+            "#[cfg(test)] pub(crate) mod t { use crate::{integrator, render}; }",
+        ),
+        (
             &["render"],
             "use crate::{math, scene::{Scene, RenderSettings}};",
         ),
@@ -469,4 +572,8 @@ fn the_checker_finds_upward_imports_in_every_form() {
             "{module:?}: {text}"
         );
     }
+    assert_eq!(
+        test_only_children("#[cfg(test)]\nmod fuzz;\nmod load;\n#[cfg(test)] pub mod testing;"),
+        ["fuzz", "testing"]
+    );
 }
