@@ -7,8 +7,6 @@
 pub mod builtin;
 pub mod error;
 pub mod format;
-#[cfg(test)]
-mod fuzz;
 pub mod load;
 
 pub use builtin::{BUILTIN_SCENES, BuiltinScene, builtin, load_builtin, write_builtin};
