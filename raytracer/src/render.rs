@@ -18,6 +18,9 @@
 //! Passes make the image converge evenly: an interrupted render is a
 //! complete image with fewer samples, not a half-finished one.
 //!
+//! [`render_strategies`] renders the image of each strategy of bidirectional
+//! path tracing apart (the lesson's slides).
+//!
 //! **Interruption.** [`install_interrupt_handler`] makes Ctrl-C, SIGTERM and
 //! SIGHUP set a global flag (a second one quits). The loop checks it before
 //! every pixel sample, and integrators whose samples can be long (naive
@@ -31,11 +34,15 @@
 //! ask for, and [`memory_needed`] with [`MemoryCap`] lets a front-end refuse
 //! an image that would not fit in memory before allocating it.
 
+mod strategies;
+
+pub use strategies::render_strategies;
+
 use crate::film::{Film, FilmTile, Splat};
 use crate::integrator::{Integrator, stop};
 use crate::math::{Color, UVec2};
 use crate::sampling::Sampler;
-use crate::scene::Scene;
+use crate::scene::{RenderSettings, Scene};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::collections::VecDeque;
 use std::io::IsTerminal;
@@ -74,6 +81,18 @@ impl Default for RenderOptions {
             tile_size: 16,
             progress: true,
             label: String::from("render"),
+        }
+    }
+}
+
+impl From<&RenderSettings> for RenderOptions {
+    /// The options a scene asks for: its samples per pixel and seed, the
+    /// defaults for the rest.
+    fn from(settings: &RenderSettings) -> Self {
+        RenderOptions {
+            spp: settings.spp,
+            seed: settings.seed,
+            ..Default::default()
         }
     }
 }
@@ -914,6 +933,25 @@ mod tests {
         assert!(!r.stats.interrupted);
         let r = render_pixels_with_stop(3, 3, &options(0, 1, 0), &stop, |_, _, _| Color::ONE);
         assert_eq!(r.film.image(), crate::film::Image::new(3, 3));
+    }
+
+    #[test]
+    fn options_from_scene_settings() {
+        let settings = RenderSettings {
+            spp: 7,
+            seed: 9,
+            ..Default::default()
+        };
+        let o = RenderOptions::from(&settings);
+        assert_eq!((o.spp, o.seed), (7, 9));
+        assert_eq!(
+            RenderOptions {
+                spp: 16,
+                seed: 0,
+                ..o
+            },
+            RenderOptions::default()
+        );
     }
 
     #[test]

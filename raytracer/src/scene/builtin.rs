@@ -138,8 +138,9 @@ mod tests {
     use crate::math::{Color, Vec3A};
     use crate::scene::load::{build, parse};
 
-    /// Loads a built-in scene without its cubes and meshes (which need the
-    /// geometry module), for the tests that only look at the rest.
+    /// Loads a built-in scene without its cubes and meshes, for the tests
+    /// that only look at the rest (their quads, spheres, materials and lights;
+    /// [`every_builtin_loads`] loads everything).
     fn load_without_meshes(name: &str) -> SceneParts {
         let scene = builtin(name).unwrap();
         let origin = SceneOrigin::Builtin(scene);
@@ -173,7 +174,6 @@ mod tests {
     }
 
     #[test]
-    #[ignore = "needs geometry: Mesh::cube, Mesh::from_obj_str and Mesh::transformed"]
     fn every_builtin_loads() {
         for s in BUILTIN_SCENES {
             let parts = load_builtin(s.name).unwrap_or_else(|e| panic!("{e}"));
@@ -408,7 +408,6 @@ mod tests {
     }
 
     #[test]
-    #[ignore = "needs geometry: Mesh::cube, Mesh::load_obj, Mesh::from_obj_str and Mesh::transformed"]
     fn every_written_scene_loads_back_the_same() {
         let dir = std::env::temp_dir().join(format!("scenefmt-write-all-{}", std::process::id()));
         for s in BUILTIN_SCENES {

@@ -3,7 +3,8 @@
 //! importance sampling.
 
 use anyhow::Result;
-use raytracer::integrator::{Bdpt, render_strategies};
+use raytracer::integrator::Bdpt;
+use raytracer::render::render_strategies;
 
 use crate::page::{Figure, Section};
 use crate::render_files::write_image;
