@@ -10,7 +10,7 @@ use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
 
 use crate::options::create_dir;
-use crate::page::Picture;
+use crate::page::{Picture, seconds_text};
 
 /// Renders and writes `dir/stem.png`, `dir/stem.exr` and `dir/stem-variance.exr`,
 /// then prints one summary line. An interrupted render (Ctrl-C) still writes
@@ -44,9 +44,10 @@ pub fn render_to_files(
     let stats = &result.stats;
     let seconds = stats.elapsed.as_secs_f64();
     println!(
-        "  wrote {} and .exr ({} spp, {seconds:.2} s)",
+        "  wrote {} and .exr ({} spp, {})",
         png.display(),
-        options.spp
+        options.spp,
+        seconds_text(seconds)
     );
     if stats.nonfinite > 0 {
         println!(
@@ -63,22 +64,37 @@ pub fn render_to_files(
     Ok(Picture {
         png,
         exr,
-        seconds,
         spp: options.spp,
+        exposure,
+        seconds: Some(seconds),
     })
 }
 
-/// Writes an image computed outside `render` as `dir/stem.png` and
-/// `dir/stem.exr`, recorded as a picture of `spp` samples per pixel.
-pub fn write_image(dir: &Path, stem: &str, image: &Image, spp: u32) -> Result<Picture> {
+/// Writes an image computed outside `render` as `dir/stem.png` (at
+/// `exposure` stops) and `dir/stem.exr`, recorded as a picture of `spp`
+/// samples per pixel that took `seconds` to render (`None` if it was not
+/// one render of its own).
+pub fn write_image(
+    dir: &Path,
+    stem: &str,
+    image: &Image,
+    spp: u32,
+    exposure: f32,
+    seconds: Option<f64>,
+) -> Result<Picture> {
     let png = dir.join(format!("{stem}.png"));
     let exr = dir.join(format!("{stem}.exr"));
-    image.write_png(&png, 0.0)?;
-    image.write_exr(&exr)?;
+    image
+        .write_png(&png, exposure)
+        .with_context(|| format!("cannot write {}", png.display()))?;
+    image
+        .write_exr(&exr)
+        .with_context(|| format!("cannot write {}", exr.display()))?;
     Ok(Picture {
         png,
         exr,
-        seconds: 0.0,
         spp,
+        exposure,
+        seconds,
     })
 }
