@@ -29,8 +29,10 @@ pub struct Reference {
     pub variance: Image,
     /// Samples per pixel at its own size.
     pub spp: u32,
-    /// Who made it, for captions: "Mitsuba 3.9.1, 2048 spp, max depth 65".
+    /// Who made it, for tables: "Mitsuba 3.9.1, 2048 spp".
     pub source: String,
+    /// What captions call it: "Mitsuba 3's image".
+    pub name: &'static str,
 }
 
 impl Reference {
@@ -61,6 +63,7 @@ impl Reference {
             variance: downsample(&self.variance, k, 2),
             spp: self.spp,
             source: self.source.clone(),
+            name: self.name,
         })
     }
 }
@@ -104,6 +107,7 @@ pub fn mitsuba_cornell() -> Result<Reference> {
         variance: read(&dir.join("cornell-mitsuba-variance.exr"))?,
         spp: 2048,
         source: "Mitsuba 3.9.1, 2048 spp".into(),
+        name: "Mitsuba 3's image",
     })
 }
 
@@ -213,6 +217,7 @@ impl StoredSettings {
                 "our bidirectional path tracer, another seed, {} spp (stored)",
                 self.spp
             ),
+            name: "the stored reference",
         })
     }
 
@@ -275,6 +280,7 @@ pub fn render_now(scene: &Scene, base: &RenderOptions, max_depth: u32, spp: u32)
         variance: film.variance_image(),
         spp,
         source: format!("our bidirectional path tracer, another seed, {spp} spp (rendered now)"),
+        name: "a reference rendered now with another seed",
     }
 }
 
@@ -339,6 +345,7 @@ mod tests {
             variance,
             spp: 1,
             source: String::new(),
+            name: "",
         };
         let half = r.at_size(2, 1).unwrap();
         // (0 + 1 + 4 + 5) / 4 and (2 + 3 + 6 + 7) / 4.

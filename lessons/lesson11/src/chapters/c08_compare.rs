@@ -152,7 +152,7 @@ fn render(tour: &Tour) -> Result<Section> {
             let caption = format!(
                 "{name}, {}, equal time, max depth {max_depth}: RMSE {:.5} against {} (noise floor \
                  {floor:.5}).",
-                row.algorithm, row.rmse, reference.source
+                row.algorithm, row.rmse, reference.name
             );
             c.section
                 .figures
