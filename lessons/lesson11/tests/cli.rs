@@ -270,10 +270,10 @@ fn naive_captions_state_the_rays_of_naive_rays_csv() {
         let row = row.unwrap_or_else(|| panic!("naive-rays.csv has no row for {stem}: {csv}"));
         let measured = f
             .caption
-            .split(" rays per pixel sample, measured")
-            .next()
-            .and_then(|s| s.rsplit(' ').next())
-            .unwrap();
+            .split("Measured: ")
+            .nth(1)
+            .and_then(|s| s.split(' ').next())
+            .unwrap_or_else(|| panic!("{stem}: no measured rays in `{}`", f.caption));
         assert_eq!(measured, row[2], "{stem}: `{}`", f.caption);
         let bound = f
             .caption

@@ -633,9 +633,10 @@ fn section_text(args: &StereoArgs, convergence: f32) -> String {
          look smaller and deeper, too large looks wrong, too small looks flat: tune it for each \
          scene. Both eyes use the same random numbers, so their noise matches and does not \
          shimmer. The anaglyphs are mixed in linear RGB, before sRGB encoding, because filters \
-         and screens act on light, which adds linearly. Look at the near red ball: it has almost \
-         no green or blue, so through the cyan filter the right eye hardly sees it (the filtered \
-         views show each eye's share as brightness) and the two eyes see different shapes. \
+         and screens act on light, which adds linearly. Look at the near red ball: it has little \
+         green or blue, so through the cyan filter the right eye sees it dark and the left eye \
+         bright (the filtered views show what each eye gets, as brightness): the eyes see \
+         different pictures and struggle to fuse them. \
          Desaturating both frames a little before mixing (here by 0.5) brings it back at the cost \
          of colour; half-colour and grey anaglyphs do the same, and Dubois' matrices keep the \
          most colour. Filters that leak let part of the other frame through: the doubled edges of \

@@ -150,19 +150,19 @@ fn render(tour: &Tour) -> Result<Section> {
     let verdict = if gap > 4.0 * se {
         format!(
             ", biased: {lower:.0} % darker than the roulette picture (mean {:.4}), the light of \
-             the paths it cut, small but not zero:",
+             the paths it cut, small but not zero.",
             roulette_b.mean
         )
     } else {
         format!(
             ", biased, though at {} spp the difference from the roulette picture (mean {:.4}) is \
-             still within the noise:",
+             still within the noise.",
             cut_spp_used, roulette_b.mean
         )
     };
     let figures = &mut s.section.figures;
     let n = figures.len();
-    figures[n - 1].caption = figures[n - 1].caption.replacen(", biased:", &verdict, 1);
+    figures[n - 1].caption = figures[n - 1].caption.replacen(", biased.", &verdict, 1);
     figures.swap(n - 2, n - 1);
     table.rows.push(row(
         &cutoff,
@@ -286,7 +286,7 @@ fn picture(
         &tour.out,
         &picture,
         &format!(
-            "{caption}: {} rays per pixel sample, measured{bound}; mean of the image {mean:.4}.",
+            "{caption}. Measured: {} rays per pixel sample{bound}; mean of the image {mean:.4}.",
             rays_text(per_sample)
         ),
     ));
