@@ -24,7 +24,7 @@ pub const CHAPTER: Chapter = Chapter::new(
 /// The throughput below which the cut-off picture stops recursing. With
 /// N = 4 on the Cornell box, 0.01 drops 6 % of the light (the image's mean,
 /// measured), too little to see through the noise of BRDF sampling; 0.05
-/// drops 15 % at 16 rays per pixel sample.
+/// drops 14 % at 16 rays per pixel sample.
 const CUTOFF: f32 = 0.05;
 
 /// Mitsuba's max depth: in practice unlimited, so that only the cut-off or
