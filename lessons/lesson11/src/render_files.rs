@@ -1,7 +1,7 @@
 //! Rendering to files: PNG to look at, EXR to measure, and the variance of
 //! each pixel's mean, written where a chapter or a command asks.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
 use raytracer::film::Image;
@@ -70,6 +70,25 @@ pub fn render_to_files(
     })
 }
 
+/// Writes `image` as `dir/stem.png` (at `exposure` stops, to look at) and
+/// `dir/stem.exr` (linear, to measure); returns the two paths.
+pub fn write_png_and_exr(
+    dir: &Path,
+    stem: &str,
+    image: &Image,
+    exposure: f32,
+) -> Result<(PathBuf, PathBuf)> {
+    let png = dir.join(format!("{stem}.png"));
+    let exr = dir.join(format!("{stem}.exr"));
+    image
+        .write_png(&png, exposure)
+        .with_context(|| format!("cannot write {}", png.display()))?;
+    image
+        .write_exr(&exr)
+        .with_context(|| format!("cannot write {}", exr.display()))?;
+    Ok((png, exr))
+}
+
 /// Writes an image computed outside `render` as `dir/stem.png` (at
 /// `exposure` stops) and `dir/stem.exr`, recorded as a picture of `spp`
 /// samples per pixel that took `seconds` to render (`None` if it was not
@@ -82,14 +101,7 @@ pub fn write_image(
     exposure: f32,
     seconds: Option<f64>,
 ) -> Result<Picture> {
-    let png = dir.join(format!("{stem}.png"));
-    let exr = dir.join(format!("{stem}.exr"));
-    image
-        .write_png(&png, exposure)
-        .with_context(|| format!("cannot write {}", png.display()))?;
-    image
-        .write_exr(&exr)
-        .with_context(|| format!("cannot write {}", exr.display()))?;
+    let (png, exr) = write_png_and_exr(dir, stem, image, exposure)?;
     Ok(Picture {
         png,
         exr,

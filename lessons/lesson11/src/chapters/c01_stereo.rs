@@ -14,7 +14,7 @@ use raytracer::stereo::{Anaglyph, Composite, Eye, LightField, StereoRig, crossta
 use crate::integrators::{IntegratorArgs, IntegratorKind};
 use crate::options::{SceneArgs, create_dir};
 use crate::page::{Figure, Page, Section};
-use crate::render_files::render_to_files;
+use crate::render_files::{render_to_files, write_png_and_exr};
 use crate::tour::{Chapter, ChapterOptions, Quality, Tour};
 
 pub const CHAPTER: Chapter = Chapter {
@@ -219,14 +219,7 @@ fn save(
     exposure: f32,
     caption: String,
 ) -> Result<Figure> {
-    let png = dir.join(format!("{stem}.png"));
-    let exr = dir.join(format!("{stem}.exr"));
-    image
-        .write_png(&png, exposure)
-        .with_context(|| format!("cannot write {}", png.display()))?;
-    image
-        .write_exr(&exr)
-        .with_context(|| format!("cannot write {}", exr.display()))?;
+    let (png, exr) = write_png_and_exr(dir, stem, image, exposure)?;
     println!("  wrote {} and .exr", png.display());
     Ok(Figure::image(page_root, &png, &exr, caption))
 }

@@ -12,7 +12,7 @@ use raytracer::metrics::{z_test, z_threshold};
 use crate::page::{Figure, Picture, Section};
 use crate::plots::zmap_image;
 use crate::reference::{MITSUBA_MAX_DEPTH, mitsuba_cornell};
-use crate::render_files::write_image;
+use crate::render_files::{write_image, write_png_and_exr};
 use crate::tour::{Chapter, ChapterOutput, Tour};
 
 pub const CHAPTER: Chapter = Chapter::new(
@@ -177,12 +177,7 @@ fn against_mitsuba(tour: &Tour, s: &mut ChapterOutput, ours: &Image, path: &Pict
     let threshold = z_threshold(tests, ALPHA) as f32;
     let scale = threshold.ceil().max(z.max_abs_z.min(2.0 * threshold).ceil());
     let map = zmap_image(&z, w, h, scale, threshold);
-    let png = s.dir.join("cornell-zmap.png");
-    let exr = s.dir.join("cornell-zmap.exr");
-    map.write_png(&png, 0.0)
-        .with_context(|| format!("cannot write {}", png.display()))?;
-    map.write_exr(&exr)
-        .with_context(|| format!("cannot write {}", exr.display()))?;
+    let (png, exr) = write_png_and_exr(&s.dir, "cornell-zmap", &map, 0.0)?;
     let verdict = if z.max_abs_z < threshold {
         "below the threshold: every difference is what noise explains"
     } else {
