@@ -3,7 +3,7 @@
 use raytracer::light::Light;
 use raytracer::math::{Color, Vec3A};
 use raytracer::sampling::Sampler;
-use raytracer::scene::{Interaction, Scene};
+use raytracer::scene::{Interaction, LightChoice, Scene};
 
 /// `p_ω = p_A · ‖x − y‖² / |cos θ_y|`.
 pub fn area_pdf_to_solid_angle(pdf_area: f32, x: Vec3A, y: Vec3A, n_y: Vec3A) -> f32 {
@@ -20,7 +20,7 @@ pub fn area_pdf_to_solid_angle(pdf_area: f32, x: Vec3A, y: Vec3A, n_y: Vec3A) ->
 pub fn estimate_direct(scene: &Scene, it: &Interaction, sampler: &mut Sampler) -> Color {
     let u_choice = sampler.next_1d();
     let u = sampler.next_2d();
-    let Some((_, light, pmf)) = scene.choose_light(u_choice) else {
+    let Some(LightChoice { light, pmf, .. }) = scene.choose_light(u_choice) else {
         return Color::ZERO;
     };
     let (wi, le, pdf_w, shadow) = match light {

@@ -12,7 +12,7 @@
 //! `[-tan(fov/2)·aspect, tan(fov/2)·aspect] × [-tan(fov/2), tan(fov/2)]` (the
 //! fov is vertical), shifted by `shift` for an off-axis (asymmetric) frustum.
 
-use crate::math::{PI, Ray, Vec2, Vec3A};
+use crate::math::{PI, Ray, RayPdf, Vec2, Vec3A};
 use crate::sampling::warp::concentric_disk;
 
 /// What a scene file says about the camera.
@@ -212,18 +212,21 @@ impl Camera {
         1.0 / (self.image_area * self.lens_area() * cos2 * cos2)
     }
 
-    /// Densities of a ray leaving the lens: `(pdf_a, pdf_w)`, the lens point
-    /// per unit area and the direction per unit solid angle
-    /// (`1/(A cos³θ)`, the image window mapped to directions).
-    pub fn pdf_we(&self, ray: &Ray) -> (f32, f32) {
+    /// Densities of a ray leaving the lens: the lens point per unit area
+    /// (`1/A_lens`) and the direction per unit solid angle (`1/(A cos³θ)`,
+    /// the image window mapped to directions); zero off the film.
+    pub fn pdf_we(&self, ray: &Ray) -> RayPdf {
         let cos = ray.d.dot(self.forward);
         if cos <= 0.0 || self.raster_of(ray.o + ray.d, ray.o).is_none() {
-            return (0.0, 0.0);
+            return RayPdf {
+                pdf_a: 0.0,
+                pdf_w: 0.0,
+            };
         }
-        (
-            1.0 / self.lens_area(),
-            1.0 / (self.image_area * cos * cos * cos),
-        )
+        RayPdf {
+            pdf_a: 1.0 / self.lens_area(),
+            pdf_w: 1.0 / (self.image_area * cos * cos * cos),
+        }
     }
 
     /// Connects the scene point `p` to the lens (light tracing, and the t = 1
@@ -338,7 +341,7 @@ mod tests {
                 let d_area = c.image_area / (n * n) as f32;
                 let d_omega = d_area * cos * cos * cos;
                 sum += (c.we(&ray) * cos * d_omega) as f64;
-                let (pdf_a, pdf_w) = c.pdf_we(&ray);
+                let RayPdf { pdf_a, pdf_w } = c.pdf_we(&ray);
                 assert_eq!(pdf_a, 1.0);
                 assert!((pdf_w * d_omega * (n * n) as f32 - 1.0).abs() < 1e-3);
             }

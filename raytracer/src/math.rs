@@ -74,6 +74,18 @@ impl Ray {
     }
 }
 
+/// The densities with which a ray leaving a lens or a light was generated:
+/// its origin per unit area and its direction per unit solid angle, kept
+/// apart (bidirectional MIS converts the direction's density to area
+/// measure at whatever the ray reaches).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RayPdf {
+    /// Density of the origin per unit area.
+    pub pdf_a: f32,
+    /// Density of the direction per unit solid angle.
+    pub pdf_w: f32,
+}
+
 /// Pushes a surface point off its surface, to the side of `ng` where `d` points.
 ///
 /// Floating-point hit points lie a little above or below the true surface, so a

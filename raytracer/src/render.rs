@@ -23,6 +23,9 @@
 //! complete the film is, bit for bit, the film of a render of `16·k` spp: its
 //! first units are the same units, merged in the same order.
 //!
+//! [`render_strategies`] renders the image of each strategy of bidirectional
+//! path tracing apart (the lesson's slides).
+//!
 //! **Interruption.** [`install_interrupt_handler`] makes Ctrl-C, SIGTERM and
 //! SIGHUP set a global flag (a second one quits). The loop checks it before
 //! every pixel sample, and integrators whose samples can be long (naive
@@ -36,11 +39,15 @@
 //! ask for, and [`memory_needed`] with [`MemoryCap`] lets a front-end refuse
 //! an image that would not fit in memory before allocating it.
 
+mod strategies;
+
+pub use strategies::render_strategies;
+
 use crate::film::{Film, FilmTile, Splat};
 use crate::integrator::{Integrator, stop};
 use crate::math::{Color, UVec2};
 use crate::sampling::Sampler;
-use crate::scene::Scene;
+use crate::scene::{RenderSettings, Scene};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::collections::VecDeque;
 use std::io::IsTerminal;
@@ -79,6 +86,18 @@ impl Default for RenderOptions {
             tile_size: 16,
             progress: true,
             label: String::from("render"),
+        }
+    }
+}
+
+impl From<&RenderSettings> for RenderOptions {
+    /// The options a scene asks for: its samples per pixel and seed, the
+    /// defaults for the rest.
+    fn from(settings: &RenderSettings) -> Self {
+        RenderOptions {
+            spp: settings.spp,
+            seed: settings.seed,
+            ..Default::default()
         }
     }
 }
@@ -1000,6 +1019,25 @@ mod tests {
         assert!(!r.stats.interrupted);
         let r = render_pixels_with_stop(3, 3, &options(0, 1, 0), &stop, |_, _, _| Color::ONE);
         assert_eq!(r.film.image(), crate::film::Image::new(3, 3));
+    }
+
+    #[test]
+    fn options_from_scene_settings() {
+        let settings = RenderSettings {
+            spp: 7,
+            seed: 9,
+            ..Default::default()
+        };
+        let o = RenderOptions::from(&settings);
+        assert_eq!((o.spp, o.seed), (7, 9));
+        assert_eq!(
+            RenderOptions {
+                spp: 16,
+                seed: 0,
+                ..o
+            },
+            RenderOptions::default()
+        );
     }
 
     #[test]

@@ -5,9 +5,9 @@
 //! and its false-failure probability under the normal approximation.
 
 use raytracer::film::Film;
-use raytracer::integrator::{Bdpt, Integrator, LightTracer, PathTracer, render_strategies};
+use raytracer::integrator::{Bdpt, Integrator, LightTracer, PathTracer};
 use raytracer::metrics::{z_test, z_threshold};
-use raytracer::render::{RenderOptions, render, render_pixels};
+use raytracer::render::{RenderOptions, render, render_pixels, render_strategies};
 use raytracer::scene::Scene;
 
 fn options(spp: u32, seed: u64, threads: Option<usize>) -> RenderOptions {

@@ -5,6 +5,39 @@
 
 use crate::math::Vec3A;
 
+/// A ray's direction prepared for slab tests: its reciprocal `1/d`, and on
+/// which side it enters each slab. The one place where the BVH traversals
+/// (binary, four-wide, packets) compute them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InverseDirection {
+    /// `1/d`, with components of `d` smaller than 1e-30 in magnitude first
+    /// replaced by ±1e-30 of the same sign: the slab distances are then ±huge
+    /// instead of `0 · ∞ = NaN` for a ray that starts on a slab's plane.
+    pub inv_d: Vec3A,
+    /// Per axis, 1 if the ray runs towards −∞ along it (it enters a slab at
+    /// the slab's maximum plane), else 0. Taken from the sign of `inv_d`, so
+    /// the two always agree: a component −0.0 counts as negative, as its
+    /// reciprocal −1e30 does (`d.x < 0.0` would say positive and pick the
+    /// planes the wrong way round).
+    pub negative: [usize; 3],
+}
+
+impl InverseDirection {
+    #[inline(always)]
+    pub fn new(d: Vec3A) -> Self {
+        let tiny = Vec3A::splat(1e-30);
+        let inv_d = Vec3A::select(d.abs().cmplt(tiny), tiny.copysign(d), d).recip();
+        InverseDirection {
+            inv_d,
+            negative: [
+                (inv_d.x < 0.0) as usize,
+                (inv_d.y < 0.0) as usize,
+                (inv_d.z < 0.0) as usize,
+            ],
+        }
+    }
+}
+
 /// The box `[min, max]` (component-wise). The empty box has `min = +∞`,
 /// `max = -∞`, so that growing it by anything gives that thing.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -106,7 +139,8 @@ impl Aabb {
         p.cmpge(self.min).all() && p.cmple(self.max).all()
     }
 
-    /// Slab test: the ray `o + t·d` (given by `inv_d = 1/d`) overlaps the box
+    /// Slab test: the ray `o + t·d` (given by `inv_d = 1/d`, see
+    /// [`InverseDirection`]) overlaps the box
     /// for `t ∈ [t_near, t_far]` with `t_near = max_k min(t0_k, t1_k)` and
     /// `t_far = min_k max(t0_k, t1_k)`, where `t{0,1}_k = (min_k|max_k − o_k)/d_k`
     /// are the distances to the two planes of slab `k`. Returns that interval
@@ -172,5 +206,22 @@ mod tests {
             .intersect_ray(Vec3A::ZERO, d.recip(), 0.0, f32::INFINITY)
             .unwrap();
         assert_eq!(near, 0.0);
+    }
+
+    /// Zero components give ±1e30 with the sign of the zero, and the entry
+    /// side follows that sign; a ray along an axis, starting inside the
+    /// other slabs, enters the box.
+    #[test]
+    fn inverse_direction_keeps_the_sign_of_zero() {
+        let down = InverseDirection::new(-Vec3A::Y);
+        assert_eq!(down.inv_d, Vec3A::new(-1e30, -1.0, -1e30));
+        assert_eq!(down.negative, [1, 1, 1]);
+        let up = InverseDirection::new(Vec3A::Y);
+        assert_eq!(up.inv_d, Vec3A::new(1e30, 1.0, 1e30));
+        assert_eq!(up.negative, [0, 0, 0]);
+        let b = Aabb::new(Vec3A::splat(-1.0), Vec3A::splat(1.0));
+        let o = Vec3A::new(0.3, 5.0, 0.2);
+        let (near, far) = b.intersect_ray(o, down.inv_d, 0.0, f32::INFINITY).unwrap();
+        assert_eq!((near, far), (4.0, 6.0));
     }
 }

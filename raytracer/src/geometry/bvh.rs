@@ -39,7 +39,7 @@
 
 use rayon::prelude::*;
 
-use super::aabb::Aabb;
+use super::aabb::{Aabb, InverseDirection};
 use crate::math::{Vec3A, Vec4};
 
 /// Number of bins per axis for the SAH sweep.
@@ -435,10 +435,7 @@ impl Bvh {
         let Some(root) = nodes.first() else {
             return;
         };
-        // 1/d with zero components replaced by tiny ones of the same sign, so
-        // that the slab distances are ±huge instead of 0·∞ = NaN.
-        let tiny = Vec3A::splat(1e-30);
-        let inv_d = Vec3A::select(d.abs().cmplt(tiny), tiny.copysign(d), d).recip();
+        let inv_d = InverseDirection::new(d).inv_d;
         // Slab test of a node: the entry distance, or +∞ for a miss.
         let enter = |n: &BvhNode, t_max: f32| -> f32 {
             let t0 = (Vec3A::from_vec4(n.lo) - o) * inv_d;

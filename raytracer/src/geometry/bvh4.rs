@@ -13,6 +13,7 @@
 //! structure-of-arrays: `bounds[2k]` holds the four children's minima along
 //! axis `k`, `bounds[2k + 1]` their maxima.
 
+use super::aabb::InverseDirection;
 use super::bvh::{Bvh, BvhNode};
 use crate::math::{Vec3A, Vec4};
 
@@ -86,16 +87,14 @@ impl Bvh4 {
         if nodes.is_empty() {
             return;
         }
-        let tiny = Vec3A::splat(1e-30);
-        let inv_d = Vec3A::select(d.abs().cmplt(tiny), tiny.copysign(d), d).recip();
-        // With d_k ≥ 0 the ray enters slab k at its minimum plane, otherwise
-        // at its maximum: picking the planes once per ray saves the min/max
-        // of the two plane distances per box.
-        let (sx, sy, sz) = (
-            (d.x < 0.0) as usize,
-            (d.y < 0.0) as usize,
-            (d.z < 0.0) as usize,
-        );
+        // Moving in +k the ray enters slab k at its minimum plane, in −k at
+        // its maximum: picking the planes once per ray saves the min/max of
+        // the two plane distances per box. The side comes from the sign of
+        // 1/d, so a −0.0 component picks the planes its −1e30 needs.
+        let InverseDirection {
+            inv_d,
+            negative: [sx, sy, sz],
+        } = InverseDirection::new(d);
         let (ox, oy, oz) = (Vec4::splat(o.x), Vec4::splat(o.y), Vec4::splat(o.z));
         let (ix, iy, iz) = (
             Vec4::splat(inv_d.x),

@@ -16,8 +16,10 @@
 pub mod aabb;
 pub mod bvh;
 pub mod bvh4;
+mod interaction;
 pub mod mesh;
 mod packet;
+pub mod primitive;
 pub mod quad;
 pub mod sphere;
 pub mod transform;
@@ -35,6 +37,7 @@ use crate::math::{Ray, Vec2, Vec3A};
 pub use aabb::Aabb;
 pub use bvh::Bvh;
 pub use bvh4::Bvh4;
+pub use interaction::Interaction;
 pub use mesh::{Mesh, MeshError};
 pub use quad::Quad;
 pub use sphere::Sphere;
@@ -91,13 +94,12 @@ struct PrimSource {
 /// triangle of every mesh, every sphere, every quad).
 ///
 /// The binary SAH tree ([`Bvh`]) is collapsed into a four-wide one
-/// ([`Bvh4`]) for single rays (about 1.4× the throughput of the binary tree
-/// on the primary rays of `lesson11 bench-rays`); coherent rays can also be
-/// traced four or sixteen at a time through the binary tree
-/// ([`Geometry::intersect4`], [`Geometry::intersect16`]: about 1.7-1.9× the
-/// single-ray throughput for primary rays of a mesh of 80k triangles).
+/// ([`Bvh4`]) for single rays; coherent rays can also be traced four or
+/// sixteen at a time through the binary tree ([`Geometry::intersect4`],
+/// [`Geometry::intersect16`]). What each gains is measured in the README's
+/// performance section (`lesson11 bench`).
 ///
-/// Primitive data is stored in BVH leaf order ([`triangle::PrimRecord`]); a
+/// Primitive data is stored in BVH leaf order ([`primitive::PrimRecord`]); a
 /// [`Hit::prim`] is an index into that order, and [`Geometry::surface_point`]
 /// maps it back to the shape.
 #[derive(Clone, Debug)]
@@ -107,7 +109,7 @@ pub struct Geometry {
     /// The binary tree (its `order` dropped), traversed by ray packets.
     binary: Bvh,
     bvh: Bvh4,
-    prims: Vec<triangle::PrimRecord>,
+    prims: Vec<primitive::PrimRecord>,
     sources: Vec<PrimSource>,
 }
 
@@ -115,13 +117,13 @@ pub struct Geometry {
 /// accept edge parameters a hair outside `[0, 1]` (see `QUAD_EPS`), a quad's
 /// corners `origin + e1 + e2` are rounded, and slab tests round too; hits
 /// near the edges must still lie inside the boxes traversal tests.
-fn padded_bounds(r: &triangle::PrimRecord) -> Aabb {
+fn padded_bounds(r: &primitive::PrimRecord) -> Aabb {
     let a = Vec3A::from_vec4(r.a);
     let b = Vec3A::from_vec4(r.b);
     let c = Vec3A::from_vec4(r.c);
     let bounds = match r.kind() {
-        triangle::KIND_SPHERE => Aabb::new(a - Vec3A::splat(r.b.x), a + Vec3A::splat(r.b.x)),
-        triangle::KIND_QUAD => {
+        primitive::KIND_SPHERE => Aabb::new(a - Vec3A::splat(r.b.x), a + Vec3A::splat(r.b.x)),
+        primitive::KIND_QUAD => {
             let mut bb = Aabb::new(a, a + b);
             bb.grow(a + c);
             bb.grow(a + b + c);
@@ -150,14 +152,14 @@ impl Geometry {
             let shape_id = s as u32;
             match shape {
                 Shape::Sphere(sp) => {
-                    records.push(triangle::PrimRecord::sphere(sp.center, sp.radius));
+                    records.push(primitive::PrimRecord::sphere(sp.center, sp.radius));
                     sources.push(PrimSource {
                         shape: shape_id,
                         local: 0,
                     });
                 }
                 Shape::Quad(q) => {
-                    records.push(triangle::PrimRecord::quad(q.origin, q.e1, q.e2));
+                    records.push(primitive::PrimRecord::quad(q.origin, q.e1, q.e2));
                     sources.push(PrimSource {
                         shape: shape_id,
                         local: 0,
@@ -166,7 +168,7 @@ impl Geometry {
                 Shape::Mesh(m) => {
                     let p = &m.positions;
                     records.par_extend(m.indices.par_iter().map(|&[a, b, c]| {
-                        triangle::PrimRecord::triangle(
+                        primitive::PrimRecord::triangle(
                             p[a as usize].into(),
                             p[b as usize].into(),
                             p[c as usize].into(),
@@ -281,6 +283,15 @@ impl Geometry {
             }
         }
         best
+    }
+
+    /// The first surface along `ray` as an [`Interaction`]: the closest hit
+    /// with its surface point, seen from the ray (`ω_o = −d`).
+    #[inline]
+    pub fn interaction(&self, ray: &Ray) -> Option<Interaction> {
+        let hit = self.intersect(ray)?;
+        let sp = self.surface_point(ray, &hit);
+        Some(Interaction::new(sp, hit.t, -ray.d))
     }
 
     /// Position, normals, texture coordinates and shape of a hit found by

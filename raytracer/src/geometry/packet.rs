@@ -13,8 +13,9 @@
 //! simply carry on with their lanes masked off. Each ray gets exactly the
 //! hit [`Geometry::intersect`] would give it (same arithmetic per lane).
 
+use super::aabb::InverseDirection;
 use super::bvh::BvhNode;
-use super::triangle::KIND_TRIANGLE;
+use super::primitive::KIND_TRIANGLE;
 use super::{Geometry, Hit};
 use crate::math::{Ray, Vec2, Vec3A, Vec4};
 use glam::BVec4A;
@@ -99,10 +100,9 @@ fn triangle4(v: [Vec3A; 3], r: &Rays4, t_max: Vec4) -> (BVec4A, Vec4, Vec4, Vec4
 
 impl Rays4 {
     fn new(rays: &[Ray]) -> Rays4 {
-        let tiny = Vec3A::splat(1e-30);
         let lane =
             |f: &dyn Fn(&Ray) -> f32| Vec4::new(f(&rays[0]), f(&rays[1]), f(&rays[2]), f(&rays[3]));
-        let inv = |r: &Ray| Vec3A::select(r.d.abs().cmplt(tiny), tiny.copysign(r.d), r.d).recip();
+        let inv = |r: &Ray| InverseDirection::new(r.d).inv_d;
         Rays4 {
             o: [lane(&|r| r.o.x), lane(&|r| r.o.y), lane(&|r| r.o.z)],
             d: [lane(&|r| r.d.x), lane(&|r| r.d.y), lane(&|r| r.d.z)],

@@ -6,6 +6,7 @@
 //! produces. The estimate of `(1/π) ∫ V(x, ω) cos θ dω` with cosine-weighted
 //! directions is simply the fraction of rays that escape within `distance`.
 
+use super::dimensions::AO_DIRECTION;
 use super::{Integrator, camera_ray};
 use crate::film::Splat;
 use crate::math::{Color, UVec2};
@@ -46,7 +47,7 @@ impl Integrator for AmbientOcclusion {
         } else {
             it.frame
         };
-        let d = frame.to_world(warp::cosine_hemisphere(sampler.next_2d()));
+        let d = frame.to_world(warp::cosine_hemisphere(AO_DIRECTION.draw(sampler)));
         let mut occlusion_ray = it.spawn_ray(d);
         occlusion_ray.t_max = self.distance;
         if scene.unoccluded(&occlusion_ray) {

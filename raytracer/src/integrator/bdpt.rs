@@ -8,16 +8,17 @@
 //! - `s = 0`: the camera subpath itself hits a light, `C = β_z · L_e`
 //!   (what a path tracer without next event estimation does);
 //! - `s = 1`: next event estimation — the light vertex is *resampled* from
-//!   `z_{t−1}` with `sample_li` (as pbrt does; it is a better point than
-//!   `y_0`), `C = β_z f_r |cos θ| L_i / (P(light) p_ω)`;
+//!   `z_{t−1}` by the path tracer's own light sampling
+//!   ([`nee::sample_light_point`]; pbrt does the same: it is a better point
+//!   than `y_0`), `C = β_z f_r |cos θ| L_i / (P(light) p_ω)`;
 //! - `t = 1`: light tracing — `y_{s−1}` joined to a new lens point and
-//!   splatted where it lands ([`vertex::connect_to_camera`]);
+//!   splatted where it lands ([`connect_to_camera`]);
 //! - otherwise: `C = β_y f_r(y_{s−2} → y_{s−1} → z_{t−1}) G(y_{s−1}, z_{t−1})
 //!   f_r(y_{s−1} → z_{t−1} → z_{t−2}) β_z`, with the geometry term
 //!   `G = V |cos θ_y| |cos θ_z| / d²`.
 //!
 //! Every `C` is weighted by the power heuristic over all strategies that
-//! could have generated the same path ([`vertex::mis_weight`]), so the sum
+//! could have generated the same path ([`mis_weight`]), so the sum
 //! over `(s, t)` is an unbiased estimate that keeps the best of each: NEE for
 //! small lights, light tracing for caustics seen through diffuse surfaces,
 //! hitting for large lights and glossy paths.
@@ -26,16 +27,19 @@
 //! `s + t ≤ D + 1`; the camera subpath keeps at most `D + 1` vertices, the
 //! light subpath at most `D`.
 //!
-//! For the lesson, [`render_strategies`] renders the contribution of each
-//! `(s, t)` separately, weighted and unweighted (pbrt's `visualizestrategies`).
+//! For the lesson, a [`StrategyFilter`] keeps the contribution of one
+//! `(s, t)` alone, weighted or unweighted (pbrt's `visualizestrategies`);
+//! [`crate::render::render_strategies`] renders every strategy's image.
 
 use super::Integrator;
-use super::vertex::{
-    self, EMPTY_VERTEX, MAX_VERTICES, Subpath, Vertex, mis_weight, path_vertices, visible,
-};
-use crate::film::{Image, Splat};
+use super::camera_connection::connect_to_camera;
+use super::dimensions::LENS;
+use super::mis_weight::mis_weight;
+use super::nee::{self, LightPoint};
+use super::subpath::{EscapedRay, camera_subpath, light_subpath};
+use super::vertex::{EMPTY_VERTEX, MAX_VERTICES, Subpath, Vertex, path_vertices, visible};
+use crate::film::Splat;
 use crate::math::{Color, UVec2, Vec2};
-use crate::render::{RenderOptions, render_pixels};
 use crate::sampling::Sampler;
 use crate::scene::Scene;
 
@@ -102,11 +106,11 @@ fn connect(
     }
     if t == 1 {
         // Light tracing: y_{s−1} joined to the lens.
-        let (cs, value) = vertex::connect_to_camera(scene, &light[s - 1], sampler.next_2d())?;
+        let c = connect_to_camera(scene, &light[s - 1], LENS.draw(sampler))?;
         return Some(Connection {
-            value,
-            raster: Some(cs.raster),
-            sampled: Some(Vertex::camera(cs.p_lens, Color::ZERO)),
+            value: c.value,
+            raster: Some(c.camera.raster),
+            sampled: Some(Vertex::camera(c.camera.p_lens, Color::ZERO)),
         });
     }
     if !pt.is_connectible(scene) {
@@ -114,28 +118,23 @@ fn connect(
     }
     if s == 1 {
         // Next event estimation: a fresh light point seen from z_{t−1}.
-        let u_choice = sampler.next_1d();
-        let u = sampler.next_2d();
-        let (index, l, pmf) = scene.choose_light(u_choice)?;
-        if l.is_environment() {
-            // Not a strategy here (see `vertex`): environment light comes
+        let LightPoint { choice, sample: ls } = nee::sample_light_point(scene, pt.p(), sampler)?;
+        if choice.light.is_environment() {
+            // Not a strategy here (see `subpath`): environment light comes
             // only through escaping camera paths.
             return None;
         }
-        let ls = l.sample_li(pt.p(), u)?;
-        if ls.pdf_w <= 0.0 || ls.li == Color::ZERO {
-            return None;
-        }
         // C = β_z f_r |cos θ_z| L_i / (P(light) p_ω).
-        let value = pt.beta * pt.f(scene, ls.wi) * (pt.abs_cos(ls.wi) / (pmf * ls.pdf_w)) * ls.li;
+        let pdf_light_w = choice.pmf * ls.pdf_w;
+        let value = pt.beta * pt.f(scene, ls.wi) * (pt.abs_cos(ls.wi) / pdf_light_w) * ls.li;
         if value == Color::ZERO {
             return None;
         }
         // For MIS the resampled point counts with the density of a light
         // path's origin, P(light) p_A (pbrt does the same): the weights of
         // all strategies use the same densities, so they still sum to one.
-        let mut y = Vertex::light(index, ls.p, ls.n, Color::ZERO, 0.0);
-        y.pdf_fwd = y.pdf_light_origin(scene);
+        let mut y = Vertex::light(choice.index, ls.p, ls.n, Color::ZERO, 0.0);
+        y.pdf_fwd_a = y.pdf_light_origin_a(scene);
         if !visible(scene, pt, &y) {
             return None;
         }
@@ -181,7 +180,7 @@ impl Bdpt {
         let max_vertices = path_vertices(self.max_depth); // D + 1
         let mut camera: Subpath = [EMPTY_VERTEX; MAX_VERTICES];
         let mut light: Subpath = [EMPTY_VERTEX; MAX_VERTICES];
-        let cam = vertex::camera_subpath(
+        let cam = camera_subpath(
             scene,
             pixel,
             sampler,
@@ -189,7 +188,7 @@ impl Bdpt {
             max_vertices,
             self.rr_depth,
         );
-        let n_light = vertex::light_subpath(
+        let n_light = light_subpath(
             scene,
             sampler,
             &mut light,
@@ -205,7 +204,7 @@ impl Bdpt {
         let mut l = Color::ZERO;
         // The environment seen by an escaping camera path: strategy
         // (0, n_C + 1), the only one that generates such paths (weight 1).
-        if let Some((beta, d)) = cam.escaped
+        if let Some(EscapedRay { beta, d }) = cam.escaped
             && n_camera < max_vertices
             && keep(0, n_camera + 1)
         {
@@ -249,42 +248,4 @@ impl Integrator for Bdpt {
     ) -> Color {
         self.estimate(scene, pixel, sampler, splats)
     }
-}
-
-/// One image per strategy `(s, t)` with `s + t ≤ D + 1` (`t ≥ 1`,
-/// `max_depth = D`, paths of at least two vertices): `((s, t), weighted,
-/// unweighted)`. The weighted images add up to the BDPT image; an unweighted
-/// image is that strategy's own estimate of all the paths it can generate
-/// (noisy where it is a poor strategy, black where it is impossible). Two
-/// renders per strategy with `options`; keep the image small.
-pub fn render_strategies(
-    scene: &Scene,
-    options: &RenderOptions,
-    max_depth: u32,
-) -> Vec<((u32, u32), Image, Image)> {
-    let mut out = Vec::new();
-    let (w, h) = (scene.camera.width, scene.camera.height);
-    for n in 2..=max_depth + 1 {
-        for t in 1..=n {
-            let s = n - t;
-            let image = |weighted: bool| {
-                let bdpt = Bdpt {
-                    max_depth: Some(max_depth),
-                    rr_depth: u32::MAX,
-                    strategy_images: Some(StrategyFilter { s, t, weighted }),
-                };
-                let options = RenderOptions {
-                    label: format!("bdpt s={s} t={t}"),
-                    ..options.clone()
-                };
-                render_pixels(w, h, &options, |pixel, sampler, splats| {
-                    bdpt.sample(scene, pixel, sampler, splats)
-                })
-                .film
-                .image()
-            };
-            out.push(((s, t), image(true), image(false)));
-        }
-    }
-    out
 }

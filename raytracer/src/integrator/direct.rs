@@ -8,6 +8,7 @@
 //! estimation, best for small lights and rough surfaces) and a sample of the
 //! BRDF (best for large lights and glossy or mirror surfaces).
 
+use super::continuation::sample_continuation;
 use super::{Integrator, camera_ray, nee};
 use crate::brdf::TransportMode;
 use crate::film::Splat;
@@ -43,22 +44,17 @@ impl Integrator for Direct {
         l += nee::sample_light(scene, &it, brdf, sampler, true);
 
         // BRDF sampling: follow one direction and see whether it reaches a light.
-        let wo = it.frame.to_local(it.wo);
-        let (u_lobe, u) = (sampler.next_1d(), sampler.next_2d());
-        let Some(bs) = brdf.sample(wo, it.uv, u_lobe, u, TransportMode::Radiance) else {
+        let Some(c) = sample_continuation(&it, brdf, TransportMode::Radiance, sampler) else {
             return l;
         };
-        let wi = it.frame.to_world(bs.wi);
-        let weight = bs.f * (bs.wi.z.abs() / bs.pdf_w);
-        let next_ray = it.spawn_ray(wi);
-        let next = scene.intersect(&next_ray);
-        if let Some(e) = nee::emitter_hit(scene, &next_ray, next.as_ref()) {
-            let w = if bs.is_delta {
+        let next = scene.intersect(&c.ray);
+        if let Some(e) = scene.emitter_hit(&c.ray, next.as_ref()) {
+            let w = if c.sample.is_delta {
                 1.0
             } else {
-                nee::brdf_sample_weight(scene, it.p, bs.pdf_w, e.light, e.p, e.n, wi)
+                nee::brdf_sample_weight(scene, it.p, c.sample.pdf_w, &e, c.wi)
             };
-            l += weight * e.le * w;
+            l += c.weight * e.le * w;
         }
         l
     }

@@ -14,7 +14,7 @@
 //!         · Π_{j=1}^{i−1} f_r |cos θ| / p_ω
 //! ```
 //!
-//! (see [`vertex::connect_to_camera`] for the `G / p_A = |cos| / p_ω`
+//! (see [`connect_to_camera`] for the `G / p_A = |cos| / p_ω`
 //! conversion). The light point itself (`i = 0`) is joined too, with `f_r`
 //! replaced by `L_e(y_0 → lens)`: that is how light tracing sees lights
 //! directly — a pinhole cannot be hit by a light path, so nothing else could.
@@ -31,10 +31,13 @@
 //! What light tracing cannot do: paths whose camera end is a specular
 //! surface (a mirror or glass seen by the camera: the connection at a delta
 //! vertex has zero value), and the environment (not emitted on the light side
-//! here; see [`vertex`]). Those pixels stay dark.
+//! here; see [`super::subpath`]). Those pixels stay dark.
 
 use super::Integrator;
-use super::vertex::{self, EMPTY_VERTEX, MAX_VERTICES};
+use super::camera_connection::connect_to_camera;
+use super::dimensions::LENS;
+use super::subpath::light_subpath;
+use super::vertex::{EMPTY_VERTEX, MAX_VERTICES};
 use crate::film::Splat;
 use crate::math::{Color, UVec2};
 use crate::sampling::Sampler;
@@ -75,13 +78,13 @@ impl Integrator for LightTracer {
             .max_depth
             .map_or(MAX_VERTICES, |d| (d as usize).min(MAX_VERTICES));
         let mut path = [EMPTY_VERTEX; MAX_VERTICES];
-        let n = vertex::light_subpath(scene, sampler, &mut path, max_vertices, self.rr_depth);
+        let n = light_subpath(scene, sampler, &mut path, max_vertices, self.rr_depth);
         for q in &path[..n] {
-            let u_lens = sampler.next_2d();
-            if let Some((cs, value)) = vertex::connect_to_camera(scene, q, u_lens) {
+            let u_lens = LENS.draw(sampler);
+            if let Some(c) = connect_to_camera(scene, q, u_lens) {
                 splats.push(Splat {
-                    raster: cs.raster,
-                    value,
+                    raster: c.camera.raster,
+                    value: c.value,
                 });
             }
         }

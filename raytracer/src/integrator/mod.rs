@@ -3,6 +3,13 @@
 //! Lecture topic: global illumination algorithms. Each integrator estimates
 //! the radiance of one camera sample; the render loop ([`crate::render`])
 //! averages many of them per pixel.
+//!
+//! The integrators share their steps, one file each: [`nee`] (light
+//! sampling and its MIS weight), [`continuation`] (the BRDF sample that
+//! continues a path), [`roulette`] (Russian roulette), and for light and
+//! bidirectional tracing [`vertex`], [`subpath`], [`camera_connection`] and
+//! [`mis_weight`]. [`dimensions`] names every random number they draw and
+//! gives each integrator's layout.
 
 use crate::film::Splat;
 use crate::math::{Color, UVec2};
@@ -28,16 +35,22 @@ pub trait Integrator: Sync {
 
 mod ao;
 pub mod bdpt;
+pub mod camera_connection;
+pub mod continuation;
+pub mod dimensions;
 mod direct;
 mod light_tracing;
+pub mod mis_weight;
 mod naive;
 pub mod nee;
 mod path;
+pub mod roulette;
 pub mod stop;
+pub mod subpath;
 pub mod vertex;
 
 pub use ao::AmbientOcclusion;
-pub use bdpt::{Bdpt, StrategyFilter, render_strategies};
+pub use bdpt::{Bdpt, StrategyFilter};
 pub use direct::Direct;
 pub use light_tracing::LightTracer;
 pub use naive::NaiveRecursive;
@@ -45,10 +58,11 @@ pub use path::{DirectStrategy, PathTracer};
 
 /// The primary ray of a pixel sample: a uniform point in the pixel (a box
 /// filter: each sample counts fully for its own pixel) and a point on the lens.
-/// Uses the sampler's next four numbers.
+/// Draws [`FILM`](dimensions::FILM) and [`LENS`](dimensions::LENS), the
+/// sampler's next four numbers.
 #[inline]
 pub fn camera_ray(scene: &Scene, pixel: UVec2, sampler: &mut Sampler) -> crate::math::Ray {
-    let film = sampler.next_2d();
-    let lens = sampler.next_2d();
+    let film = dimensions::FILM.draw(sampler);
+    let lens = dimensions::LENS.draw(sampler);
     scene.camera.generate_ray(pixel.as_vec2() + film, lens)
 }

@@ -17,6 +17,8 @@
 
 use std::sync::atomic::{AtomicU64, Ordering};
 
+use super::continuation::sample_continuation;
+use super::roulette::russian_roulette;
 use super::stop::stop_requested;
 use super::{Integrator, camera_ray};
 use crate::brdf::TransportMode;
@@ -106,27 +108,25 @@ impl NaiveRecursive {
             return l;
         }
         let brdf = scene.brdf(&it);
-        let wo = it.frame.to_local(it.wo);
         let n = self.branching_at(depth);
         let mut sum = Color::ZERO;
         for _ in 0..n {
-            let (u_lobe, u) = (sampler.next_1d(), sampler.next_2d());
-            let Some(bs) = brdf.sample(wo, it.uv, u_lobe, u, TransportMode::Radiance) else {
+            let Some(c) = sample_continuation(&it, brdf, TransportMode::Radiance, sampler) else {
                 continue;
             };
-            let mut weight = bs.f * (bs.wi.z.abs() / bs.pdf_w);
+            let mut weight = c.weight;
             if self.roulette_depth.is_some_and(|d| depth + 1 >= d) {
-                let q = (product * weight).max_element().min(0.95);
-                if q <= 0.0 || sampler.next_1d() >= q {
+                // Judged by the product of the weights down to here (each
+                // level's 1/N included), with no η correction.
+                let Some(q) = russian_roulette(product * weight, 1.0, sampler) else {
                     continue;
-                }
+                };
                 weight /= q;
             }
-            let next = it.spawn_ray(it.frame.to_world(bs.wi));
             sum += weight
                 * self.radiance(
                     scene,
-                    &next,
+                    &c.ray,
                     depth + 1,
                     product * weight / n as f32,
                     sampler,

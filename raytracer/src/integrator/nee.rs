@@ -8,16 +8,51 @@
 //! solid angle (the area pdf converted with `dist² / cos θ_light`). Shared by
 //! every integrator that connects a surface point to a light.
 
+use super::dimensions::{LIGHT_CHOICE, LIGHT_POINT};
 use crate::brdf::Brdf;
-use crate::math::{Color, Ray, Vec3A};
+use crate::geometry::Interaction;
+use crate::light::LightSample;
+use crate::math::{Color, Vec3A};
 use crate::sampling::{Sampler, power_heuristic};
-use crate::scene::{Interaction, Scene};
+use crate::scene::{EmitterHit, LightChoice, Scene};
+
+/// A light chosen, and a point on it sampled as seen from a receiver.
+#[derive(Clone, Copy, Debug)]
+pub struct LightPoint<'a> {
+    /// Which light, with the probability `P(light)` of choosing it.
+    pub choice: LightChoice<'a>,
+    /// The point: direction `ω_i`, `L_i`, its density `p_ω` per unit solid
+    /// angle at the receiver, distance, normal.
+    pub sample: LightSample,
+}
+
+/// The sampling half of next event estimation, shared by every integrator
+/// that aims at a light (this file's [`sample_light`], and the `s = 1`
+/// strategy of bidirectional tracing): chooses a light with `P(light)` and
+/// samples a point on it as seen from `p`. Draws [`LIGHT_CHOICE`], then
+/// [`LIGHT_POINT`]. `None` if the scene has no light or the sample carries
+/// nothing (zero density or radiance).
+#[inline]
+pub fn sample_light_point<'a>(
+    scene: &'a Scene,
+    p: Vec3A,
+    sampler: &mut Sampler,
+) -> Option<LightPoint<'a>> {
+    let u_choice = LIGHT_CHOICE.draw(sampler);
+    let u = LIGHT_POINT.draw(sampler);
+    let choice = scene.choose_light(u_choice)?;
+    let sample = choice.light.sample_li(p, u)?;
+    if sample.pdf_w <= 0.0 || sample.li == Color::ZERO {
+        return None;
+    }
+    Some(LightPoint { choice, sample })
+}
 
 /// One light sample for the point `it` with BRDF `brdf`: the estimate
 /// `w_light · f_r · L_e · |cos θ_i| / (P(light) · p(ω_i))`, where `w_light` is
 /// the power heuristic against BRDF sampling if `mis`, else 1.
 ///
-/// Uses three random numbers (light choice, point on the light).
+/// Draws as [`sample_light_point`].
 #[inline]
 pub fn sample_light(
     scene: &Scene,
@@ -26,17 +61,9 @@ pub fn sample_light(
     sampler: &mut Sampler,
     mis: bool,
 ) -> Color {
-    let u_choice = sampler.next_1d();
-    let u = sampler.next_2d();
-    let Some((_, light, pmf)) = scene.choose_light(u_choice) else {
+    let Some(LightPoint { choice, sample: ls }) = sample_light_point(scene, it.p, sampler) else {
         return Color::ZERO;
     };
-    let Some(ls) = light.sample_li(it.p, u) else {
-        return Color::ZERO;
-    };
-    if ls.pdf_w <= 0.0 || ls.li == Color::ZERO {
-        return Color::ZERO;
-    }
     let wo = it.frame.to_local(it.wo);
     let wi = it.frame.to_local(ls.wi);
     let f = brdf.eval(wo, wi, it.uv);
@@ -51,66 +78,31 @@ pub fn sample_light(
     if !scene.unoccluded(&shadow) {
         return Color::ZERO;
     }
-    let pdf_light = pmf * ls.pdf_w;
+    let pdf_light_w = choice.pmf * ls.pdf_w;
     // A point light cannot be hit by a BRDF sample: its sample takes all the weight.
     let weight = if ls.is_delta || !mis {
         1.0
     } else {
-        power_heuristic(1.0, pdf_light, 1.0, brdf.pdf(wo, wi, it.uv))
+        power_heuristic(1.0, pdf_light_w, 1.0, brdf.pdf(wo, wi, it.uv))
     };
-    f * ls.li * (wi.z.abs() * weight / pdf_light)
+    f * ls.li * (wi.z.abs() * weight / pdf_light_w)
 }
 
-/// An emitter found by a ray: the light's index, the radiance it sends back
-/// along the ray, and the point and normal where the ray met it (for the
-/// environment: the ray's origin and a zero normal, which its pdf ignores).
-#[derive(Clone, Copy, Debug)]
-pub struct EmitterHit {
-    pub light: u32,
-    pub le: Color,
-    pub p: Vec3A,
-    pub n: Vec3A,
-}
-
-/// What emitter, if any, `ray` reached: the area light of the surface `hit`,
-/// or the environment if the ray escaped. `None` if no light was reached or
-/// it sends nothing back.
-#[inline]
-pub fn emitter_hit(scene: &Scene, ray: &Ray, hit: Option<&Interaction>) -> Option<EmitterHit> {
-    let found = match hit {
-        Some(it) => scene.area_light(it).map(|(light, l)| EmitterHit {
-            light,
-            le: l.le(it.ng, it.wo),
-            p: it.p,
-            n: it.ng,
-        }),
-        None => scene.environment.map(|light| EmitterHit {
-            light,
-            le: scene.escaped_radiance(ray.d),
-            p: ray.o,
-            n: Vec3A::ZERO,
-        }),
-    };
-    found.filter(|e| e.le != Color::ZERO)
-}
-
-/// The MIS weight of a (non-delta) BRDF sample of density `pdf_brdf` that
-/// left the point `from` in world direction `wi` and reached light
-/// `light_index` at the point `p_light` with normal `n_light` (for the
-/// environment both are ignored): the counterpart of [`sample_light`]'s
-/// weight. A sample from a delta lobe has weight 1 (no light sample could
-/// have produced it); callers handle that case.
+/// The MIS weight of a (non-delta) BRDF sample that left the point `from` in
+/// world direction `wi` with density `pdf_brdf_w` per unit solid angle and
+/// found the emitter `e`: the counterpart of [`sample_light`]'s weight, with
+/// the density light sampling would have had for the same direction,
+/// `P(light) · p_ω`. A sample from a delta lobe has weight 1 (no light sample
+/// could have produced it); callers handle that case.
 #[inline]
 pub fn brdf_sample_weight(
     scene: &Scene,
     from: Vec3A,
-    pdf_brdf: f32,
-    light_index: u32,
-    p_light: Vec3A,
-    n_light: Vec3A,
+    pdf_brdf_w: f32,
+    e: &EmitterHit,
     wi: Vec3A,
 ) -> f32 {
-    let light = &scene.lights[light_index as usize];
-    let pdf_light = scene.light_pmf(light_index) * light.pdf_li(from, p_light, n_light, wi);
-    power_heuristic(1.0, pdf_brdf, 1.0, pdf_light)
+    let light = &scene.lights[e.light as usize];
+    let pdf_light_w = scene.light_pmf(e.light) * light.pdf_li_w(from, e.p, e.n, wi);
+    power_heuristic(1.0, pdf_brdf_w, 1.0, pdf_light_w)
 }

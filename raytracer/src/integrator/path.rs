@@ -16,10 +16,12 @@
 //! Depth follows Mitsuba: with `max_depth = D`, a path has at most `D − 1`
 //! scattering vertices (D = 1: only emitters seen directly).
 
+use super::continuation::sample_continuation;
+use super::roulette::russian_roulette;
 use super::{Integrator, camera_ray, nee};
 use crate::brdf::TransportMode;
 use crate::film::Splat;
-use crate::math::{Color, UVec2};
+use crate::math::{Color, UVec2, Vec3A};
 use crate::sampling::Sampler;
 use crate::scene::Scene;
 
@@ -35,6 +37,19 @@ pub enum DirectStrategy {
     /// Light sampling only, without MIS: the BRDF-sampled path counts emitters
     /// only after a delta bounce (noisy on glossy surfaces under large lights).
     LightOnly,
+}
+
+/// The BRDF sample that sent the path's current ray: what the MIS weight of
+/// an emitter the ray hits needs.
+#[derive(Clone, Copy, Debug)]
+struct PreviousBounce {
+    /// Where the ray left.
+    p: Vec3A,
+    /// Density of its direction per unit solid angle.
+    pdf_w: f32,
+    /// Whether it came from a delta lobe (no light sample could have found
+    /// the same light: weight 1).
+    is_delta: bool,
 }
 
 /// The path tracer.
@@ -81,9 +96,8 @@ impl Integrator for PathTracer {
         // Relative IOR accumulated along the path (radiance is scaled by 1/η²
         // through glass; roulette undoes that to judge the path fairly).
         let mut eta_scale = 1.0f32;
-        // Density and delta flag of the BRDF sample that produced `ray`, and its
-        // origin, for the MIS weight of an emitter the ray hits.
-        let mut prev: Option<(crate::math::Vec3A, f32, bool)> = None;
+        // The BRDF sample that produced `ray` (none for the camera ray).
+        let mut prev: Option<PreviousBounce> = None;
         let mut depth = 0u32;
         if max_depth == 0 {
             return l;
@@ -96,14 +110,14 @@ impl Integrator for PathTracer {
             }
             let hit = scene.intersect(&ray);
             // Emitted light reached by the ray (counted while depth < max_depth).
-            if let Some(e) = nee::emitter_hit(scene, &ray, hit.as_ref()) {
+            if let Some(e) = scene.emitter_hit(&ray, hit.as_ref()) {
                 let weight = match (&prev, self.strategy) {
-                    (None, _) | (Some((_, _, true)), _) | (Some(_), DirectStrategy::BrdfOnly) => {
-                        1.0
-                    }
+                    (None, _)
+                    | (Some(PreviousBounce { is_delta: true, .. }), _)
+                    | (Some(_), DirectStrategy::BrdfOnly) => 1.0,
                     (Some(_), DirectStrategy::LightOnly) => 0.0,
-                    (Some((from, pdf, false)), DirectStrategy::Mis) => {
-                        nee::brdf_sample_weight(scene, *from, *pdf, e.light, e.p, e.n, ray.d)
+                    (Some(b), DirectStrategy::Mis) => {
+                        nee::brdf_sample_weight(scene, b.p, b.pdf_w, &e, ray.d)
                     }
                 };
                 l += beta * e.le * weight;
@@ -118,23 +132,23 @@ impl Integrator for PathTracer {
                 l += beta * nee::sample_light(scene, &it, brdf, sampler, mis);
             }
             // Continue the path in one direction sampled from the BRDF.
-            let wo = it.frame.to_local(it.wo);
-            let (u_lobe, u) = (sampler.next_1d(), sampler.next_2d());
-            let Some(bs) = brdf.sample(wo, it.uv, u_lobe, u, TransportMode::Radiance) else {
+            let Some(c) = sample_continuation(&it, brdf, TransportMode::Radiance, sampler) else {
                 break;
             };
-            beta *= bs.f * (bs.wi.z.abs() / bs.pdf_w);
-            eta_scale *= bs.eta * bs.eta;
-            let wi = it.frame.to_world(bs.wi);
-            ray = it.spawn_ray(wi);
-            prev = Some((it.p, bs.pdf_w, bs.is_delta));
+            beta *= c.weight;
+            eta_scale *= c.sample.eta * c.sample.eta;
+            ray = c.ray;
+            prev = Some(PreviousBounce {
+                p: it.p,
+                pdf_w: c.sample.pdf_w,
+                is_delta: c.sample.is_delta,
+            });
             depth += 1;
             // Russian roulette (unbiased: survivors are divided by q).
             if depth >= self.rr_depth {
-                let q = (beta.max_element() * eta_scale).min(0.95);
-                if q <= 0.0 || sampler.next_1d() >= q {
+                let Some(q) = russian_roulette(beta, eta_scale, sampler) else {
                     break;
-                }
+                };
                 beta /= q;
             }
         }

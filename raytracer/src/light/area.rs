@@ -15,7 +15,7 @@
 use crate::frame::Frame;
 use crate::geometry::{Quad, Sphere};
 use crate::light::{Emission, LightSample};
-use crate::math::{Color, INV_PI, PI, Ray, Vec2, Vec3A};
+use crate::math::{Color, INV_PI, PI, Ray, RayPdf, Vec2, Vec3A};
 use crate::sampling::warp::{cosine_hemisphere, uniform_sphere};
 
 /// The surface of an area light.
@@ -162,7 +162,7 @@ impl AreaLight {
     /// Solid-angle density of `sample_li` for the direction `wi` from `p`
     /// that hit the light at `p_light` with normal `n_light`. Zero where
     /// `sample_li` never samples (the back of a one-sided light).
-    pub fn pdf_li(&self, p: Vec3A, p_light: Vec3A, n_light: Vec3A, wi: Vec3A) -> f32 {
+    pub fn pdf_li_w(&self, p: Vec3A, p_light: Vec3A, n_light: Vec3A, wi: Vec3A) -> f32 {
         if !self.two_sided && n_light.dot(wi) >= 0.0 {
             return 0.0;
         }
@@ -228,8 +228,8 @@ impl AreaLight {
         })
     }
 
-    /// `(p_A, p_ω)` of emitting from `p` (normal `n`) in direction `w`.
-    pub fn pdf_le(&self, _p: Vec3A, n: Vec3A, w: Vec3A) -> (f32, f32) {
+    /// `p_A` and `p_ω` of emitting from `p` (normal `n`) in direction `w`.
+    pub fn pdf_le(&self, _p: Vec3A, n: Vec3A, w: Vec3A) -> RayPdf {
         let pdf_a = 1.0 / self.shape.area();
         let cos_t = n.dot(w);
         let pdf_w = if self.two_sided {
@@ -237,7 +237,7 @@ impl AreaLight {
         } else {
             cos_t.max(0.0) * INV_PI
         };
-        (pdf_a, pdf_w)
+        RayPdf { pdf_a, pdf_w }
     }
 
     /// Emitted flux `Φ = ∫_A ∫_Ω L cos θ dω dA = π A L` per emitting side.
@@ -314,15 +314,15 @@ mod tests {
     }
 
     /// Runs `sample_li` from `p` with `n` samples: checks every sample
-    /// against `pdf_li` (relative 1e-3) and returns the samples.
+    /// against `pdf_li_w` (relative 1e-3) and returns the samples.
     fn samples(l: &AreaLight, p: Vec3A, n: u64, seed: u64) -> Vec<LightSample> {
         let mut out = Vec::new();
         for i in 0..n {
             if let Some(s) = l.sample_li(p, Sampler::new(seed, i, 0).next_2d()) {
-                let pdf = l.pdf_li(p, s.p, s.n, s.wi);
+                let pdf = l.pdf_li_w(p, s.p, s.n, s.wi);
                 assert!(
                     (pdf - s.pdf_w).abs() <= 1e-3 * s.pdf_w,
-                    "pdf_li {pdf} vs sample pdf {} from {p}",
+                    "pdf_li_w {pdf} vs sample pdf {} from {p}",
                     s.pdf_w
                 );
                 assert!((s.wi.length() - 1.0).abs() < 1e-5);
@@ -334,7 +334,7 @@ mod tests {
         out
     }
 
-    /// (a) pdf_li agrees with every sample; (b) mean(1/p_ω) is the quad's
+    /// (a) pdf_li_w agrees with every sample; (b) mean(1/p_ω) is the quad's
     /// exact solid angle (2^16 samples, 5 standard errors, see assert_matches).
     #[test]
     fn quad_sampling_matches_pdf_and_solid_angle() {
@@ -464,11 +464,11 @@ mod tests {
         assert!(samples(&one, behind, 1024, 50).is_empty());
         let on_light = Vec3A::new(0.0, 2.0, 0.0);
         let wi = (on_light - behind).normalize();
-        assert_eq!(one.pdf_li(behind, on_light, n, wi), 0.0);
+        assert_eq!(one.pdf_li_w(behind, on_light, n, wi), 0.0);
         assert_eq!(one.le(n, -wi), Color::ZERO);
         assert_eq!(one.le(n, wi), one.radiance);
         assert_eq!(two.le(n, -wi), two.radiance);
-        assert!(two.pdf_li(behind, on_light, n, wi) > 0.0);
+        assert!(two.pdf_li_w(behind, on_light, n, wi) > 0.0);
         let mirror = Vec3A::new(0.1, 1.0, 0.2);
         for (p, up) in [(behind, -Vec3A::Y), (mirror, Vec3A::Y)] {
             let e: Vec<f64> = samples(&two, p, 1 << 16, 51)
@@ -504,7 +504,7 @@ mod tests {
                 for i in 0..n {
                     let mut smp = Sampler::new(60, i, 0);
                     let e = l.sample_le(smp.next_2d(), smp.next_2d()).unwrap();
-                    let (pdf_a, pdf_w) = l.pdf_le(e.ray.o, e.n, e.ray.d);
+                    let RayPdf { pdf_a, pdf_w } = l.pdf_le(e.ray.o, e.n, e.ray.d);
                     assert!((pdf_a - e.pdf_a).abs() <= 1e-5 * e.pdf_a);
                     assert!((pdf_w - e.pdf_w).abs() <= 1e-3 * e.pdf_w);
                     let cos = e.n.dot(e.ray.d);

@@ -30,7 +30,7 @@ use std::sync::Arc;
 
 use crate::frame::Frame;
 use crate::light::{Emission, LightSample};
-use crate::math::{Color, INV_2PI, INV_4PI, INV_PI, PI, Ray, Vec2, Vec3A, luminance};
+use crate::math::{Color, INV_2PI, INV_4PI, INV_PI, PI, Ray, RayPdf, Vec2, Vec3A, luminance};
 use crate::sampling::Distribution2D;
 use crate::sampling::warp::{concentric_disk, uniform_sphere};
 
@@ -285,7 +285,7 @@ impl EnvironmentLight {
 
     /// Solid-angle density of `sample_li` for the direction `wi` (to the sky).
     #[inline]
-    pub fn pdf_li(&self, wi: Vec3A) -> f32 {
+    pub fn pdf_li_w(&self, wi: Vec3A) -> f32 {
         self.pdf_direction(wi)
     }
 
@@ -310,11 +310,15 @@ impl EnvironmentLight {
         })
     }
 
-    /// `(p_A, p_ω)` of emitting a ray travelling in direction `w` (into the scene).
+    /// `p_A` and `p_ω` of emitting a ray travelling in direction `w` (into
+    /// the scene).
     #[inline]
-    pub fn pdf_le(&self, w: Vec3A) -> (f32, f32) {
+    pub fn pdf_le(&self, w: Vec3A) -> RayPdf {
         let r = self.scene_radius;
-        (1.0 / (PI * r * r), self.pdf_direction(-w))
+        RayPdf {
+            pdf_a: 1.0 / (PI * r * r),
+            pdf_w: self.pdf_direction(-w),
+        }
     }
 
     /// Flux entering the scene's bounding disk: `Φ = π r² ∫_{S²} L(ω) dω`
@@ -367,7 +371,7 @@ mod tests {
         assert_eq!(m.lookup(0.0, 1.0).x, 0.2, "v = 1 is the bottom row");
     }
 
-    /// On the bright-cell map: (a) `pdf_li` agrees with every sample;
+    /// On the bright-cell map: (a) `pdf_li_w` agrees with every sample;
     /// (b) mean(1/p_ω) = 4π (every cell has light, so the whole sphere is
     /// covered) and mean(L/p_ω) = ∫ L dω = Σ L_ij ΔΩ_ij (importance sampling
     /// is unbiased); both 2^16 samples, 5 standard errors; (c) chi-square:
@@ -384,7 +388,7 @@ mod tests {
         for i in 0..n {
             let p = Vec3A::new(0.3, -0.2, 0.1);
             let s = env.sample_li(p, Sampler::new(70, i, 0).next_2d()).unwrap();
-            let pdf = env.pdf_li(s.wi);
+            let pdf = env.pdf_li_w(s.wi);
             assert!(
                 (pdf - s.pdf_w).abs() <= 1e-3 * s.pdf_w,
                 "{pdf} vs {}",
@@ -453,8 +457,8 @@ mod tests {
                 assert!((to_c - along * e.ray.d).length() <= r * (1.0 + 1e-4));
                 assert!((e.ray.o - center).length() >= r * (1.0 - 1e-4));
                 assert!((e.n - e.ray.d).length() < 1e-6);
-                let (pdf_a, pdf_w) = env.pdf_le(e.ray.d);
-                assert_eq!((pdf_a, pdf_w), light.pdf_le(e.ray.o, e.n, e.ray.d));
+                let RayPdf { pdf_a, pdf_w } = env.pdf_le(e.ray.d);
+                assert_eq!(RayPdf { pdf_a, pdf_w }, light.pdf_le(e.ray.o, e.n, e.ray.d));
                 assert!((pdf_a - e.pdf_a).abs() <= 1e-5 * e.pdf_a);
                 assert!((pdf_w - e.pdf_w).abs() <= 1e-3 * e.pdf_w);
                 assert_eq!(e.le, env.environment_radiance(-e.ray.d));

@@ -8,18 +8,22 @@
 //!   as seen from a receiving point and returns a [`LightSample`] (direction,
 //!   radiance, pdf per unit solid angle at the receiver, distance) — next event
 //!   estimation;
-//! - **report densities** for MIS: [`Light::pdf_li`] is the pdf `sample_li`
-//!   would have had for a direction that a BRDF sample happened to send into
-//!   the light;
+//! - **report densities** for MIS: [`Light::pdf_li_w`] is the pdf per unit
+//!   solid angle `sample_li` would have had for a direction that a BRDF
+//!   sample happened to send into the light, and [`Light::pdf_le`] the
+//!   densities of an emitted ray (a [`RayPdf`]);
 //! - **emit** a ray: [`Light::sample_le`] starts a light path (an [`Emission`]
 //!   with its position pdf per unit area and direction pdf per unit solid
 //!   angle, kept apart for bidirectional MIS).
+//!
+//! Names of densities carry their measure, as in SmallVCM: `_w` per unit
+//! solid angle, `_a` per unit area.
 
 pub mod area;
 pub mod environment;
 pub mod point;
 
-use crate::math::{Color, INV_4PI, Ray, Vec2, Vec3A};
+use crate::math::{Color, INV_4PI, Ray, RayPdf, Vec2, Vec3A};
 
 pub use area::{AreaLight, AreaShape};
 pub use environment::{EnvironmentLight, EnvironmentMap};
@@ -97,11 +101,11 @@ impl Light {
     /// (the environment ignores both; a point light returns 0: no direction
     /// hits it).
     #[inline]
-    pub fn pdf_li(&self, p: Vec3A, p_light: Vec3A, n_light: Vec3A, wi: Vec3A) -> f32 {
+    pub fn pdf_li_w(&self, p: Vec3A, p_light: Vec3A, n_light: Vec3A, wi: Vec3A) -> f32 {
         match self {
-            Light::Area(l) => l.pdf_li(p, p_light, n_light, wi),
+            Light::Area(l) => l.pdf_li_w(p, p_light, n_light, wi),
             Light::Point(_) => 0.0,
-            Light::Environment(l) => l.pdf_li(wi),
+            Light::Environment(l) => l.pdf_li_w(wi),
         }
     }
 
@@ -144,14 +148,18 @@ impl Light {
         }
     }
 
-    /// `(p_A, p_ω)` with which `sample_le` emits from `p` (normal `n`) in
-    /// direction `w` (direction of travel). Point light: `(1, 1/(4π))`;
-    /// environment: `p` and `n` are ignored.
+    /// The densities `p_A` (origin) and `p_ω` (direction) with which
+    /// `sample_le` emits from `p` (normal `n`) in direction `w` (direction of
+    /// travel). Point light: `p_A = 1, p_ω = 1/(4π)`; environment: `p` and
+    /// `n` are ignored.
     #[inline]
-    pub fn pdf_le(&self, p: Vec3A, n: Vec3A, w: Vec3A) -> (f32, f32) {
+    pub fn pdf_le(&self, p: Vec3A, n: Vec3A, w: Vec3A) -> RayPdf {
         match self {
             Light::Area(l) => l.pdf_le(p, n, w),
-            Light::Point(_) => (1.0, INV_4PI),
+            Light::Point(_) => RayPdf {
+                pdf_a: 1.0,
+                pdf_w: INV_4PI,
+            },
             Light::Environment(l) => l.pdf_le(w),
         }
     }
@@ -259,7 +267,7 @@ mod tests {
     }
 
     /// Through the enum, for every light type and several receivers:
-    /// `pdf_li` of each sample's direction equals the sample's `pdf_w`
+    /// `pdf_li_w` of each sample's direction equals the sample's `pdf_w`
     /// (relative 1e-3; point lights report 0, no BRDF sample hits them), and
     /// `pdf_le` agrees with each emission.
     #[test]
@@ -283,7 +291,7 @@ mod tests {
                         continue;
                     };
                     got += 1;
-                    let pdf = light.pdf_li(p, s.p, s.n, s.wi);
+                    let pdf = light.pdf_li_w(p, s.p, s.n, s.wi);
                     if light.is_delta() {
                         assert!(s.is_delta && s.pdf_w == 1.0 && pdf == 0.0);
                     } else {
@@ -301,7 +309,7 @@ mod tests {
                 let Some(e) = light.sample_le(smp.next_2d(), smp.next_2d()) else {
                     continue;
                 };
-                let (pdf_a, pdf_w) = light.pdf_le(e.ray.o, e.n, e.ray.d);
+                let RayPdf { pdf_a, pdf_w } = light.pdf_le(e.ray.o, e.n, e.ray.d);
                 assert!((pdf_a - e.pdf_a).abs() <= 1e-4 * e.pdf_a, "light {k}");
                 assert!((pdf_w - e.pdf_w).abs() <= 1e-3 * e.pdf_w, "light {k}");
                 assert_eq!(e.is_delta_position, light.is_delta());

@@ -9,10 +9,12 @@
 
 pub mod chi2;
 pub mod distribution;
+pub mod draw;
 pub mod mis;
 pub mod rng;
 pub mod warp;
 
 pub use distribution::{Distribution1D, Distribution2D};
+pub use draw::Draw;
 pub use mis::{balance_heuristic, power_heuristic};
 pub use rng::Sampler;

@@ -2,8 +2,8 @@
 //!
 //! Lecture topic: the scenes of the lecture's pictures — the Cornell box
 //! (numerically identical to Mitsuba 3's), two furnaces whose answer is
-//! exactly 1, a caustic, a room lit through a door ajar, a stereo scene and a
-//! BRDF gallery. Each is a TOML file in `raytracer/scenes/` (read it, it is
+//! exactly 1, a caustic, a room lit through a door ajar, a stereo scene, a
+//! BRDF gallery and Veach's scene for multiple importance sampling. Each is a TOML file in `raytracer/scenes/` (read it, it is
 //! commented); [`write_builtin`] copies one out so that a student can edit it
 //! and load it back with [`super::load_file`].
 
@@ -80,6 +80,12 @@ pub const BUILTIN_SCENES: &[BuiltinScene] = &[
         toml: include_str!("../../scenes/brdf-gallery.toml"),
         assets: &[],
     },
+    BuiltinScene {
+        name: "veach-mis",
+        description: "Veach's MIS scene: four plates of rising glossiness, four lights of rising size",
+        toml: include_str!("../../scenes/veach-mis.toml"),
+        assets: &[],
+    },
 ];
 
 /// The built-in scene called `name`.
@@ -138,8 +144,9 @@ mod tests {
     use crate::math::{Color, Vec3A};
     use crate::scene::load::{build, parse};
 
-    /// Loads a built-in scene without its cubes and meshes (which need the
-    /// geometry module), for the tests that only look at the rest.
+    /// Loads a built-in scene without its cubes and meshes, for the tests
+    /// that only look at the rest (their quads, spheres, materials and lights;
+    /// [`every_builtin_loads`] loads everything).
     fn load_without_meshes(name: &str) -> SceneParts {
         let scene = builtin(name).unwrap();
         let origin = SceneOrigin::Builtin(scene);
@@ -167,13 +174,13 @@ mod tests {
             "door",
             "stereo",
             "brdf-gallery",
+            "veach-mis",
         ] {
             assert!(builtin(name).is_some(), "{name}");
         }
     }
 
     #[test]
-    #[ignore = "needs geometry: Mesh::cube, Mesh::from_obj_str and Mesh::transformed"]
     fn every_builtin_loads() {
         for s in BUILTIN_SCENES {
             let parts = load_builtin(s.name).unwrap_or_else(|e| panic!("{e}"));
@@ -388,6 +395,41 @@ mod tests {
         }
     }
 
+    /// In `veach-mis` every plate mirrors the row of lights towards the
+    /// camera (its normal bisects the directions from its centre to the
+    /// camera and to the lights' centre), and the four lights have equal
+    /// power (radiance × radius² = 1) and rising size.
+    #[test]
+    fn veach_plates_mirror_the_lights_and_the_lights_have_equal_power() {
+        let parts = load_without_meshes("veach-mis");
+        let eye = parts.camera.position;
+        let mut exponents = Vec::new();
+        let mut radii = Vec::new();
+        for object in &parts.objects {
+            match (&object.shape, object.emitter) {
+                (Shape::Quad(q), None) => {
+                    let centre = q.origin + 0.5 * (q.e1 + q.e2);
+                    let half = ((eye - centre).normalize() + (-centre).normalize()).normalize();
+                    let normal = q.e1.cross(q.e2).normalize();
+                    assert!((normal - half).length() < 1e-4, "{}", object.name);
+                    let Brdf::Phong(p) = parts.brdfs[object.brdf as usize] else {
+                        panic!("{} is glossy", object.name)
+                    };
+                    exponents.push(p.exponent);
+                }
+                (Shape::Sphere(s), Some(e)) => {
+                    let power = e.radiance.x * s.radius * s.radius;
+                    assert!((power - 1.0).abs() < 1e-3, "{}: {power}", object.name);
+                    radii.push(s.radius);
+                }
+                _ => panic!("{}: only plates and spherical lights", object.name),
+            }
+        }
+        assert_eq!((exponents.len(), radii.len()), (4, 4));
+        assert!(exponents.windows(2).all(|w| w[0] > w[1]), "{exponents:?}");
+        assert!(radii.windows(2).all(|w| w[0] < w[1]), "{radii:?}");
+    }
+
     #[test]
     fn written_scene_loads_back_the_same() {
         let dir = std::env::temp_dir().join(format!("scenefmt-write-{}", std::process::id()));
@@ -408,7 +450,6 @@ mod tests {
     }
 
     #[test]
-    #[ignore = "needs geometry: Mesh::cube, Mesh::load_obj, Mesh::from_obj_str and Mesh::transformed"]
     fn every_written_scene_loads_back_the_same() {
         let dir = std::env::temp_dir().join(format!("scenefmt-write-all-{}", std::process::id()));
         for s in BUILTIN_SCENES {

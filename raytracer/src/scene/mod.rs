@@ -7,22 +7,21 @@
 pub mod builtin;
 pub mod error;
 pub mod format;
-#[cfg(test)]
-mod fuzz;
 pub mod load;
 
 pub use builtin::{BUILTIN_SCENES, BuiltinScene, builtin, load_builtin, write_builtin};
 pub use error::SceneError;
 pub use load::{SceneOrigin, load_file, load_str};
-mod interaction;
 
 use crate::brdf::Brdf;
 use crate::camera::{Camera, CameraParams};
 use crate::geometry::{Geometry, Shape};
 use crate::light::{AreaLight, AreaShape, Light};
-use crate::math::{Color, Ray};
+use crate::math::{Color, Ray, Vec3A};
 
-pub use interaction::Interaction;
+/// Geometry makes interactions; [`Scene::intersect`] returns them, so they
+/// are named here too (the exercises import them with the scene).
+pub use crate::geometry::Interaction;
 
 /// The largest max depth D a scene file or a command line may ask for.
 pub const MAX_DEPTH_LIMIT: u32 = 65_535;
@@ -59,17 +58,6 @@ pub struct RenderSettings {
     /// Depth from which Russian roulette may end a path (Mitsuba's `rr_depth`).
     pub rr_depth: u32,
     pub seed: u64,
-}
-
-impl RenderSettings {
-    /// Render options with this scene's samples per pixel and seed.
-    pub fn render_options(&self) -> crate::render::RenderOptions {
-        crate::render::RenderOptions {
-            spp: self.spp,
-            seed: self.seed,
-            ..Default::default()
-        }
-    }
 }
 
 impl Default for RenderSettings {
@@ -122,6 +110,28 @@ pub struct ObjectInfo {
     pub brdf: u32,
     /// Index into [`Scene::lights`] if the shape emits.
     pub light: Option<u32>,
+}
+
+/// A light picked by [`Scene::choose_light`].
+#[derive(Clone, Copy, Debug)]
+pub struct LightChoice<'a> {
+    /// Its index in [`Scene::lights`].
+    pub index: u32,
+    pub light: &'a Light,
+    /// The probability `P(light)` with which it was picked.
+    pub pmf: f32,
+}
+
+/// An emitter found by a ray ([`Scene::emitter_hit`]): the light's index,
+/// the radiance it sends back along the ray, and the point and normal where
+/// the ray met it (for the environment: the ray's origin and a zero normal,
+/// which its pdf ignores).
+#[derive(Clone, Copy, Debug)]
+pub struct EmitterHit {
+    pub light: u32,
+    pub le: Color,
+    pub p: Vec3A,
+    pub n: Vec3A,
 }
 
 /// A scene ready to render: camera, geometry with its BVH, BRDFs and lights.
@@ -188,7 +198,7 @@ impl Scene {
         let geometry = Geometry::new(shapes);
         let bounds = geometry.bounds();
         let (center, radius) = if bounds.is_empty() {
-            (crate::math::Vec3A::ZERO, 1.0)
+            (Vec3A::ZERO, 1.0)
         } else {
             let c = bounds.centroid();
             (c, (bounds.max - c).length().max(1e-3))
@@ -225,9 +235,7 @@ impl Scene {
     /// The first surface along `ray`, with everything shading needs.
     #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<Interaction> {
-        let hit = self.geometry.intersect(ray)?;
-        let sp = self.geometry.surface_point(ray, &hit);
-        Some(Interaction::new(sp, hit.t, -ray.d))
+        self.geometry.interaction(ray)
     }
 
     /// Whether nothing blocks `ray` before its `t_max` (a shadow ray).
@@ -236,17 +244,21 @@ impl Scene {
         !self.geometry.occluded(ray)
     }
 
-    /// Picks a light for next event estimation: uniformly, as Mitsuba does
-    /// (each of `n` lights with probability `1/n`). Returns the index, the
-    /// light and the probability.
+    /// Picks a light for next event estimation with the number `u`:
+    /// uniformly, as Mitsuba does (each of `n` lights with probability
+    /// `1/n`). `None` if the scene has no light.
     #[inline]
-    pub fn choose_light(&self, u: f32) -> Option<(u32, &Light, f32)> {
+    pub fn choose_light(&self, u: f32) -> Option<LightChoice<'_>> {
         let n = self.lights.len();
         if n == 0 {
             return None;
         }
         let i = ((u * n as f32) as usize).min(n - 1);
-        Some((i as u32, &self.lights[i], 1.0 / n as f32))
+        Some(LightChoice {
+            index: i as u32,
+            light: &self.lights[i],
+            pmf: 1.0 / n as f32,
+        })
     }
 
     /// Probability that [`Self::choose_light`] picks light `index`.
@@ -257,7 +269,7 @@ impl Scene {
 
     /// Radiance arriving along a ray that left the scene (the environment, or black).
     #[inline]
-    pub fn escaped_radiance(&self, d: crate::math::Vec3A) -> Color {
+    pub fn escaped_radiance(&self, d: Vec3A) -> Color {
         match self.environment.map(|i| &self.lights[i as usize]) {
             Some(Light::Environment(env)) => env.environment_radiance(d),
             _ => Color::ZERO,
@@ -270,19 +282,55 @@ impl Scene {
         &self.brdfs[self.objects[it.shape as usize].brdf as usize]
     }
 
-    /// The area light of the shape hit, if it emits, with its index.
+    /// The index in [`Scene::lights`] of the area light of the shape hit, if
+    /// it emits.
     #[inline]
-    pub fn area_light(&self, it: &Interaction) -> Option<(u32, &Light)> {
-        self.objects[it.shape as usize]
-            .light
-            .map(|i| (i, &self.lights[i as usize]))
+    pub fn area_light(&self, it: &Interaction) -> Option<u32> {
+        self.objects[it.shape as usize].light
+    }
+
+    /// `L_e` that light `light` sends from its point with normal `n` in the
+    /// direction `w` (pointing away from the light); for a point light its
+    /// intensity `I` (W/sr), which plays the same role where a light path
+    /// starts (no ray hits a point light, so a surface never asks for it).
+    /// The one place emission is looked up: [`Scene::emitted`] and
+    /// [`Scene::emitter_hit`] ask it, and the vertices of light and
+    /// bidirectional tracing too.
+    #[inline]
+    pub fn emitted_by(&self, light: u32, n: Vec3A, w: Vec3A) -> Color {
+        match &self.lights[light as usize] {
+            Light::Point(l) => l.intensity,
+            l => l.le(n, w),
+        }
     }
 
     /// Radiance emitted by the hit surface towards `it.wo` (zero unless it is a light).
     #[inline]
     pub fn emitted(&self, it: &Interaction) -> Color {
         self.area_light(it)
-            .map_or(Color::ZERO, |(_, l)| l.le(it.ng, it.wo))
+            .map_or(Color::ZERO, |light| self.emitted_by(light, it.ng, it.wo))
+    }
+
+    /// What emitter, if any, `ray` reached: the area light of the surface
+    /// `hit`, or the environment if the ray escaped (`hit` is `None`). `None`
+    /// if no light was reached or it sends nothing back.
+    #[inline]
+    pub fn emitter_hit(&self, ray: &Ray, hit: Option<&Interaction>) -> Option<EmitterHit> {
+        let found = match hit {
+            Some(it) => self.area_light(it).map(|light| EmitterHit {
+                light,
+                le: self.emitted_by(light, it.ng, it.wo),
+                p: it.p,
+                n: it.ng,
+            }),
+            None => self.environment.map(|light| EmitterHit {
+                light,
+                le: self.escaped_radiance(ray.d),
+                p: ray.o,
+                n: Vec3A::ZERO,
+            }),
+        };
+        found.filter(|e| e.le != Color::ZERO)
     }
 }
 

@@ -354,7 +354,6 @@ mod tests {
     }
 
     #[test]
-    #[ignore = "needs geometry: Mesh::load_obj and Mesh::transformed"]
     fn a_mesh_next_to_the_scene_file_is_loaded_and_placed() {
         let dir = std::env::temp_dir().join(format!("scenefmt-mesh-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();

@@ -1,7 +1,11 @@
 //! A surface interaction: a hit point seen from the ray that found it.
+//!
+//! Lecture topic: the point `x` and the direction `ω_o` of the rendering
+//! equation `L_o(x, ω_o)`. Geometry makes it ([`super::Geometry::interaction`]);
+//! every estimator starts from one.
 
+use super::SurfacePoint;
 use crate::frame::Frame;
-use crate::geometry::SurfacePoint;
 use crate::math::{Ray, Vec2, Vec3A};
 
 /// A ray's hit, in the form the estimators of the lecture use: the point `x`,

@@ -12,12 +12,10 @@
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
-use super::builtin::BUILTIN_SCENES;
-use super::load::{SceneOrigin, load_str};
-use super::{Scene, SceneError};
-use crate::integrator::{Direct, Integrator, PathTracer};
-use crate::math::UVec2;
-use crate::sampling::Sampler;
+use raytracer::integrator::{Direct, Integrator, PathTracer};
+use raytracer::math::UVec2;
+use raytracer::sampling::Sampler;
+use raytracer::scene::{BUILTIN_SCENES, Scene, SceneError, SceneOrigin, load_str};
 
 /// Cases per built-in scene: 7 scenes × 500 cases take about a second (56 000 cases
 /// were run once, clean, in 40 s).

@@ -1,0 +1,50 @@
+//! The connection to the camera: a light-subpath vertex joined to the lens.
+//!
+//! Lecture topic: "The connection to the camera" (light tracing) — the
+//! strategy `t = 1` of bidirectional tracing. The camera's importance `W_e`
+//! plays the role that `L_e` plays for lights; the contribution lands on the
+//! pixel where the vertex is seen, so it is splatted there.
+
+use super::vertex::{Vertex, visible};
+use crate::camera::CameraSample;
+use crate::math::{Color, Vec2};
+use crate::scene::Scene;
+
+/// A light-subpath vertex joined to the lens.
+#[derive(Clone, Copy, Debug)]
+pub struct CameraConnection {
+    /// The lens point, the raster position where the vertex is seen, the
+    /// importance and density of the connection.
+    pub camera: CameraSample,
+    /// The contribution to splat at `camera.raster`.
+    pub value: Color,
+}
+
+/// The `t = 1` connection: light-subpath vertex `q` joined to a lens point
+/// chosen by `u_lens`. Its contribution to the pixel at `CameraSample::raster`
+/// is (Veach's light tracing estimate)
+///
+/// ```text
+///   β_q · f(ω_o, ω_c) · |cos θ_q| · G-part · W_e / p_A(lens)
+///     = β_q · f(ω_o, ω_c) · |cos θ_q| · W_e / p_ω(lens),
+/// ```
+///
+/// because `G(q, lens) / p_A(lens) = |cos θ_q| |cos θ_lens| / (d² p_A)` and
+/// `camera.sample_wi` returns `p_ω = d² / (cos θ_lens · A_lens)` (the lens
+/// density per unit solid angle at `q`). Visibility-tested. `None` if the
+/// point is off the film, behind the camera or in shadow.
+pub fn connect_to_camera(scene: &Scene, q: &Vertex, u_lens: Vec2) -> Option<CameraConnection> {
+    if !q.is_connectible(scene) {
+        return None;
+    }
+    let cs = scene.camera.sample_wi(q.p(), u_lens)?;
+    let l = q.beta * q.f(scene, cs.wi) * (q.abs_cos(cs.wi) * cs.we / cs.pdf_w);
+    if l == Color::ZERO {
+        return None;
+    }
+    let lens = Vertex::camera(cs.p_lens, Color::ZERO);
+    visible(scene, q, &lens).then_some(CameraConnection {
+        camera: cs,
+        value: l,
+    })
+}

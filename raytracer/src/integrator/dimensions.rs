@@ -1,0 +1,206 @@
+//! The random-number layout of every integrator: which numbers each step
+//! draws, in which order.
+//!
+//! Lecture topic: Monte Carlo — every random number is a pure function of
+//! (seed, pixel or path, sample, dimension), and the dimension is simply the
+//! count of numbers drawn before it in the same pixel sample. So the order
+//! and the number of draws are part of every picture: one more draw anywhere
+//! shifts all later dimensions and changes the image bit for bit (and every
+//! reference image of the grader). Each step therefore draws through one of
+//! the named [`Draw`]s below, and nowhere else (a test holds the integrators
+//! to that); a new draw needs a name here and a line in the layouts.
+//!
+//! # Steps
+//!
+//! | step | draws |
+//! |---|---|
+//! | camera ray ([`super::camera_ray`]) | [`FILM`] (2), [`LENS`] (2) |
+//! | light sample ([`super::nee::sample_light_point`]) | [`LIGHT_CHOICE`] (1), [`LIGHT_POINT`] (2) |
+//! | continuation ([`super::continuation::sample_continuation`]) | [`BRDF_LOBE`] (1), [`BRDF_DIRECTION`] (2) |
+//! | Russian roulette ([`super::roulette::russian_roulette`]) | [`ROULETTE`] (1), none when the path ends for sure (`q ≤ 0`) |
+//! | light path's start ([`super::subpath::light_subpath`]) | [`LIGHT_CHOICE`] (1), [`EMISSION_POINT`] (2), [`EMISSION_DIRECTION`] (2) |
+//! | connection to the camera (light tracing, `t = 1`) | [`LENS`] (2) |
+//! | occlusion ray (ambient occlusion) | [`AO_DIRECTION`] (2) |
+//!
+//! # Layouts
+//!
+//! In order, for one pixel sample. "Roulette" is drawn only where Russian
+//! roulette plays (from `rr_depth` bounces on, or with naive recursion's
+//! `--roulette`).
+//!
+//! - **direct**: camera ray; at a hit: light sample, continuation.
+//! - **ao**: camera ray; at a hit: occlusion ray.
+//! - **path** (and `path-brdf`, `path-nee`): camera ray; then per bounce, at a
+//!   hit below the maximum depth: light sample (not for `path-brdf`),
+//!   continuation, roulette.
+//! - **naive**: camera ray; at a hit below the maximum depth, for each of its
+//!   `N` branches in turn: continuation, roulette, then that branch's whole
+//!   recursion, depth first.
+//! - **light**: light path's start; per bounce of the light subpath:
+//!   continuation, roulette; then for each light vertex in order: connection
+//!   to the camera.
+//! - **bdpt**: the camera subpath (camera ray; per bounce: continuation,
+//!   roulette), the light subpath (light path's start; per bounce:
+//!   continuation, roulette), then the strategies for `t = 1, 2, …` and
+//!   within each `s = 0, 1, …`: `t = 1` draws a connection to the camera,
+//!   `s = 1` (`t ≥ 2`, at a vertex that can be connected to) a light sample,
+//!   the others nothing.
+
+use crate::sampling::Draw;
+
+/// The position of a camera sample within its pixel (a box filter).
+pub const FILM: Draw<2> = Draw::new("position within the pixel");
+/// A point on the lens (a pinhole ignores it but draws it all the same).
+pub const LENS: Draw<2> = Draw::new("point on the lens");
+/// Which light: next event estimation, and where a light path starts.
+pub const LIGHT_CHOICE: Draw<1> = Draw::new("which light");
+/// A point on the chosen light, as seen from the receiving point.
+pub const LIGHT_POINT: Draw<2> = Draw::new("point on the light, seen from the receiver");
+/// The point on the chosen light where a light path starts.
+pub const EMISSION_POINT: Draw<2> = Draw::new("point where a light path starts");
+/// The direction in which a light path leaves the light.
+pub const EMISSION_DIRECTION: Draw<2> = Draw::new("direction a light path leaves in");
+/// Which lobe of the BRDF (glass: reflection or refraction).
+pub const BRDF_LOBE: Draw<1> = Draw::new("BRDF lobe");
+/// The direction within the lobe.
+pub const BRDF_DIRECTION: Draw<2> = Draw::new("direction from the BRDF");
+/// Whether Russian roulette lets the path go on.
+pub const ROULETTE: Draw<1> = Draw::new("Russian roulette");
+/// The cosine-distributed direction of an occlusion ray.
+pub const AO_DIRECTION: Draw<2> = Draw::new("direction of an occlusion ray");
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::integrator::{
+        AmbientOcclusion, Bdpt, Direct, DirectStrategy, Integrator, LightTracer, NaiveRecursive,
+        PathTracer,
+    };
+    use crate::math::UVec2;
+    use crate::sampling::Sampler;
+    use crate::scene::Scene;
+
+    /// The number of dimensions one pixel sample of `integrator` uses.
+    fn dimensions_used(scene: &Scene, integrator: &dyn Integrator) -> u32 {
+        let mut sampler = Sampler::new(1, 2, 3);
+        let mut splats = Vec::new();
+        let pixel = UVec2::new(scene.camera.width / 2, scene.camera.height / 2);
+        integrator.sample(scene, pixel, &mut sampler, &mut splats);
+        sampler.dimension()
+    }
+
+    /// The layouts of the module doc, counted on the furnace (every ray hits
+    /// its emitting Lambert sphere, every BRDF sample succeeds, the only
+    /// light is always chosen) with the depth small and no roulette.
+    #[test]
+    fn each_integrator_draws_its_documented_layout() {
+        let scene = Scene::builtin("furnace").unwrap();
+        let camera_ray = FILM.dimensions() + LENS.dimensions();
+        let light_sample = LIGHT_CHOICE.dimensions() + LIGHT_POINT.dimensions();
+        let continuation = BRDF_LOBE.dimensions() + BRDF_DIRECTION.dimensions();
+        let light_start = LIGHT_CHOICE.dimensions()
+            + EMISSION_POINT.dimensions()
+            + EMISSION_DIRECTION.dimensions();
+        let to_camera = LENS.dimensions();
+        assert_eq!(
+            dimensions_used(&scene, &Direct),
+            camera_ray + light_sample + continuation,
+            "direct"
+        );
+        assert_eq!(
+            dimensions_used(&scene, &AmbientOcclusion::default()),
+            camera_ray + AO_DIRECTION.dimensions(),
+            "ao"
+        );
+        // Max depth 3: two bounces, each with a light sample (not for
+        // path-brdf) and a continuation.
+        for (strategy, per_bounce) in [
+            (DirectStrategy::Mis, light_sample + continuation),
+            (DirectStrategy::LightOnly, light_sample + continuation),
+            (DirectStrategy::BrdfOnly, continuation),
+        ] {
+            let path = PathTracer {
+                max_depth: Some(3),
+                rr_depth: 100,
+                strategy,
+            };
+            assert_eq!(
+                dimensions_used(&scene, &path),
+                camera_ray + 2 * per_bounce,
+                "{strategy:?}"
+            );
+        }
+        // Max depth 2, two branches: each branch continues once and stops.
+        let naive = NaiveRecursive::new(vec![2], Some(2));
+        assert_eq!(
+            dimensions_used(&scene, &naive),
+            camera_ray + 2 * continuation,
+            "naive"
+        );
+        // Max depth 2: the light subpath keeps y_0 and y_1 (no bounce), both
+        // joined to the camera.
+        let light = LightTracer {
+            max_depth: Some(2),
+            rr_depth: 100,
+        };
+        assert_eq!(
+            dimensions_used(&scene, &light),
+            light_start + 2 * to_camera,
+            "light"
+        );
+        // Max depth 2: camera subpath z_0 z_1 z_2 (one continuation, at
+        // z_1), light subpath y_0 y_1; strategies (1,1) and (2,1) connect to
+        // the camera, (1,2) samples a light, (0,2) and (0,3) draw nothing.
+        let bdpt = Bdpt {
+            max_depth: Some(2),
+            rr_depth: 100,
+            strategy_images: None,
+        };
+        assert_eq!(
+            dimensions_used(&scene, &bdpt),
+            camera_ray + continuation + light_start + 2 * to_camera + light_sample,
+            "bdpt"
+        );
+        // Roulette adds its one number per bounce once it plays (from the
+        // first bounce on here; the path may end after one or two).
+        let path = PathTracer {
+            max_depth: Some(3),
+            rr_depth: 1,
+            strategy: DirectStrategy::BrdfOnly,
+        };
+        let used = dimensions_used(&scene, &path);
+        let bounce = continuation + ROULETTE.dimensions();
+        assert!(
+            used == camera_ray + bounce || used == camera_ray + 2 * bounce,
+            "{used}"
+        );
+    }
+
+    /// Every random number an integrator draws goes through a named `Draw`:
+    /// no `next_1d`/`next_2d` on a sampler in the code of `integrator/`
+    /// (comments aside, and this file, which names them).
+    #[test]
+    fn integrators_draw_only_through_named_dimensions() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/integrator");
+        let mut raw = Vec::new();
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.ends_with("dimensions.rs") {
+                continue;
+            }
+            let text = std::fs::read_to_string(&path).unwrap();
+            for (i, line) in text.lines().enumerate() {
+                let code = line.split("//").next().unwrap_or("");
+                if code.contains(".next_1d()") || code.contains(".next_2d()") {
+                    let name = path.file_name().unwrap().to_string_lossy();
+                    raw.push(format!("integrator/{name}:{}: {}", i + 1, line.trim()));
+                }
+            }
+        }
+        assert!(
+            raw.is_empty(),
+            "draws without a name (use a Draw of integrator::dimensions):\n{}",
+            raw.join("\n")
+        );
+    }
+}

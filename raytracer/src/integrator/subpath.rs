@@ -1,0 +1,225 @@
+//! Random walks: the camera subpath and the light subpath.
+//!
+//! Lecture topic: "Paths" — path tracing grows a path from the camera, light
+//! tracing from a light, bidirectional tracing both. Each walk samples the
+//! BRDF at every surface it meets and records, for every new vertex, its
+//! forward area density and, for the vertex before, the reverse one (see
+//! [`super::vertex`]).
+//!
+//! **Depth.** Mitsuba's `max_depth = D` allows at most `D − 1` scattering
+//! vertices, i.e. `s + t − 2 ≤ D − 1`: paths of at most `D + 1` vertices.
+//!
+//! Not handled (documented limit): environment lights on the light side.
+//! Light subpaths that start at the environment are dropped; bidirectional
+//! tracing counts the environment through camera paths that escape (`s = 0`,
+//! the only strategy that can then produce such paths, with weight 1).
+
+use super::continuation::sample_continuation;
+use super::dimensions::{EMISSION_DIRECTION, EMISSION_POINT, LIGHT_CHOICE};
+use super::roulette::russian_roulette;
+use super::vertex::{MAX_VERTICES, Subpath, Vertex, pdf_w_to_a};
+use crate::brdf::TransportMode;
+use crate::math::{Color, Ray, UVec2, Vec3A};
+use crate::sampling::Sampler;
+use crate::scene::{LightChoice, Scene};
+
+/// How a random walk ended.
+#[derive(Clone, Copy, Debug)]
+pub struct WalkEnd {
+    /// Number of vertices in the buffer (the start vertex included).
+    pub vertices: usize,
+    /// The ray that left the scene, if one did (camera subpaths only: it
+    /// sees the environment).
+    pub escaped: Option<EscapedRay>,
+}
+
+/// A camera subpath's last ray, which hit nothing.
+#[derive(Clone, Copy, Debug)]
+pub struct EscapedRay {
+    /// The throughput it carries (that a vertex at its end would have had).
+    pub beta: Color,
+    /// Its direction, where the environment is looked up.
+    pub d: Vec3A,
+}
+
+/// Extends the subpath whose last vertex is `path[0..start+1]` by a random
+/// walk: `ray` leaves `path[start]` with solid-angle density `pdf_w`, and
+/// `beta` is the throughput the first new vertex gets. At every surface the
+/// BRDF is sampled in transport mode `mode`; each new vertex records
+/// `pdf_fwd_a`, and its predecessor `pdf_rev_a` (the reverse walk's density, the
+/// BRDF's `pdf(ω_i → ω_o)`). Stops at `max_vertices`, at a failed sample or by
+/// Russian roulette after `rr_depth` scattering events (which divides the
+/// survivors' throughput by their probability `q`). Draws, per surface below
+/// `max_vertices`: a continuation, then (from `rr_depth` on) the roulette's
+/// number.
+#[allow(clippy::too_many_arguments)]
+pub fn random_walk(
+    scene: &Scene,
+    path: &mut Subpath,
+    start: usize,
+    mut ray: Ray,
+    mut beta: Color,
+    mut pdf_w: f32,
+    mode: TransportMode,
+    max_vertices: usize,
+    rr_depth: u32,
+    sampler: &mut Sampler,
+) -> WalkEnd {
+    let max_vertices = max_vertices.min(MAX_VERTICES);
+    let mut n = start + 1;
+    // The walk's own throughput Π f |cos| / p (without the start's L_e or
+    // W_e), for Russian roulette; `eta_scale` undoes glass's 1/η² on radiance.
+    let mut walk = Color::ONE;
+    let mut eta_scale = 1.0f32;
+    let mut scatterings = 0u32;
+    while n < max_vertices {
+        let Some(it) = scene.intersect(&ray) else {
+            let escaped =
+                (mode == TransportMode::Radiance).then_some(EscapedRay { beta, d: ray.d });
+            return WalkEnd {
+                vertices: n,
+                escaped,
+            };
+        };
+        let mut v = Vertex::surface(scene, it, beta);
+        v.pdf_fwd_a = pdf_w_to_a(pdf_w, &path[n - 1], &v);
+        path[n] = v;
+        n += 1;
+        if n >= max_vertices {
+            break;
+        }
+        let brdf = scene.brdf(&it);
+        let Some(c) = sample_continuation(&it, brdf, mode, sampler) else {
+            break;
+        };
+        let bs = c.sample;
+        pdf_w = bs.pdf_w;
+        // The reverse walk would sample ω_o from ω_i.
+        let mut pdf_rev_w = brdf.pdf(bs.wi, c.wo, it.uv);
+        if bs.is_delta {
+            path[n - 1].delta = true;
+            pdf_w = 0.0;
+            pdf_rev_w = 0.0;
+        }
+        beta *= c.weight;
+        walk *= c.weight;
+        if mode == TransportMode::Radiance {
+            eta_scale *= bs.eta * bs.eta;
+        }
+        let (cur, prev) = (path[n - 1], path[n - 2]);
+        path[n - 2].pdf_rev_a = pdf_w_to_a(pdf_rev_w, &cur, &prev);
+        ray = c.ray;
+        scatterings += 1;
+        if scatterings >= rr_depth {
+            let Some(q) = russian_roulette(walk, eta_scale, sampler) else {
+                break;
+            };
+            beta /= q;
+            walk /= q;
+        }
+    }
+    WalkEnd {
+        vertices: n,
+        escaped: None,
+    }
+}
+
+/// The camera subpath `z_0 z_1 …` of a pixel sample: `z_0` on the lens with
+/// `β = W_e cos θ / (p_A p_ω) = 1` (a pixel sample's importance is 1), then a
+/// random walk in radiance mode. Draws the camera ray's numbers, then the
+/// walk's.
+pub fn camera_subpath(
+    scene: &Scene,
+    pixel: UVec2,
+    sampler: &mut Sampler,
+    path: &mut Subpath,
+    max_vertices: usize,
+    rr_depth: u32,
+) -> WalkEnd {
+    let ray = super::camera_ray(scene, pixel, sampler);
+    path[0] = Vertex::camera(ray.o, Color::ONE);
+    if max_vertices < 2 {
+        return WalkEnd {
+            vertices: 1,
+            escaped: None,
+        };
+    }
+    // p_ω of the primary ray over the whole film (see `camera::pdf_we`).
+    let pdf_w = scene.camera.pdf_we(&ray).pdf_w;
+    random_walk(
+        scene,
+        path,
+        0,
+        ray,
+        Color::ONE,
+        pdf_w,
+        TransportMode::Radiance,
+        max_vertices,
+        rr_depth,
+        sampler,
+    )
+}
+
+/// The light subpath `y_0 y_1 …`: a light chosen with `P(light)`, a point
+/// `y_0` with area density `p_A` and a direction with `p_ω` from
+/// `sample_le`; `y_0` stores `β_0 = 1/(P(light) p_A)` (its `L_e(ω)` is
+/// applied by whoever leaves it), the walk starts with
+/// `β_1 = L_e(y_0, ω) |cos θ_0| / (P(light) p_A p_ω)`, in importance mode.
+/// Returns the number of vertices (0 if no light path could start, e.g. the
+/// environment was chosen: not supported on the light side). Draws
+/// [`LIGHT_CHOICE`], [`EMISSION_POINT`] and [`EMISSION_DIRECTION`] (always,
+/// also when no path starts), then the walk's.
+pub fn light_subpath(
+    scene: &Scene,
+    sampler: &mut Sampler,
+    path: &mut Subpath,
+    max_vertices: usize,
+    rr_depth: u32,
+) -> usize {
+    let u_choice = LIGHT_CHOICE.draw(sampler);
+    let (u_pos, u_dir) = (
+        EMISSION_POINT.draw(sampler),
+        EMISSION_DIRECTION.draw(sampler),
+    );
+    if max_vertices == 0 {
+        return 0;
+    }
+    let Some(LightChoice { index, light, pmf }) = scene.choose_light(u_choice) else {
+        return 0;
+    };
+    if light.is_environment() {
+        return 0;
+    }
+    let Some(e) = light.sample_le(u_pos, u_dir) else {
+        return 0;
+    };
+    if e.pdf_a <= 0.0 || e.pdf_w <= 0.0 || e.le == Color::ZERO {
+        return 0;
+    }
+    let pdf_origin = pmf * e.pdf_a;
+    path[0] = Vertex::light(
+        index,
+        e.ray.o,
+        e.n,
+        Color::splat(1.0 / pdf_origin),
+        pdf_origin,
+    );
+    if max_vertices < 2 {
+        return 1;
+    }
+    let cos0 = path[0].abs_cos(e.ray.d);
+    let beta = e.le * (cos0 / (pdf_origin * e.pdf_w));
+    random_walk(
+        scene,
+        path,
+        0,
+        e.ray,
+        beta,
+        e.pdf_w,
+        TransportMode::Importance,
+        max_vertices,
+        rr_depth,
+        sampler,
+    )
+    .vertices
+}
