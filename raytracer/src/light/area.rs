@@ -15,7 +15,7 @@
 use crate::frame::Frame;
 use crate::geometry::{Quad, Sphere};
 use crate::light::{Emission, LightSample};
-use crate::math::{Color, INV_PI, PI, Ray, RayPdf, Vec2, Vec3A};
+use crate::math::{Color, INV_PI, PI, Ray, RayPdf, Vec2, Vec3A, ray_offset};
 use crate::sampling::warp::{cosine_hemisphere, uniform_sphere};
 
 /// The surface of an area light.
@@ -91,10 +91,14 @@ impl AreaLight {
     /// cone is only a better choice from clearly outside. A receiver *on* the
     /// sphere (the furnace: the light shining on its own inner wall) would
     /// otherwise be taken for an outside point by rounding, and the cone's
-    /// nearest intersection would be the receiver itself.
+    /// nearest intersection would be the receiver itself. The shell is the
+    /// ray offset of the sphere's coordinates ([`ray_offset`]): far wider
+    /// than the rounding of a point on the sphere (a few ulps of them), and
+    /// the same fraction of the sphere at every scale of the scene.
     #[inline]
     fn inside_sphere(s: &Sphere, p: Vec3A) -> bool {
-        (p - s.center).length_squared() <= s.radius * s.radius * (1.0 + 1e-3)
+        let shell = s.radius + ray_offset(s.center.abs().max_element() + s.radius);
+        (p - s.center).length_squared() <= shell * shell
     }
 
     /// Next event estimation from the receiver `p` (see [`crate::light::Light::sample_li`]).
