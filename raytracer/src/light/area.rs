@@ -223,6 +223,7 @@ impl AreaLight {
         }
         let d = frame.to_world(local);
         Some(Emission {
+            p,
             ray: Ray::spawn(p, n, d),
             n,
             le: self.radiance,
@@ -486,7 +487,8 @@ mod tests {
 
     /// Flux by light tracing's estimator `L_e |cos θ| / (p_A p_ω)` equals
     /// `π A L` per side and `power()`; `pdf_le` agrees with each emission,
-    /// which leaves from the light's surface on an emitting side. With
+    /// whose point lies on the light's surface and whose ray leaves it on an
+    /// emitting side. With
     /// cosine sampling the estimator is constant (rounding tolerance only);
     /// a two-sided light must pick each side half the time (2^14 samples,
     /// std. error 0.0039, tolerance 0.03 > 7 σ: false failure < 1e-11).
@@ -507,8 +509,14 @@ mod tests {
                 let mut front = 0;
                 for i in 0..n {
                     let mut smp = Sampler::new(60, i, 0);
-                    let e = l.sample_le(smp.next_2d(), smp.next_2d()).unwrap();
-                    let RayPdf { pdf_a, pdf_w } = l.pdf_le(e.ray.o, e.n, e.ray.d);
+                    let u_pos = smp.next_2d();
+                    let e = l.sample_le(u_pos, smp.next_2d()).unwrap();
+                    let RayPdf { pdf_a, pdf_w } = l.pdf_le(e.p, e.n, e.ray.d);
+                    // The vertex on the surface (light tracing once stored
+                    // the offset origin: the lamp moved by the offset), the
+                    // ray's origin just off it, on the side it leaves to.
+                    assert_eq!(l.shape.sample_area(u_pos).0, e.p);
+                    assert!(e.ray.o != e.p && (e.ray.o - e.p).dot(e.ray.d) > 0.0);
                     assert!((pdf_a - e.pdf_a).abs() <= 1e-5 * e.pdf_a);
                     assert!((pdf_w - e.pdf_w).abs() <= 1e-3 * e.pdf_w);
                     let cos = e.n.dot(e.ray.d);
