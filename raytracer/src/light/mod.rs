@@ -172,7 +172,8 @@ impl Light {
     /// Emitted flux `Φ` (W): `π A L` per emitting side of an area light,
     /// `4π I` for a point light, `π r² ∫ L dω` for the environment (the flux
     /// through the scene's bounding disk; depends on the scene bounds).
-    /// Used to choose lights in proportion to their power.
+    /// Lights are chosen in proportion to it (`Scene::choose_light`, unless
+    /// `Scene::set_light_selection` asks for a uniform choice).
     #[inline]
     pub fn power(&self) -> Color {
         match self {
