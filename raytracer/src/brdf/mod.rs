@@ -185,27 +185,6 @@ impl Brdf {
             Brdf::Lambert(_) | Brdf::Phong(_) => false,
         }
     }
-
-    /// Whether the model transmits light to the other side (glass).
-    #[inline]
-    pub fn has_transmission(&self) -> bool {
-        matches!(self, Brdf::Glass(_))
-    }
-
-    /// A rough reflectance in `[0, 1]³`, for Russian roulette and previews:
-    /// the albedo at normal incidence (Lambert ρ, Phong ρ_s, mirror
-    /// reflectance, glass tint, which is the total of reflection and
-    /// transmission).
-    #[inline]
-    pub fn albedo_hint(&self, uv: Vec2) -> Color {
-        match self {
-            Brdf::Lambert(m) => m.albedo.eval(uv),
-            Brdf::Phong(m) => m.albedo,
-            Brdf::Mirror(m) => m.reflectance,
-            Brdf::Glass(m) => m.tint,
-            Brdf::OneSided(m) => m.albedo_hint(uv),
-        }
-    }
 }
 
 /// Two-sidedness of the reflective models, for `eval` and `pdf`: seen from
