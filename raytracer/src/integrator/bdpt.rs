@@ -37,7 +37,7 @@ use super::dimensions::LENS;
 use super::mis_weight::mis_weight;
 use super::nee::{self, LightPoint};
 use super::subpath::{EscapedRay, camera_subpath, light_subpath};
-use super::vertex::{EMPTY_VERTEX, MAX_VERTICES, Subpath, Vertex, path_vertices, visible};
+use super::vertex::{Vertex, path_vertices, visible, with_subpaths};
 use crate::film::Splat;
 use crate::math::{Color, UVec2, Vec2};
 use crate::sampling::Sampler;
@@ -88,8 +88,8 @@ struct Connection {
 /// The unweighted contribution of strategy `(s, t)`; `None` if it is zero.
 fn connect(
     scene: &Scene,
-    light: &Subpath,
-    camera: &Subpath,
+    light: &[Vertex],
+    camera: &[Vertex],
     s: usize,
     t: usize,
     sampler: &mut Sampler,
@@ -178,24 +178,27 @@ impl Bdpt {
         splats: &mut Vec<Splat>,
     ) -> Color {
         let max_vertices = path_vertices(self.max_depth); // D + 1
-        let mut camera: Subpath = [EMPTY_VERTEX; MAX_VERTICES];
-        let mut light: Subpath = [EMPTY_VERTEX; MAX_VERTICES];
-        let cam = camera_subpath(
-            scene,
-            pixel,
-            sampler,
-            &mut camera,
-            max_vertices,
-            self.rr_depth,
-        );
-        let n_light = light_subpath(
-            scene,
-            sampler,
-            &mut light,
-            max_vertices.saturating_sub(1),
-            self.rr_depth,
-        );
-        let n_camera = cam.vertices;
+        with_subpaths(|camera, light| {
+            let escaped =
+                camera_subpath(scene, pixel, sampler, camera, max_vertices, self.rr_depth);
+            light_subpath(scene, sampler, light, max_vertices - 1, self.rr_depth);
+            self.strategies(scene, light, camera, escaped, sampler, splats)
+        })
+    }
+
+    /// Sums the strategies of one pixel sample's two subpaths (or the one
+    /// selected by `strategy_images`).
+    fn strategies(
+        &self,
+        scene: &Scene,
+        light: &mut [Vertex],
+        camera: &mut [Vertex],
+        escaped: Option<EscapedRay>,
+        sampler: &mut Sampler,
+        splats: &mut Vec<Splat>,
+    ) -> Color {
+        let max_vertices = path_vertices(self.max_depth);
+        let (n_camera, n_light) = (camera.len(), light.len());
         let keep = |s: usize, t: usize| {
             self.strategy_images
                 .is_none_or(|f| f.s as usize == s && f.t as usize == t)
@@ -204,7 +207,7 @@ impl Bdpt {
         let mut l = Color::ZERO;
         // The environment seen by an escaping camera path: strategy
         // (0, n_C + 1), the only one that generates such paths (weight 1).
-        if let Some(EscapedRay { beta, d }) = cam.escaped
+        if let Some(EscapedRay { beta, d }) = escaped
             && n_camera < max_vertices
             && keep(0, n_camera + 1)
         {
@@ -215,11 +218,11 @@ impl Bdpt {
                 if s + t < 2 || s + t > max_vertices || !keep(s, t) {
                     continue;
                 }
-                let Some(c) = connect(scene, &light, &camera, s, t, sampler) else {
+                let Some(c) = connect(scene, light, camera, s, t, sampler) else {
                     continue;
                 };
                 let w = if weighted {
-                    mis_weight(scene, &mut light, &mut camera, s, t, c.sampled)
+                    mis_weight(scene, light, camera, s, t, c.sampled)
                 } else {
                     1.0
                 };

@@ -19,7 +19,7 @@
 //! light is a delta in position: no path can hit it, so the strategy `s = 0`
 //! is skipped for it.
 
-use super::vertex::{Subpath, Vertex};
+use super::vertex::Vertex;
 use crate::scene::Scene;
 
 /// Veach's MIS weight (power heuristic) of strategy `(s, t)` for the path
@@ -35,8 +35,8 @@ use crate::scene::Scene;
 /// touch a delta vertex (their density is zero).
 pub fn mis_weight(
     scene: &Scene,
-    light: &mut Subpath,
-    camera: &mut Subpath,
+    light: &mut [Vertex],
+    camera: &mut [Vertex],
     s: usize,
     t: usize,
     sampled: Option<Vertex>,

@@ -42,17 +42,12 @@
 //! normals in importance transport (our shapes shade with their geometric
 //! normal except smooth meshes).
 
+use std::cell::RefCell;
+
 use crate::frame::Frame;
 use crate::geometry::Interaction;
 use crate::math::{Color, Ray, Vec2, Vec3A};
 use crate::scene::Scene;
-
-/// Capacity of a subpath buffer (vertices). With unlimited depth Russian
-/// roulette ends paths long before: a path of 64 vertices has survived 63
-/// bounces (probability below 0.95^58 ≈ 0.05 even at the roulette's cap
-/// [`MAX_SURVIVAL`](super::roulette::MAX_SURVIVAL), and far less at
-/// realistic albedos); the truncation drops that tail.
-pub const MAX_VERTICES: usize = 64;
 
 /// No light at this vertex.
 pub const NO_LIGHT: u32 = u32::MAX;
@@ -92,7 +87,7 @@ pub struct Vertex {
     pub delta: bool,
 }
 
-/// A placeholder vertex for buffers (overwritten before use).
+/// A placeholder vertex (the constructors fill in what they know).
 pub const EMPTY_VERTEX: Vertex = Vertex {
     kind: VertexKind::Surface,
     it: Interaction {
@@ -115,14 +110,33 @@ pub const EMPTY_VERTEX: Vertex = Vertex {
     delta: false,
 };
 
-/// A subpath buffer, allocated once per sample on the stack.
-pub type Subpath = [Vertex; MAX_VERTICES];
+/// A subpath: its vertices from the lens or the light on, as many as the
+/// walk made (no fixed capacity: the max depth is the only limit, as for
+/// the path tracer).
+pub type Subpath = Vec<Vertex>;
 
-/// The number of vertices a subpath buffer may hold for Mitsuba's max depth
-/// `D` (paths of at most `D + 1` vertices), capped by [`MAX_VERTICES`].
+thread_local! {
+    /// Subpath buffers of this thread, kept between samples.
+    static SUBPATHS: RefCell<Vec<Subpath>> = const { RefCell::new(Vec::new()) };
+}
+
+/// Runs `f` with two subpath buffers of this thread (a camera and a light
+/// subpath): they keep their capacity from sample to sample, so a render
+/// allocates them once per thread, not once per sample. Their contents are
+/// whatever the last user left (the walks clear them).
+pub fn with_subpaths<R>(f: impl FnOnce(&mut Subpath, &mut Subpath) -> R) -> R {
+    let take = || SUBPATHS.with(|s| s.borrow_mut().pop().unwrap_or_default());
+    let (mut a, mut b) = (take(), take());
+    let result = f(&mut a, &mut b);
+    SUBPATHS.with(|s| s.borrow_mut().extend([a, b]));
+    result
+}
+
+/// The number of vertices a subpath may hold for Mitsuba's max depth `D`
+/// (paths of at most `D + 1` vertices); unlimited for `None`.
 #[inline]
 pub fn path_vertices(max_depth: Option<u32>) -> usize {
-    max_depth.map_or(MAX_VERTICES, |d| (d as usize + 1).min(MAX_VERTICES))
+    max_depth.map_or(usize::MAX, |d| d as usize + 1)
 }
 
 /// `p_A(y) = p_ω · |cos θ_y| / ‖x − y‖²` (thesis eq. 8.10): a solid-angle
@@ -304,6 +318,7 @@ impl Vertex {
         let emission = light.pdf_le(self.p(), self.it.ng, self.it.ng);
         scene.light_pmf(self.light) * emission.pdf_a
     }
+
 }
 
 /// Whether nothing blocks the segment between vertices `a` and `b`.
