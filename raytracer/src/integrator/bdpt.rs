@@ -214,17 +214,26 @@ impl Bdpt {
             l += beta * scene.escaped_radiance(d);
         }
         for t in 1..=n_camera {
-            for s in 0..=n_light {
-                if s + t < 2 || s + t > max_vertices || !keep(s, t) {
+            // s = 1 with t ≥ 2 resamples its light point (next event
+            // estimation): it needs no light subpath, and is tried also when
+            // none could start (the environment was chosen for it). Once it
+            // was skipped then, and the sun of `stereo` under its sky lost
+            // most of its direct light.
+            for s in 0..=n_light.max(1) {
+                if s + t < 2 || s + t > max_vertices || !keep(s, t) || (s > n_light && t == 1) {
                     continue;
                 }
                 let Some(c) = connect(scene, light, camera, s, t, sampler) else {
                     continue;
                 };
-                let w = if weighted {
-                    mis_weight(scene, light, camera, s, t, c.sampled)
-                } else {
+                let w = if !weighted {
                     1.0
+                } else if s == 1 && t >= 2 {
+                    // The resampled point is the light subpath's only vertex.
+                    let mut y = [c.sampled.expect("s = 1 resamples the light point")];
+                    mis_weight(scene, &mut y, camera, s, t, None)
+                } else {
+                    mis_weight(scene, light, camera, s, t, c.sampled)
                 };
                 let value = c.value * w;
                 match c.raster {
