@@ -156,7 +156,8 @@ fn connect(
     }
     let w = d / d2.sqrt(); // from y_{s−1} towards z_{t−1}
     let g = qs.abs_cos(w) * pt.abs_cos(w) / d2;
-    let value = qs.beta * qs.f(scene, w) * pt.f(scene, -w) * pt.beta * g;
+    // The light side scatters with the adjoint BRDF (shading normals).
+    let value = qs.beta * qs.f_importance(scene, w) * pt.f(scene, -w) * pt.beta * g;
     if value == Color::ZERO || !visible(scene, qs, pt) {
         return None;
     }

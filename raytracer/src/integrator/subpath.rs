@@ -21,6 +21,7 @@
 use super::continuation::sample_continuation;
 use super::dimensions::{EMISSION_DIRECTION, EMISSION_POINT, LIGHT_CHOICE};
 use super::roulette::russian_roulette;
+use super::shading_normals::importance_correction;
 use super::stop::stop_requested;
 use super::vertex::{Subpath, Vertex, pdf_w_to_a};
 use crate::brdf::TransportMode;
@@ -40,7 +41,8 @@ pub struct EscapedRay {
 /// Extends the subpath `path` (its last vertex is where the walk starts) by
 /// a random walk: `ray` leaves that vertex with solid-angle density `pdf_w`,
 /// and `beta` is the throughput the first new vertex gets. At every surface
-/// the BRDF is sampled in transport mode `mode`; each new vertex records
+/// the BRDF is sampled in transport mode `mode` (with the adjoint correction
+/// for shading normals in importance mode); each new vertex records
 /// `pdf_fwd_a`, and its predecessor `pdf_rev_a` (the reverse walk's density,
 /// the BRDF's `pdf(ω_i → ω_o)`). Stops when the subpath holds `max_vertices`
 /// (no other cap: the buffer grows as the walk needs), at a failed sample, or
@@ -94,11 +96,14 @@ pub fn random_walk(
             pdf_w = 0.0;
             pdf_rev_w = 0.0;
         }
-        beta *= c.weight;
-        walk *= c.weight;
-        if mode == TransportMode::Radiance {
-            eta_scale *= bs.eta * bs.eta;
+        let mut weight = c.weight;
+        match mode {
+            TransportMode::Radiance => eta_scale *= bs.eta * bs.eta,
+            // Light paths scatter with the adjoint BRDF (shading normals).
+            TransportMode::Importance => weight *= importance_correction(&it, it.wo, c.wi),
         }
+        beta *= weight;
+        walk *= weight;
         let (cur, prev) = (path[n - 1], path[n - 2]);
         path[n - 2].pdf_rev_a = pdf_w_to_a(pdf_rev_w, &cur, &prev);
         ray = c.ray;

@@ -38,12 +38,12 @@
 //! (the `t = 1` connection of a light vertex to the lens) and [`super::mis_weight`]
 //! (the MIS weight of a strategy).
 //!
-//! Not handled (documented limits): pbrt's correction factor for shading
-//! normals in importance transport (our shapes shade with their geometric
-//! normal except smooth meshes).
+//! Shading normals: light-subpath vertices scatter with the adjoint BRDF
+//! ([`super::shading_normals`]); densities are those of the BRDF's sampling.
 
 use std::cell::RefCell;
 
+use super::shading_normals::importance_correction;
 use crate::frame::Frame;
 use crate::geometry::Interaction;
 use crate::math::{Color, Ray, Vec2, Vec3A};
@@ -250,6 +250,19 @@ impl Vertex {
             }
             VertexKind::Light => scene.emitted_by(self.light, self.it.ng, w),
             VertexKind::Camera => Color::ZERO,
+        }
+    }
+
+    /// [`Vertex::f`] of a light-subpath vertex, which scatters importance:
+    /// at a surface the BRDF times the adjoint correction for shading
+    /// normals ([`importance_correction`], `ω_o` towards the previous light
+    /// vertex, `w` onwards); at a light `L_e` as in `f`.
+    #[inline]
+    pub fn f_importance(&self, scene: &Scene, w: Vec3A) -> Color {
+        let f = self.f(scene, w);
+        match self.kind {
+            VertexKind::Surface => f * importance_correction(&self.it, self.it.wo, w),
+            _ => f,
         }
     }
 
