@@ -130,9 +130,10 @@ fn connect(
         if value == Color::ZERO {
             return None;
         }
-        // For MIS the resampled point counts with the density of a light
-        // path's origin, P(light) p_A (pbrt does the same): the weights of
-        // all strategies use the same densities, so they still sum to one.
+        // The resampled point carries the density of a light path's origin,
+        // P(light) p_A, like y_0 of every other strategy; `mis_weight`
+        // scales this strategy by the density next event estimation really
+        // had (a sphere's cone), so its weight is right by construction.
         let mut y = Vertex::light(choice.index, ls.p, ls.n, Color::ZERO, 0.0);
         y.pdf_fwd_a = y.pdf_light_origin_a(scene);
         if !visible(scene, pt, &y) {

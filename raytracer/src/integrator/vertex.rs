@@ -332,6 +332,30 @@ impl Vertex {
         scene.light_pmf(self.light) * emission.pdf_a
     }
 
+    /// Area density with which next event estimation at `from` picks this
+    /// (light or emitting surface) point — the strategy `s = 1` of
+    /// bidirectional tracing: `P(light) · p_ω · |cos θ_y| / ‖y − x‖²` with
+    /// `p_ω` of [`crate::light::Light::pdf_li_w`]. For a quad that is the
+    /// origin density `P(light)/A`; for a sphere seen from outside, the
+    /// cone's density (zero off the cap `from` sees); for a point light the
+    /// origin density (the point is fixed).
+    pub fn pdf_light_point_a(&self, scene: &Scene, from: &Vertex) -> f32 {
+        if self.light == NO_LIGHT {
+            return 0.0;
+        }
+        let light = &scene.lights[self.light as usize];
+        if light.is_delta() {
+            return self.pdf_light_origin_a(scene);
+        }
+        let d = self.p() - from.p();
+        let d2 = d.length_squared();
+        if d2 == 0.0 {
+            return 0.0;
+        }
+        let wi = d / d2.sqrt();
+        let pdf_w = light.pdf_li_w(from.p(), self.p(), self.it.ng, wi);
+        scene.light_pmf(self.light) * pdf_w * self.it.ng.dot(wi).abs() / d2
+    }
 }
 
 /// Whether nothing blocks the segment between vertices `a` and `b`.

@@ -101,6 +101,15 @@ impl AreaLight {
         (p - s.center).length_squared() <= shell * shell
     }
 
+    /// Whether the point `q` of a sphere lies on the cap that a receiver at
+    /// `p` outside it sees, the only part cone sampling draws:
+    /// `(q − c)·(p − c) ≥ r²` (on the boundary the line p q is tangent),
+    /// with a relative slack of 1e-4 for the rounding of `q`.
+    #[inline]
+    fn on_visible_cap(s: &Sphere, p: Vec3A, q: Vec3A) -> bool {
+        (q - s.center).dot(p - s.center) >= s.radius * s.radius * (1.0 - 1e-4)
+    }
+
     /// Next event estimation from the receiver `p` (see [`crate::light::Light::sample_li`]).
     pub fn sample_li(&self, p: Vec3A, u: Vec2) -> Option<LightSample> {
         let (q, n, pdf_w) = match &self.shape {
@@ -165,13 +174,19 @@ impl AreaLight {
 
     /// Solid-angle density of `sample_li` for the direction `wi` from `p`
     /// that hit the light at `p_light` with normal `n_light`. Zero where
-    /// `sample_li` never samples (the back of a one-sided light).
+    /// `sample_li` never samples: the back of a one-sided light, and for a
+    /// sphere seen from outside, every point off the cap that `p` sees (cone
+    /// sampling never draws it: a ray from `p` can only reach it through the
+    /// sphere, but the density must not rely on that).
     pub fn pdf_li_w(&self, p: Vec3A, p_light: Vec3A, n_light: Vec3A, wi: Vec3A) -> f32 {
         if !self.two_sided && n_light.dot(wi) >= 0.0 {
             return 0.0;
         }
         match &self.shape {
             AreaShape::Sphere(s) if !Self::inside_sphere(s, p) => {
+                if !Self::on_visible_cap(s, p, p_light) {
+                    return 0.0;
+                }
                 let (one_minus_cos_max, _) =
                     cone_of_sphere(s.radius, (s.center - p).length_squared());
                 1.0 / (2.0 * PI * one_minus_cos_max)
@@ -423,6 +438,31 @@ mod tests {
         assert_eq!(smp.len(), 1 << 16);
         let inv: Vec<f64> = smp.iter().map(|s| 1.0 / s.pdf_w as f64).collect();
         assert_matches("sphere from inside", &inv, 4.0 * std::f64::consts::PI, 0.02);
+    }
+
+    /// Seen from outside, a sphere is sampled in the cone of the cap the
+    /// receiver sees: `pdf_li_w` of a point off that cap is 0, also for a
+    /// two-sided sphere whose far side faces the receiver from inside (it
+    /// used to return the cone's density for any point, right only because
+    /// a ray cannot reach the far side through the sphere). Points of the
+    /// cap keep the cone's density.
+    #[test]
+    fn sphere_pdf_is_zero_off_the_visible_cap() {
+        let s = Sphere {
+            center: Vec3A::new(0.0, 1.0, 0.0),
+            radius: 0.5,
+        };
+        for two_sided in [false, true] {
+            let l = light(AreaShape::Sphere(s), two_sided);
+            let p = Vec3A::new(0.4, -1.0, 1.5);
+            for smp in samples(&l, p, 256, 70) {
+                let far = s.center - (smp.p - s.center);
+                let n = (far - s.center).normalize();
+                let wi = (far - p).normalize();
+                assert_eq!(l.pdf_li_w(p, far, n, wi), 0.0, "far side {far}");
+                assert_eq!(l.pdf_li_w(p, smp.p, smp.n, smp.wi), smp.pdf_w);
+            }
+        }
     }
 
     /// Next event estimation `mean(L cos θ / p_ω)` against Lambert's exact
