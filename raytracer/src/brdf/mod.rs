@@ -163,7 +163,10 @@ impl Brdf {
 
     /// Density per solid angle with which [`Brdf::sample`] returns `wi`
     /// (zero for delta lobes and for directions the model never samples).
+    /// `uv` is part of the contract (a textured model's density may depend on
+    /// it); today only the one-sided wrapper passes it on.
     #[inline]
+    #[allow(clippy::only_used_in_recursion)]
     pub fn pdf(&self, wo: Vec3A, wi: Vec3A, uv: Vec2) -> f32 {
         match self {
             Brdf::Lambert(m) => two_sided(wo, wi, 0.0, |wo, wi| m.pdf(wo, wi)),

@@ -480,14 +480,14 @@ mod tests {
                     (0..n).map(|s| path_density(&scene, &x, light, s)).collect();
                 let total: f64 = densities.iter().map(|p| p * p).sum();
                 let mut sum = 0.0;
-                for s in 0..n {
+                for (s, &density) in densities.iter().enumerate() {
                     let t = n - s;
                     if s == 0 && light == 2 {
                         continue;
                     }
                     let (mut l, mut c, sampled) = subpaths(&scene, &x, light, s, t);
                     let w = mis_weight(&scene, &mut l, &mut c, s, t, sampled) as f64;
-                    let expected = densities[s] * densities[s] / total;
+                    let expected = density * density / total;
                     assert!(
                         (w - expected).abs() <= 1e-3 * expected.max(1e-3),
                         "light {light}, {n} vertices, strategy ({s}, {t}): weight {w}, expected {expected}"
