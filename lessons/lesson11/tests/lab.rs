@@ -541,14 +541,97 @@ fn the_labs_picture_equals_lesson11_render_bit_for_bit() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// The inspector's record is the integrator's sample: at 1 spp the path
+/// tracer's picture holds each pixel's only sample, so the recorded
+/// estimate equals the EXR's pixel bit for bit, and the recorded
+/// contributions (emitter hits and shadow rays) add up to it; bidirectional
+/// tracing's weighted strategies and naive recursion's tree add up to their
+/// estimates, and light tracing's record is its connections to the lens,
+/// each splatted somewhere in the picture. Deterministic (fixed seed); the
+/// only tolerance is float rounding (the record sums in another order).
 #[test]
-fn the_path_inspector_answers_501_until_paths_are_recorded() {
+fn the_inspectors_paths_are_the_integrators_sample() {
     let lab = Lab::start(&[]);
-    lab.json("POST", "/api/render?page=i&width=16&height=16&spp=2");
-    let r = lab.get("/api/paths?page=i&x=3&y=4&sample=1");
-    assert_eq!(r.status, 501, "{}", r.text());
-    assert!(r.text().contains("path recorder"), "{}", r.text());
-    assert_eq!(r.text().lines().count(), 1);
+    let dir = temp_dir("paths");
+    let sum = |r: &Value| -> [f64; 3] {
+        let mut total = [0.0f64; 3];
+        let mut add = |c: &Value| {
+            for (t, v) in total.iter_mut().zip(c.as_array().unwrap()) {
+                *t += v.as_f64().unwrap();
+            }
+        };
+        for p in r["paths"].as_array().unwrap() {
+            for v in p["vertices"].as_array().unwrap() {
+                add(&v["contribution"]);
+            }
+        }
+        for s in r["segments"].as_array().unwrap() {
+            if s["splat"].is_null() {
+                add(&s["contribution"]);
+            }
+        }
+        total
+    };
+    let estimate = |r: &Value| -> [f64; 3] {
+        let e = r["estimate"].as_array().unwrap();
+        [0, 1, 2].map(|i| e[i].as_f64().unwrap())
+    };
+    let close = |a: [f64; 3], b: [f64; 3]| {
+        (0..3).all(|i| (a[i] - b[i]).abs() <= 1e-5 * a[i].abs().max(b[i].abs()) + 1e-9)
+    };
+    let pixels = [(8, 8), (3, 12), (12, 2), (15, 15), (0, 7)];
+    for integrator in ["path", "bdpt", "naive", "light"] {
+        let render = format!(
+            "/api/render?page=p&scene=cornell&integrator={integrator}&width=16&height=16&spp=1&seed=5&max-depth=4"
+        );
+        lab.json("POST", &render);
+        lab.wait_done("p", Duration::from_secs(120));
+        let exr = lab.get("/api/image.exr?page=p");
+        assert_eq!(exr.status, 200);
+        let file = dir.join(format!("{integrator}.exr"));
+        std::fs::write(&file, &exr.body).unwrap();
+        let image = raytracer::film::Image::read_exr(&file).unwrap();
+        let mut lit = 0;
+        for (x, y) in pixels {
+            let r = lab.json("GET", &format!("/api/paths?page=p&x={x}&y={y}&sample=0"));
+            assert_eq!(r["integrator"], integrator, "{r}");
+            assert!(r["truncated"].is_null(), "{r}");
+            let e = estimate(&r);
+            assert!(
+                close(sum(&r), e),
+                "{integrator} ({x}, {y}): sums to {:?}, estimate {e:?}",
+                sum(&r)
+            );
+            if integrator == "path" {
+                // JSON writes the f32 in its shortest form: read back as f32, it is exact.
+                let pixel = image.get(x, y).to_array();
+                assert_eq!(
+                    e.map(|v| v as f32),
+                    pixel,
+                    "({x}, {y}): the record is the picture's sample"
+                );
+            }
+            if integrator == "light" {
+                assert_eq!(e, [0.0; 3], "light tracing splats everything");
+                for s in r["segments"].as_array().unwrap() {
+                    let splat = s["splat"].as_array().unwrap();
+                    assert!(
+                        splat
+                            .iter()
+                            .all(|v| (0.0..16.0).contains(&v.as_f64().unwrap())),
+                        "{s}"
+                    );
+                    assert_eq!(s["strategy"][1], 1, "{s}");
+                }
+            }
+            lit += usize::from(e != [0.0; 3] || !r["segments"].as_array().unwrap().is_empty());
+        }
+        assert!(
+            lit >= 3,
+            "{integrator}: the test can fail only if samples carry light ({lit})"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Both eyes render; every composite comes from the same pair, in the size
@@ -661,7 +744,7 @@ fn a_port_in_use_and_a_missing_folder_are_one_line_errors() {
 
 /// The page in headless Chromium (its `#selftest` mode drives it and writes
 /// what it saw into the DOM): the picture appears and changes as samples
-/// accumulate, a click on a pixel asks the inspector (501 for now), the
+/// accumulate, a click on a pixel draws its recorded paths over it, the
 /// stereo pair and the BRDF verdict appear.
 #[test]
 fn the_page_works_in_a_real_browser() {
@@ -716,17 +799,20 @@ fn the_page_works_in_a_real_browser() {
             .contains("-- render --scene cornell"),
         "{r}"
     );
-    assert_eq!(r["inspector"]["status"], 501, "{r}");
-    assert!(
-        r["inspector"]["text"]
-            .as_str()
-            .unwrap()
-            .contains("path recorder"),
+    // A click on the picture draws the recorded sample: one polyline per
+    // recorded path, a mark per vertex in view, a line per shadow ray in
+    // view, a table row per vertex and shadow ray.
+    let i = &r["inspector"];
+    assert_eq!(i["status"], 200, "{r}");
+    assert!(i["text"].as_str().unwrap().contains("estimate ("), "{r}");
+    assert_eq!(i["polylines"], i["record"]["paths"], "{r}");
+    assert!(i["record"]["vertices"].as_u64().unwrap() >= 2, "{r}");
+    assert!(i["circles"].as_u64().unwrap() >= 2, "{r}");
+    assert_eq!(i["lines"], i["record"]["segments"], "{r}");
+    assert_eq!(
+        i["rows"].as_u64().unwrap(),
+        i["record"]["vertices"].as_u64().unwrap() + i["record"]["segments"].as_u64().unwrap(),
         "{r}"
-    );
-    assert!(
-        r["inspector"]["marks"].as_u64().unwrap() >= 1,
-        "the clicked pixel is marked: {r}"
     );
     let pair = &r["stereo"]["images"][0];
     assert_eq!(

@@ -472,11 +472,12 @@ impl PathRecord {
     }
 
     /// Fills in where each vertex and sampled point lies in the picture of
-    /// `camera` (as seen from the lens centre).
+    /// `camera` (as seen from the lens centre; also off the film, where a
+    /// drawing clips it; `None` behind the camera).
     pub fn project(&mut self, camera: &Camera) {
         let raster = |p: [f32; 3]| {
             camera
-                .raster_of(Vec3A::from_array(p), camera.position())
+                .raster_beyond_film(Vec3A::from_array(p), camera.position())
                 .map(|r| r.to_array())
         };
         for path in &mut self.paths {

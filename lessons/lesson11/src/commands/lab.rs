@@ -1,8 +1,9 @@
 //! `lesson11 lab`: the lecture live in the browser. A local web page with
 //! a progressive render and the lecture's knobs (scene, integrator, max
 //! depth D, samples, seed, exposure), a stereo pair composed live, the BRDF
-//! lobes with their directional albedo, and the path inspector (which
-//! answers 501 until the integrators record their paths, see `lab/paths.rs`).
+//! lobes with their directional albedo, and the path inspector (a click on
+//! the picture shows the paths the integrator traced for that pixel sample,
+//! recorded by `raytracer`'s path recorder, see `lab/paths.rs`).
 //!
 //! The program serves one page and a small HTTP API on 127.0.0.1; the page
 //! (HTML, CSS and script embedded in the program, no network beyond the
@@ -18,8 +19,7 @@
 //! - `lab/job.rs` and `lab/pages.rs`: the progressive render of one page,
 //!   its snapshots and its cancellation; one render at a time per page;
 //! - `lab/stereo.rs`, `lab/brdf.rs`: the Stereo and BRDF tabs;
-//! - `lab/paths.rs`: the path inspector's data (what the integrators'
-//!   recorder will hand over) and its endpoint;
+//! - `lab/paths.rs`: the path inspector's data (a recorded pixel sample);
 //! - `lab/assets/`: the page.
 
 mod brdf;
@@ -41,8 +41,8 @@ use clap::Args;
 pub use server::{Lab, LabConfig};
 
 /// Serve the lab: a local web page with a progressive render and the lecture's knobs,
-/// a live stereo pair, and BRDF lobes with their albedo. It prints the address to open;
-/// Ctrl-C stops it.
+/// a live stereo pair, BRDF lobes with their albedo, and a path inspector (click a pixel:
+/// the paths one of its samples traced). It prints the address to open; Ctrl-C stops it.
 #[derive(Args, Debug)]
 pub struct LabArgs {
     /// The address to listen on. Only 127.0.0.1 (this machine) by default; any other
@@ -81,7 +81,6 @@ pub fn run(args: &LabArgs) -> Result<()> {
         address,
         LabConfig {
             scenes: args.scenes.clone(),
-            ..LabConfig::default()
         },
     )
     .map_err(|e| {

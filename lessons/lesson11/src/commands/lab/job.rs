@@ -69,7 +69,8 @@ pub struct Job {
     pub height: u32,
     pub target_spp: u32,
     seed: u64,
-    integrator: &'static str,
+    /// The integrator (the path inspector records its samples).
+    integrator: Arc<dyn Integrator + Send>,
     /// The scene of each eye.
     scenes: Vec<Arc<Scene>>,
     stop: Arc<AtomicBool>,
@@ -119,7 +120,7 @@ impl Job {
             height: first.camera.height,
             target_spp: spec.options.spp,
             seed: spec.options.seed,
-            integrator: spec.integrator.name(),
+            integrator: Arc::from(spec.integrator),
             scenes: scenes.clone(),
             stop: Arc::new(AtomicBool::new(false)),
             state: Mutex::new(State {
@@ -131,7 +132,7 @@ impl Job {
             }),
             changed: Condvar::new(),
         });
-        let integrator: Arc<dyn Integrator + Send> = Arc::from(spec.integrator);
+        let integrator = job.integrator.clone();
         for (eye, scene) in scenes.into_iter().enumerate() {
             let (job2, integrator, options) =
                 (job.clone(), integrator.clone(), spec.options.clone());
@@ -235,9 +236,9 @@ impl Job {
         (self.kind == "render").then(|| self.scenes[0].clone())
     }
 
-    /// The integrator's name (`path`, `bdpt`, …).
-    pub fn integrator_name(&self) -> &'static str {
-        self.integrator
+    /// The integrator that renders the picture.
+    pub fn integrator(&self) -> &dyn Integrator {
+        self.integrator.as_ref()
     }
 
     pub fn seed(&self) -> u64 {

@@ -1,9 +1,8 @@
 //! The lab's HTTP server: tiny_http accepts the connections, a few worker
 //! threads answer the requests, and [`route`] maps each request to its
 //! answer. Every request gets one: 400 with a one-line reason for bad
-//! parameters, 404 for an unknown path, 405 for a wrong method, 501 for the
-//! path inspector until paths are recorded, and 500 (the lab keeps running)
-//! if a handler should ever panic.
+//! parameters, 404 for an unknown path, 405 for a wrong method, and 500
+//! (the lab keeps running) if a handler should ever panic.
 //!
 //! The API (every answer is JSON, PNG, EXR or one line of text):
 //!
@@ -19,7 +18,7 @@
 //! | `GET /api/image.png?page=P&exposure=E` / `image.exr?page=P&eye=0` | the picture so far |
 //! | `GET /api/stereo.png?page=P&mode=…&desaturate=…&exposure=E` | the pair, composed |
 //! | `GET /api/brdf?model=…&albedo=…&exponent=…&theta=…` | lobe, albedo, verdict |
-//! | `GET /api/paths?page=P&x=…&y=…&sample=…` | the paths of one pixel sample (501 for now) |
+//! | `GET /api/paths?page=P&x=…&y=…&sample=…` | the paths the integrator traced for one pixel sample, recorded (JSON) |
 
 use std::net::SocketAddr;
 use std::path::PathBuf;
@@ -34,7 +33,6 @@ use tiny_http::{Header, Method, Request, Response, Server};
 use super::brdf::{self, BRDF_PARAMS};
 use super::job::Job;
 use super::pages::{IDLE, Pages};
-use super::paths::{PathQuery, PathSource, not_recorded, project};
 use super::query::Query;
 use super::settings::{MAX_PIXELS, MAX_SPP, RENDER_PARAMS, SceneFolder, render_setup};
 use super::stereo::{self, COMPOSITE_PARAMS, RIG_PARAMS};
@@ -51,26 +49,14 @@ const LAB_CSS: &str = include_str!("assets/lab.css");
 const LAB_JS: &str = include_str!("assets/lab.js");
 
 /// What the lab is started with.
-#[derive(Clone)]
+#[derive(Clone, Default)]
 pub struct LabConfig {
     /// A folder of scene files offered beside the built-in scenes.
     pub scenes: Option<PathBuf>,
-    /// Where the path inspector's records come from.
-    pub paths: PathSource,
-}
-
-impl Default for LabConfig {
-    fn default() -> Self {
-        LabConfig {
-            scenes: None,
-            paths: not_recorded,
-        }
-    }
 }
 
 struct State {
     folder: SceneFolder,
-    paths: PathSource,
     pages: Pages,
 }
 
@@ -92,7 +78,6 @@ impl Lab {
             .ok_or("the server has no IP address")?;
         let state = Arc::new(State {
             folder: SceneFolder(config.scenes),
-            paths: config.paths,
             pages: Pages::default(),
         });
         let workers = (0..WORKERS)
@@ -450,18 +435,6 @@ fn paths(state: &State, q: &Query) -> Result<Reply, String> {
     let Some(scene) = job.scene() else {
         return Err("the inspector shows the paths of the Render tab's picture".into());
     };
-    let query = PathQuery {
-        scene: &scene,
-        integrator: job.integrator_name(),
-        pixel: [x, y],
-        sample,
-        seed: job.seed(),
-    };
-    match (state.paths)(&query) {
-        Ok(mut record) => {
-            project(&mut record, &scene.camera);
-            Ok(Reply::json(&record))
-        }
-        Err(reason) => Ok(Reply::text(501, reason)),
-    }
+    let record = super::paths::record(job.integrator(), &scene, [x, y], sample, job.seed())?;
+    Ok(Reply::json(&record))
 }

@@ -234,12 +234,12 @@ async function inspect(event) {
   const r = await call('GET', '/api/paths', { x, y, sample: $('i-sample').value });
   const note = $('inspector-note');
   note.className = 'note';
+  state.record = r.status === 200 ? r.body : null;
   if (r.status === 200) {
     drawPaths(r.body);
     note.textContent = `pixel (${x}, ${y}), sample ${r.body.sample}: estimate ${rgb(r.body.estimate)}` +
       (r.body.truncated ? ` (${r.body.truncated})` : '');
   } else {
-    note.classList.toggle('unavailable', r.status === 501);
     note.textContent = `pixel (${x}, ${y}): ${r.body}`;
   }
   note.dataset.status = r.status;
@@ -272,6 +272,10 @@ function drawPaths(record) {
     const colour = s.occluded ? '#f66' : s.kind === 'shadow-ray' ? '#6f6' : '#6ff';
     svg('line', { x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: colour, 'stroke-width': 0.4, 'stroke-dasharray': '1.5 1', class: `segment ${s.kind}` }, overlay);
   }
+  // Connections to the lens (t = 1) land on other pixels: a ring where each was splatted.
+  for (const s of record.segments) {
+    if (s.splat) svg('circle', { cx: s.splat[0], cy: s.splat[1], r: 1.4, fill: 'none', stroke: '#6ff', 'stroke-width': 0.4, class: 'splat' }, overlay);
+  }
   const table = $('inspector-table');
   const head = ['path', 'vertex', 'kind', 'position', 'BRDF', 'pdf', 'throughput', 'MIS weight', 'contribution'];
   const rows = [head];
@@ -281,8 +285,9 @@ function drawPaths(record) {
     rgb(v.throughput), v.mis_weight == null ? '—' : Number(v.mis_weight).toFixed(3), rgb(v.contribution),
   ])));
   record.segments.forEach((s) => rows.push([
-    s.kind, `${s.from.path}.${s.from.vertex} →`, s.occluded ? 'occluded' : 'visible',
-    s.strategy ? `s=${s.strategy[0]}, t=${s.strategy[1]}` : '', '', '', '',
+    s.kind, `${s.from.path}.${s.from.vertex} → ${s.to.vertex ? `${s.to.vertex.path}.${s.to.vertex.vertex}` : rgb(s.to.point.position)}`,
+    s.occluded ? 'occluded' : 'visible',
+    s.strategy ? `s=${s.strategy[0]}, t=${s.strategy[1]}` : '', s.splat ? `splat at ${rgb(s.splat)}` : '', '', '',
     s.mis_weight == null ? '—' : Number(s.mis_weight).toFixed(3), rgb(s.contribution),
   ]));
   table.replaceChildren(...rows.map((row, r) => {
@@ -539,7 +544,15 @@ async function selftest() {
       const table = $('inspector-table');
       return note.dataset.status ? {
         status: Number(note.dataset.status), text: note.textContent, marks: $('r-overlay').childElementCount,
+        polylines: $('r-overlay').querySelectorAll('polyline.path').length,
+        circles: $('r-overlay').querySelectorAll('circle.vertex').length,
+        lines: $('r-overlay').querySelectorAll('line.segment').length,
         rows: table.hidden ? 0 : table.rows.length - 1,
+        record: state.record && {
+          paths: state.record.paths.length,
+          vertices: state.record.paths.reduce((n, p) => n + p.vertices.length, 0),
+          segments: state.record.segments.length,
+        },
       } : null;
     }, 20000);
     step('stereo');
