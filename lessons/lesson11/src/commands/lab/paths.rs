@@ -43,7 +43,7 @@ pub fn record(
                 flag.store(true, Ordering::Relaxed);
             }
         });
-        let recorded = stop::watch(&flag, || {
+        let recorded = stop::watch(flag, || {
             let (record, _splats) =
                 record_sample(integrator, scene, UVec2::from_array(pixel), seed, k);
             (record, stop::take_abandoned())
