@@ -1,7 +1,8 @@
 //! The path recorder holds to DESIGN.md's contract "Paths can be recorded":
 //! recording never changes the estimate (the recorded sample equals the
 //! rendered one bit for bit, splats included), and the record adds up to
-//! it — for the path tracer the vertices' emitter hits and shadow rays, for
+//! it — for direct lighting and the path tracer the vertices' emitter hits
+//! and shadow rays, for
 //! light tracing the connections to the lens (its splats, bit for bit), for
 //! bidirectional tracing the weighted strategies, for naive recursion every
 //! ray of its tree. Deterministic (fixed seeds, no tolerance on chance): the
@@ -12,7 +13,7 @@ use raytracer::film::Splat;
 use raytracer::integrator::record::{
     MAX_RECORDED_VERTICES, PathRecord, PathRole, SegmentKind, VertexKind, record_sample,
 };
-use raytracer::integrator::{Bdpt, Integrator, LightTracer, NaiveRecursive, PathTracer};
+use raytracer::integrator::{Bdpt, Direct, Integrator, LightTracer, NaiveRecursive, PathTracer};
 use raytracer::math::{Color, UVec2};
 use raytracer::sampling::Sampler;
 use raytracer::scene::Scene;
@@ -111,6 +112,19 @@ fn the_path_tracers_record_sums_to_its_estimate() {
         n > 400 && shadow_rays > 400,
         "{n} contributing samples, {shadow_rays} shadow rays"
     );
+}
+
+#[test]
+fn direct_lightings_record_sums_to_its_estimate() {
+    let n = check(&Direct, |r| {
+        assert!(
+            r.paths[0].vertices.len() <= 3,
+            "the lens, the hit, the BRDF ray's end"
+        );
+        assert!(r.segments.len() <= 1, "one shadow ray");
+    });
+    // 312 of the 512 samples carry light; the test can fail only if some do.
+    assert!(n > 250, "{n}");
 }
 
 #[test]

@@ -544,7 +544,8 @@ fn the_labs_picture_equals_lesson11_render_bit_for_bit() {
 /// The inspector's record is the integrator's sample: at 1 spp the path
 /// tracer's picture holds each pixel's only sample, so the recorded
 /// estimate equals the EXR's pixel bit for bit, and the recorded
-/// contributions (emitter hits and shadow rays) add up to it; bidirectional
+/// contributions (emitter hits and shadow rays) add up to it, as direct
+/// lighting's do; bidirectional
 /// tracing's weighted strategies and naive recursion's tree add up to their
 /// estimates, and light tracing's record is its connections to the lens,
 /// each splatted somewhere in the picture. Deterministic (fixed seed); the
@@ -580,7 +581,7 @@ fn the_inspectors_paths_are_the_integrators_sample() {
         (0..3).all(|i| (a[i] - b[i]).abs() <= 1e-5 * a[i].abs().max(b[i].abs()) + 1e-9)
     };
     let pixels = [(8, 8), (3, 12), (12, 2), (15, 15), (0, 7)];
-    for integrator in ["path", "bdpt", "naive", "light"] {
+    for integrator in ["path", "direct", "bdpt", "naive", "light"] {
         let render = format!(
             "/api/render?page=p&scene=cornell&integrator={integrator}&width=16&height=16&spp=1&seed=5&max-depth=4"
         );

@@ -182,10 +182,7 @@ impl NaiveRecursive {
         *rays += 1;
         let hit = scene.intersect(ray);
         let at = rec.record().and_then(|r| {
-            let v = match &hit {
-                Some(it) => PathVertex::surface(scene, it, from.pdf, product),
-                None => PathVertex::escaped(scene, ray, Some(from.pdf), product),
-            };
+            let v = PathVertex::hit(scene, ray, hit.as_ref(), from.pdf, product);
             match depth {
                 0 => r.push_vertex(from.parent, v),
                 _ => r.start_path(PathRole::Branch, from.parent, v),

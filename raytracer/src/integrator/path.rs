@@ -147,11 +147,7 @@ impl PathTracer {
                     Some(b) => Pdf::direction(b.pdf_w, b.is_delta),
                     None => Pdf::direction(scene.camera.pdf_we(&ray).pdf_w, false),
                 };
-                let v = match &hit {
-                    Some(it) => PathVertex::surface(scene, it, pdf, beta),
-                    None => PathVertex::escaped(scene, &ray, Some(pdf), beta),
-                };
-                at = r.push_vertex(at, v);
+                at = r.push_vertex(at, PathVertex::hit(scene, &ray, hit.as_ref(), pdf, beta));
             }
             // Emitted light reached by the ray (counted while depth < max_depth).
             if let Some(e) = scene.emitter_hit(&ray, hit.as_ref()) {

@@ -3,8 +3,8 @@
 //! Lecture topic: "Paths" — the pictures of the lecture that show a camera
 //! ray, its bounces and shadow rays, a light path joined to the lens, two
 //! subpaths and their connection `(s, t)`, or the tree of naive recursion.
-//! DESIGN.md's contract "Paths can be recorded": the path tracer, light
-//! tracer, bidirectional tracer and naive recursion hand their vertices,
+//! DESIGN.md's contract "Paths can be recorded": direct lighting, the path
+//! tracer, light tracer, bidirectional tracer and naive recursion hand their vertices,
 //! shadow rays and connections to a [`Recorder`]; the lab's path inspector
 //! and the slides' path figures both read the one [`PathRecord`] it fills.
 //!
@@ -305,6 +305,20 @@ impl PathVertex {
         v.brdf = Some(material_name(scene, it));
         v.pdf = Some(pdf);
         v
+    }
+
+    /// What `ray` found: the surface `hit`, or nothing.
+    pub fn hit(
+        scene: &Scene,
+        ray: &Ray,
+        hit: Option<&Interaction>,
+        pdf: Pdf,
+        beta: Color,
+    ) -> PathVertex {
+        match hit {
+            Some(it) => PathVertex::surface(scene, it, pdf, beta),
+            None => PathVertex::escaped(scene, ray, Some(pdf), beta),
+        }
     }
 
     /// A ray that hit nothing, drawn to a point beyond the scene's bounds.
