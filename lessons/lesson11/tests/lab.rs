@@ -582,8 +582,14 @@ fn the_inspectors_paths_are_the_integrators_sample() {
     };
     let pixels = [(8, 8), (3, 12), (12, 2), (15, 15), (0, 7)];
     for integrator in ["path", "direct", "bdpt", "naive", "light"] {
+        // Direct lighting is D = 2 by definition: it takes no max depth.
+        let depth = if integrator == "direct" {
+            ""
+        } else {
+            "&max-depth=4"
+        };
         let render = format!(
-            "/api/render?page=p&scene=cornell&integrator={integrator}&width=16&height=16&spp=1&seed=5&max-depth=4"
+            "/api/render?page=p&scene=cornell&integrator={integrator}&width=16&height=16&spp=1&seed=5{depth}"
         );
         lab.json("POST", &render);
         lab.wait_done("p", Duration::from_secs(120));
