@@ -53,6 +53,7 @@ pub mod stop;
 pub mod subpath;
 pub mod vertex;
 pub mod visible_point;
+pub mod vpl;
 
 pub use ao::AmbientOcclusion;
 pub use bdpt::{Bdpt, StrategyFilter};
@@ -61,6 +62,7 @@ pub use light_tracing::LightTracer;
 pub use naive::NaiveRecursive;
 pub use path::{DirectStrategy, PathTracer};
 pub use photon_mapping::{PhotonMapping, PhotonSettings, PhotonStats};
+pub use vpl::{InstantRadiosity, VplSettings};
 
 /// The primary ray of a pixel sample: a uniform point in the pixel (a box
 /// filter: each sample counts fully for its own pixel) and a point on the lens.

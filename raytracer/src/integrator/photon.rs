@@ -33,8 +33,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use rayon::prelude::*;
 
 use super::subpath::light_subpath;
-use super::vertex::{EMPTY_VERTEX, MAX_VERTICES, Subpath, VertexKind, path_vertices};
-use crate::math::{Color, Vec3};
+use super::vertex::{EMPTY_VERTEX, MAX_VERTICES, Subpath, Vertex, VertexKind, path_vertices};
+use crate::math::Vec3;
 use crate::sampling::Sampler;
 use crate::scene::Scene;
 
@@ -117,12 +117,38 @@ pub fn photon_sample_index(stream: u64) -> u64 {
     (1 << 48) | stream
 }
 
-/// Traces the photons of `settings` on rayon's pool, stopping after the
-/// batch in progress once `stop` is set. Draws, per light path, the light
-/// subpath's numbers ([`light_subpath`]).
-pub fn trace_photons(scene: &Scene, settings: &PhotonTracing, stop: &AtomicBool) -> TracedPhotons {
+/// The vertices of light paths that `keep` turns into items (photons,
+/// virtual point lights), for paths `0..settings.paths` in batches of
+/// [`BATCH`], in path order whatever the threads.
+pub struct LightVertices<T> {
+    pub items: Vec<T>,
+    /// Light paths traced (`N`; fewer than asked if interrupted).
+    pub paths: u64,
+    pub interrupted: bool,
+}
+
+/// A light-subpath vertex offered to the `keep` of [`trace_light_vertices`]:
+/// the vertex `y_k` (`k ≥ 1`, on a surface that is not a mirror or glass),
+/// its `k`, and whether every vertex between the light and it was a delta.
+pub struct LightVertex<'a> {
+    pub vertex: &'a Vertex,
+    pub segments: u32,
+    pub only_delta_before: bool,
+}
+
+/// Traces the light paths of `settings` on rayon's pool, stopping after the
+/// batches in progress once `stop` is set, and keeps what `keep` makes of
+/// each non-delta surface vertex. Draws, per light path, the light
+/// subpath's numbers ([`light_subpath`]) from `Sampler::new(seed, path,
+/// photon_sample_index(stream))`. The items' `β` is not divided by `N`.
+pub fn trace_light_vertices<T: Send>(
+    scene: &Scene,
+    settings: &PhotonTracing,
+    stop: &AtomicBool,
+    keep: impl Fn(LightVertex) -> Option<T> + Sync,
+) -> LightVertices<T> {
     let batches = settings.paths.div_ceil(BATCH);
-    let results: Vec<Option<TracedPhotons>> = (0..batches)
+    let results: Vec<Option<(Vec<T>, u64)>> = (0..batches)
         .into_par_iter()
         .map(|b| {
             if stop.load(Ordering::Relaxed) {
@@ -130,44 +156,43 @@ pub fn trace_photons(scene: &Scene, settings: &PhotonTracing, stop: &AtomicBool)
             }
             let first = b * BATCH;
             let last = (first + BATCH).min(settings.paths);
-            Some(trace_batch(scene, settings, first..last))
+            Some((
+                trace_batch(scene, settings, first..last, &keep),
+                last - first,
+            ))
         })
         .collect();
-    let mut all = TracedPhotons::default();
+    let mut all = LightVertices {
+        items: Vec::new(),
+        paths: 0,
+        interrupted: false,
+    };
     for batch in results {
-        let Some(batch) = batch else {
+        let Some((items, paths)) = batch else {
             all.interrupted = true;
             break;
         };
-        all.direct.extend(batch.direct);
-        all.caustic.extend(batch.caustic);
-        all.indirect.extend(batch.indirect);
-        all.paths += batch.paths;
-    }
-    // Each path's β is a flux estimate: share it out among the N paths.
-    let scale = 1.0 / all.paths.max(1) as f32;
-    for p in all
-        .direct
-        .iter_mut()
-        .chain(&mut all.caustic)
-        .chain(&mut all.indirect)
-    {
-        p.power *= scale;
+        all.items.extend(items);
+        all.paths += paths;
     }
     all
 }
 
-/// The photons of light paths `paths`, with power `β` (not yet divided by N).
-fn trace_batch(scene: &Scene, s: &PhotonTracing, paths: std::ops::Range<u64>) -> TracedPhotons {
-    let mut out = TracedPhotons::default();
-    // A photon needs one camera segment after it: at most D − 1 of its own,
+/// The items of light paths `paths`.
+fn trace_batch<T>(
+    scene: &Scene,
+    s: &PhotonTracing,
+    paths: std::ops::Range<u64>,
+    keep: &impl Fn(LightVertex) -> Option<T>,
+) -> Vec<T> {
+    let mut out = Vec::new();
+    // An item needs one camera segment after it: at most D − 1 of its own,
     // i.e. light subpaths of at most D vertices.
     let max_vertices = path_vertices(s.max_depth)
         .saturating_sub(1)
         .min(MAX_VERTICES);
     let mut path: Subpath = [EMPTY_VERTEX; MAX_VERTICES];
     for i in paths {
-        out.paths += 1;
         let mut sampler = Sampler::new(s.seed, i, photon_sample_index(s.stream));
         let n = light_subpath(scene, &mut sampler, &mut path, max_vertices, s.rr_depth);
         let mut only_delta = true;
@@ -175,28 +200,52 @@ fn trace_batch(scene: &Scene, s: &PhotonTracing, paths: std::ops::Range<u64>) ->
             if v.kind != VertexKind::Surface || scene.brdf(&v.it).is_delta() {
                 continue;
             }
-            let kind = match (k, only_delta) {
-                (1, _) => PhotonKind::Direct,
-                (_, true) => PhotonKind::Caustic,
-                _ => PhotonKind::Indirect,
-            };
-            let photon = Photon {
-                p: v.it.p.into(),
-                wi: v.it.wo.into(),
-                power: Vec3::from(v.beta),
-                segments: k as u32,
-            };
-            if photon.power.is_finite() && Color::from(photon.power).max_element() > 0.0 {
-                match kind {
-                    PhotonKind::Direct => out.direct.push(photon),
-                    PhotonKind::Caustic => out.caustic.push(photon),
-                    PhotonKind::Indirect => out.indirect.push(photon),
-                }
+            if v.beta.is_finite() && v.beta.max_element() > 0.0 {
+                out.extend(keep(LightVertex {
+                    vertex: v,
+                    segments: k as u32,
+                    only_delta_before: only_delta,
+                }));
             }
             only_delta = false;
         }
     }
     out
+}
+
+/// Traces the photons of `settings` (see [`trace_light_vertices`]), their
+/// power divided by the number of paths.
+pub fn trace_photons(scene: &Scene, settings: &PhotonTracing, stop: &AtomicBool) -> TracedPhotons {
+    let traced = trace_light_vertices(scene, settings, stop, |v| {
+        let kind = match (v.segments, v.only_delta_before) {
+            (1, _) => PhotonKind::Direct,
+            (_, true) => PhotonKind::Caustic,
+            _ => PhotonKind::Indirect,
+        };
+        let photon = Photon {
+            p: v.vertex.it.p.into(),
+            wi: v.vertex.it.wo.into(),
+            power: Vec3::from(v.vertex.beta),
+            segments: v.segments,
+        };
+        Some((kind, photon))
+    });
+    // Each path's β is a flux estimate: share it out among the N paths.
+    let scale = 1.0 / traced.paths.max(1) as f32;
+    let mut all = TracedPhotons {
+        paths: traced.paths,
+        interrupted: traced.interrupted,
+        ..TracedPhotons::default()
+    };
+    for (kind, mut photon) in traced.items {
+        photon.power *= scale;
+        match kind {
+            PhotonKind::Direct => all.direct.push(photon),
+            PhotonKind::Caustic => all.caustic.push(photon),
+            PhotonKind::Indirect => all.indirect.push(photon),
+        }
+    }
+    all
 }
 
 #[cfg(test)]
