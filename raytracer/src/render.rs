@@ -34,8 +34,10 @@
 //! ask for, and [`memory_needed`] with [`MemoryCap`] lets a front-end refuse
 //! an image that would not fit in memory before allocating it.
 
+pub mod sppm;
 mod strategies;
 
+pub use sppm::{SppmResult, render_sppm};
 pub use strategies::render_strategies;
 
 use crate::film::{Film, FilmTile, Splat};

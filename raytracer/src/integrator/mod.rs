@@ -49,6 +49,7 @@ pub mod photon;
 pub mod photon_map;
 mod photon_mapping;
 pub mod roulette;
+pub mod sppm;
 pub mod stop;
 pub mod subpath;
 pub mod vertex;
