@@ -176,10 +176,11 @@ impl Grid {
 mod tests {
     use super::*;
 
+    /// 2000 points of a 3-d Kronecker sequence in [-1, 1]³.
     fn points() -> Vec<Vec3A> {
-        let mut s = crate::sampling::Sampler::new(3, 0, 0);
-        (0..2000)
-            .map(|_| Vec3A::new(s.next_1d(), s.next_1d(), s.next_1d()) * 2.0 - Vec3A::ONE)
+        let g = Vec3A::new(0.819_172_5, 0.671_043_5, 0.549_700_5);
+        (1..=2000)
+            .map(|i| (g * i as f32).fract() * 2.0 - Vec3A::ONE)
             .collect()
     }
 
@@ -221,8 +222,8 @@ mod tests {
         );
         for q in points().iter().map(|p| *p * 0.9) {
             let held = grid.at(q);
-            for i in 0..pts.len() {
-                if pts[i].distance(q) < r(i) {
+            for (i, p) in pts.iter().enumerate() {
+                if p.distance(q) < r(i) {
                     assert!(held.contains(&(i as u32)), "{i}");
                 }
             }
