@@ -162,6 +162,12 @@ pub fn interrupted() -> bool {
     INTERRUPTED.load(Ordering::SeqCst)
 }
 
+/// The flag Ctrl-C sets, for work outside the render loop that watches a
+/// stop flag of its own (photon tracing, the irradiance cache).
+pub fn interrupt_flag() -> &'static AtomicBool {
+    &INTERRUPTED
+}
+
 /// Clears the interrupt flag (e.g. to go on with the next image of a batch).
 pub fn reset_interrupt() {
     INTERRUPTED.store(false, Ordering::SeqCst);
