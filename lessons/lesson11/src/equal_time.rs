@@ -1,6 +1,6 @@
-//! Every algorithm at the same time budget, measured against one reference:
-//! the comparison of chapter 8 (unbiased algorithms differ only in their
-//! noise) and of `lesson11 bench`.
+//! Every algorithm at the same time budget, measured against one independent
+//! reference: the comparison of chapter 8 (unbiased algorithms differ only
+//! in their noise) and of `lesson11 bench`.
 
 use raytracer::film::Image;
 use raytracer::integrator::{
@@ -9,6 +9,8 @@ use raytracer::integrator::{
 use raytracer::metrics::rmse;
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
+
+use crate::reference::Reference;
 
 /// Renders `integrator` for about `seconds`: renders of 1, 2, 4, … samples
 /// per pixel measure the time per sample and trace the error against
@@ -62,42 +64,45 @@ pub struct EqualTimeRow {
     pub curve: Vec<(f64, f64)>,
 }
 
+/// The branching factor of naive recursion in the comparison.
+pub const NAIVE_N: u32 = 4;
+
 /// Renders `scene` with every algorithm for about `budget` seconds each, all
-/// stopping at `max_depth`, and measures each one's RMSE against a
-/// bidirectional reference of `reference_spp` samples per pixel. Naive
-/// recursion (N = 4) joins the comparison if `with_naive`.
+/// stopping at `max_depth` (the reference's) with Russian roulette from the
+/// scene's depth, and measures each one's RMSE against `reference`, an
+/// independent estimate (another renderer, or another seed): an algorithm's
+/// own samples are never part of it. Naive recursion (N = 4, ended by
+/// roulette as well) joins the comparison if `with_naive`.
 pub fn equal_time(
     scene: &Scene,
     base: &RenderOptions,
     budget: f64,
-    reference_spp: u32,
+    reference: &Reference,
     max_depth: u32,
     with_naive: bool,
 ) -> Vec<EqualTimeRow> {
+    let rr_depth = scene.settings.rr_depth;
     let max_depth = Some(max_depth);
     let bdpt = Bdpt {
         max_depth,
+        rr_depth,
         ..Bdpt::default()
     };
-    let reference_options = RenderOptions {
-        spp: reference_spp,
-        label: format!("{} reference", scene.name),
-        ..base.clone()
-    };
-    let reference = render(scene, &bdpt, &reference_options).film.image();
-    let naive = NaiveRecursive::new(vec![4], max_depth);
+    let mut naive = NaiveRecursive::new(vec![NAIVE_N], max_depth);
+    naive.roulette_depth = Some(rr_depth);
     let path = PathTracer {
         max_depth,
-        ..PathTracer::default()
+        rr_depth,
+        strategy: DirectStrategy::Mis,
     };
     let path_brdf = PathTracer {
         max_depth,
+        rr_depth,
         strategy: DirectStrategy::BrdfOnly,
-        ..PathTracer::default()
     };
     let light = LightTracer {
         max_depth,
-        ..LightTracer::default()
+        rr_depth,
     };
     let mut algorithms: Vec<(&'static str, &dyn Integrator)> = vec![
         ("path (MIS)", &path),
@@ -106,14 +111,15 @@ pub fn equal_time(
         ("bidirectional", &bdpt),
     ];
     if with_naive {
-        algorithms.insert(0, ("naive recursion, N = 4", &naive));
+        algorithms.insert(0, ("naive recursion, N = 4, roulette", &naive));
     }
     let mut rows = Vec::new();
     for (algorithm, integrator) in algorithms {
-        let (image, spp, seconds, curve) = render_for(scene, integrator, base, budget, &reference);
-        let rmse = rmse(&image, &reference);
+        let (image, spp, seconds, curve) =
+            render_for(scene, integrator, base, budget, &reference.mean);
+        let rmse = rmse(&image, &reference.mean);
         println!(
-            "  {:14} {algorithm:24} {spp:6} spp {seconds:7.2} s  RMSE {rmse:.4}",
+            "  {:14} {algorithm:34} {spp:6} spp {seconds:7.2} s  RMSE {rmse:.4}",
             scene.name
         );
         let stem = format!("{}-{}", scene.name, integrator.name());

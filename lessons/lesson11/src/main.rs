@@ -19,6 +19,7 @@
 //! chapters/c*.rs   one chapter each: its pictures, tables and plots, and its section of the page
 //! tour.rs          what every chapter is (its entry in the list) and gets (the Tour context)
 //! render_files.rs equal_time.rs integrators.rs integrators/     shared by chapters and commands
+//! reference.rs     the independent references renders are measured against
 //! options.rs       scene, size, samples, seed, threads and output folder of a command line
 //! page/ plots/     the HTML page and its SVG plots
 //! ```
@@ -37,6 +38,7 @@ mod integrators;
 mod options;
 mod page;
 mod plots;
+mod reference;
 mod render_files;
 mod tour;
 
