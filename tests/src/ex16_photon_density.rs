@@ -195,7 +195,8 @@ pub fn check(density: DensityFn) -> Result<(), String> {
         Color::splat(PHOTONS as f32 / PI),
         |ratio| {
             ((ratio - K as f64 / (K - 1) as f64).abs() < 0.01).then(|| {
-                "k/(k − 1) too bright: the k-th photon, at the edge of the disk, must weigh 0".into()
+                "k/(k − 1) too bright: the k-th photon, at the edge of the disk, must weigh 0"
+                    .into()
             })
         },
     )

@@ -32,7 +32,14 @@ fn cases() -> Vec<Case> {
     let v = Vec3A::new;
     vec![
         // Far apart: G = 0.25 below every bound.
-        (Vec3A::ZERO, Vec3A::Y, v(0.0, 2.0, 0.0), -Vec3A::Y, c(1.0, 0.5, 0.25), 1.0),
+        (
+            Vec3A::ZERO,
+            Vec3A::Y,
+            v(0.0, 2.0, 0.0),
+            -Vec3A::Y,
+            c(1.0, 0.5, 0.25),
+            1.0,
+        ),
         // Close, in a corner: G far above the bound.
         (
             v(0.05, 0.0, 0.0),
@@ -69,7 +76,14 @@ fn cases() -> Vec<Case> {
             0.0,
         ),
         // A bright VPL barely below the bound.
-        (Vec3A::ZERO, Vec3A::Y, v(0.3, 0.6, 0.0), -Vec3A::Y, c(5.0, 4.0, 3.0), 2.0),
+        (
+            Vec3A::ZERO,
+            Vec3A::Y,
+            v(0.3, 0.6, 0.0),
+            -Vec3A::Y,
+            c(5.0, 4.0, 3.0),
+            2.0,
+        ),
     ]
 }
 
@@ -110,10 +124,9 @@ pub fn check(contribution: VplFn) -> Result<(), String> {
                     }
                 },
             ),
-            (
-                "the bound is an upper one: min(G, clamp), not max",
-                &|c| c.4 * if c.5 > 0.0 { g(c).max(c.5) } else { g(c) },
-            ),
+            ("the bound is an upper one: min(G, clamp), not max", &|c| {
+                c.4 * if c.5 > 0.0 { g(c).max(c.5) } else { g(c) }
+            }),
             (
                 "G is never negative: the normals may face either way, so take the absolute values of the cosines",
                 &|c| c.4 * clamped(cx(c) * cy(c) / r2(c), c.5),
