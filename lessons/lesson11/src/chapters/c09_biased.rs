@@ -7,7 +7,9 @@ use std::sync::atomic::AtomicBool;
 
 use anyhow::{Result, anyhow};
 use raytracer::film::Image;
-use raytracer::integrator::{IrradianceCache, IrradianceCacheSettings};
+use raytracer::integrator::{
+    IrradianceCache, IrradianceCacheSettings, PhotonMapping, PhotonSettings,
+};
 use raytracer::math::{Color, Vec2};
 use raytracer::metrics::{mean, rmse};
 use raytracer::render::RenderOptions;
@@ -32,6 +34,11 @@ struct Effort {
     budget: f64,
     /// Independent seeds for the bias–variance split.
     seeds: u64,
+    /// Light paths of the photon maps that show the blur (little noise).
+    blur_photons: u64,
+    /// Photon mapping's light paths on the caustic scene (its caustic is a
+    /// small spot: the k nearest of fewer photons blur it away).
+    caustic_photons: u64,
     knobs: Knobs,
 }
 
@@ -48,16 +55,22 @@ fn effort(quality: Quality) -> Effort {
         Quality::Tiny => Effort {
             budget: 0.02,
             seeds: 2,
+            blur_photons: 5_000,
+            caustic_photons: 2_000,
             knobs: knobs(2_000, 1_000, 8),
         },
         Quality::Quick => Effort {
-            budget: 0.2,
+            budget: 0.15,
             seeds: 4,
+            blur_photons: 50_000,
+            caustic_photons: 50_000,
             knobs: knobs(10_000, 5_000, 32),
         },
         Quality::Full => Effort {
             budget: 2.0,
             seeds: 8,
+            blur_photons: 1_000_000,
+            caustic_photons: 400_000,
             knobs: knobs(200_000, 20_000, 128),
         },
     }
@@ -83,7 +96,8 @@ fn render(tour: &Tour) -> Result<Section> {
              the same time (about {} each; every time below includes building the photon maps, virtual \
              point lights or cache records) on the Cornell box, measured against Mitsuba 3's image, and on \
              the caustic scene, measured against a stored bidirectional render with thousands of samples. \
-             Photon mapping: {} light paths, the 50 nearest photons under an Epanechnikov kernel. SPPM: \
+             Photon mapping: {} light paths ({} on the caustic scene, whose caustic is a small \
+             spot), the 50 nearest photons under an Epanechnikov kernel. SPPM: \
              {} photon paths per pass, radii shrinking with α = 2/3 (consistent: its bias falls with \
              the passes). Instant radiosity: the VPLs of {} light paths, the geometry term clamped at \
              {VPL_CLAMP}. Irradiance caching: a = {}, {} rays per record. The error of each algorithm is \
@@ -91,6 +105,7 @@ fn render(tour: &Tour) -> Result<Section> {
              spread).",
             seconds_text(e.budget),
             k.photons,
+            e.caustic_photons,
             k.sppm_photons,
             k.vpl_paths,
             k.ic_error,
@@ -247,20 +262,15 @@ fn render(tour: &Tour) -> Result<Section> {
     ));
 
     // The bias, named.
-    let photon = &measured[2];
-    difference(
+    photon_blur(
         tour,
         &mut c,
-        "cornell-photon-error",
-        &photon.run.image,
-        &reference.mean,
-        photon.run.spp,
-        &format!(
-            "Photon mapping's error on the Cornell box, |photon − {}|: the blur of its density \
-             estimate is brightest along the edges and corners, where the search disk reaches \
-             onto the neighbouring wall.",
-            reference.name
-        ),
+        (&scene, &base, max_depth),
+        &reference,
+        e.blur_photons,
+        0.15,
+        "the blur is brightest along the edges and in the corners, where the disk reaches onto the \
+         neighbouring wall and averages its light in",
     )?;
     let vpl = &measured[4];
     let unclamped = Knobs { clamp: 0.0, ..k };
@@ -297,10 +307,13 @@ fn render(tour: &Tour) -> Result<Section> {
         scene.camera.width, scene.camera.height, reference.source
     );
     let everywhere = vec![true; reference.mean.pixels.len()];
-    let mut caustic_photon = None;
+    let caustic_knobs = Knobs {
+        photons: e.caustic_photons,
+        ..k
+    };
     for algorithm in Algorithm::ALL {
         let prepared = algorithm
-            .prepare(&scene, &k, max_depth, base.seed)
+            .prepare(&scene, &caustic_knobs, max_depth, base.seed)
             .map_err(|e| anyhow!(e))?;
         let (run, _) = equal_time(&prepared, &scene, &base, e.budget, |image| {
             masked_rmse(image, &reference.mean, &everywhere)
@@ -329,25 +342,16 @@ fn render(tour: &Tour) -> Result<Section> {
                 reference.name
             ),
         ));
-        if algorithm == Algorithm::Photon {
-            caustic_photon = Some(run);
-        }
     }
-    if let Some(run) = caustic_photon {
-        difference(
-            tour,
-            &mut c,
-            "caustic-photon-error",
-            &run.image,
-            &reference.mean,
-            run.spp,
-            &format!(
-                "Photon mapping's error on the caustic scene, |photon − {}|: the caustic is \
-                 spread over the search disk, too dim in its centre and too bright beyond its edge.",
-                reference.name
-            ),
-        )?;
-    }
+    photon_blur(
+        tour,
+        &mut c,
+        (&scene, &base, max_depth),
+        &reference,
+        e.blur_photons,
+        0.15,
+        "the caustic is spread over the disk: too dim in its centre, too bright around its edge",
+    )?;
     table.caption = format!(
         "{}; errors over the pixels off the lamp (its edge is anti-aliasing noise 18.6 times \
          brighter than white, the same for all); target RMSE {target:.4}.",
@@ -519,6 +523,69 @@ fn difference(
         .figures
         .push(Figure::new(&tour.out, &picture, caption));
     Ok(())
+}
+
+/// Photon mapping with many photons and a fixed search `radius` (little
+/// noise, so that the blur shows), and its error against `reference`.
+fn photon_blur(
+    tour: &Tour,
+    c: &mut ChapterOutput,
+    (scene, base, max_depth): (&Scene, &RenderOptions, u32),
+    reference: &Reference,
+    photons: u64,
+    radius: f32,
+    what: &str,
+) -> Result<()> {
+    let start = std::time::Instant::now();
+    let pm = PhotonMapping::build(
+        scene,
+        PhotonSettings {
+            photons,
+            radius: Some(radius),
+            max_depth: Some(max_depth),
+            rr_depth: scene.settings.rr_depth,
+            seed: base.seed,
+            ..PhotonSettings::default()
+        },
+        &AtomicBool::new(false),
+    )
+    .map_err(|e| anyhow!(e))?;
+    let options = RenderOptions {
+        spp: 16,
+        progress: false,
+        ..base.clone()
+    };
+    let image = raytracer::render::render(scene, &pm, &options).film.image();
+    let seconds = start.elapsed().as_secs_f64();
+    let name = &scene.name;
+    let picture = write_image(
+        &c.dir,
+        &format!("{name}-photon-blur"),
+        &image,
+        options.spp,
+        0.0,
+        Some(seconds),
+    )?;
+    c.section.figures.push(Figure::new(
+        &tour.out,
+        &picture,
+        &format!(
+            "{name}, photon mapping with {photons} light paths and a fixed search radius of \
+             {radius}: little noise, so the blur shows."
+        ),
+    ));
+    difference(
+        tour,
+        c,
+        &format!("{name}-photon-error"),
+        &image,
+        &reference.mean,
+        options.spp,
+        &format!(
+            "{name}, |photon mapping − {}| of the picture before: {what}.",
+            reference.name
+        ),
+    )
 }
 
 /// Irradiance caching at three thresholds `a`: the records as red dots over
