@@ -198,7 +198,7 @@ fn render(tour: &Tour) -> Result<Section> {
             format!("{:.3e}", m.variance),
             reached.map_or_else(
                 || format!("not within {}", seconds_text(m.run.seconds)),
-                |t| seconds_number(t),
+                seconds_number,
             ),
         ]);
         series.push(Series {

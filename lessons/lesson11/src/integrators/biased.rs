@@ -73,7 +73,7 @@ impl BiasedArgs {
             if set && !users.contains(&kind) {
                 let names: Vec<String> = users
                     .iter()
-                    .filter_map(|u| clap::ValueEnum::to_possible_value(u))
+                    .filter_map(clap::ValueEnum::to_possible_value)
                     .map(|v| v.get_name().to_string())
                     .collect();
                 bail!(
