@@ -71,8 +71,8 @@ pub const NAIVE_N: u32 = 4;
 /// stopping at `max_depth` (the reference's) with Russian roulette from the
 /// scene's depth, and measures each one's RMSE against `reference`, an
 /// independent estimate (another renderer, or another seed): an algorithm's
-/// own samples are never part of it. Naive recursion (N = 4, ended by
-/// roulette as well) joins the comparison if `with_naive`.
+/// own samples are never part of it. Naive recursion (N = 4 down to the
+/// roulette's depth, then one ray per hit, ended by roulette) joins the comparison if `with_naive`.
 pub fn equal_time(
     scene: &Scene,
     base: &RenderOptions,
@@ -88,8 +88,13 @@ pub fn equal_time(
         rr_depth,
         ..Bdpt::default()
     };
-    let mut naive = NaiveRecursive::new(vec![NAIVE_N], max_depth);
-    naive.roulette_depth = Some(rr_depth);
+    // The full tree down to the roulette's depth, then one ray per hit: with
+    // N ≥ 2 at every hit, roulette (which keeps a ray with a chance near the
+    // albedo) would leave each ray more than one child on average.
+    let mut branching = vec![NAIVE_N; rr_depth.saturating_sub(1).max(1) as usize];
+    branching.push(1);
+    let naive = NaiveRecursive::try_new(branching, max_depth, Some(rr_depth), None)
+        .expect("a bounded recursion with valid branching factors");
     let path = PathTracer {
         max_depth,
         rr_depth,
@@ -111,7 +116,7 @@ pub fn equal_time(
         ("bidirectional", &bdpt),
     ];
     if with_naive {
-        algorithms.insert(0, ("naive recursion, N = 4, roulette", &naive));
+        algorithms.insert(0, ("naive recursion, N = 4 then 1", &naive));
     }
     let mut rows = Vec::new();
     for (algorithm, integrator) in algorithms {

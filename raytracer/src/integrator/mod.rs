@@ -7,8 +7,9 @@
 //! The integrators share their steps, one file each: [`nee`] (light
 //! sampling and its MIS weight), [`continuation`] (the BRDF sample that
 //! continues a path), [`roulette`] (Russian roulette), and for light and
-//! bidirectional tracing [`vertex`], [`subpath`], [`camera_connection`] and
-//! [`mis_weight`]. [`dimensions`] names every random number they draw and
+//! bidirectional tracing [`vertex`], [`subpath`], [`camera_connection`],
+//! [`mis_weight`] and [`shading_normals`] (the adjoint correction of
+//! importance transport). [`dimensions`] names every random number they draw and
 //! gives each integrator's layout.
 
 use crate::film::Splat;
@@ -50,6 +51,7 @@ pub mod photon;
 pub mod photon_map;
 mod photon_mapping;
 pub mod roulette;
+pub mod shading_normals;
 pub mod sppm;
 pub mod stop;
 pub mod subpath;

@@ -284,7 +284,11 @@ mod tests {
         let parts = load_without_meshes("cornell");
         let albedo = |name: &str| {
             let i = parts.brdf_names.iter().position(|n| n == name).unwrap();
-            match &parts.brdfs[i] {
+            // One-sided, as Mitsuba's `diffuse`: black from behind.
+            let Brdf::OneSided(model) = &parts.brdfs[i] else {
+                panic!("{name} is not one-sided: {:?}", parts.brdfs[i])
+            };
+            match model.as_ref() {
                 Brdf::Lambert(Lambert {
                     albedo: Texture::Constant(c),
                 }) => *c,

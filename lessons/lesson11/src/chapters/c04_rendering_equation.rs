@@ -48,7 +48,8 @@ fn render(tour: &Tour) -> Result<Section> {
          factors f_r cos θ_i / (N p) from the camera on, is almost 0 — the lecture's idea, and \
          biased: the light it drops is small, not zero, so the picture comes out darker — or by \
          Russian roulette (a preview of Lecture 12), which stops at random and divides what \
-         survives by its chance, and stays unbiased. Many rays at the top and few below (16, 4, \
+         survives by its chance, and stays unbiased; it ends a path, not a tree that keeps \
+         splitting, so its picture splits only at the first hit. Many rays at the top and few below (16, 4, \
          2, 1) tames the tree, but not enough. Path tracing follows one ray per bounce and spends \
          the same rays on many samples per pixel.",
     )?;
@@ -99,8 +100,8 @@ fn render(tour: &Tour) -> Result<Section> {
 
     // Stopping the recursion: the same N, and a depth limit that neither
     // reaches. Without light sampling both are noisy, so they get a smaller
-    // image and many samples; roulette, at half the cut-off's rays per pixel
-    // sample, twice the samples: about equal rays, about equal noise.
+    // image and many samples; roulette, with fewer rays per pixel sample,
+    // twice the samples.
     let mut small = scene.clone();
     if tour.quality != Quality::Tiny {
         small.set_resolution(64, 64);
@@ -116,8 +117,11 @@ fn render(tour: &Tour) -> Result<Section> {
     };
     // Roulette first, so that the cut-off's caption can compare their means;
     // on the page the cut-off comes first, as on the slide.
-    let mut roulette = NaiveRecursive::new(vec![4], Some(UNLIMITED));
-    roulette.roulette_depth = Some(1);
+    // Roulette keeps a ray with a chance near the albedo, so with N = 4 at
+    // every hit each ray would have about 4 × 0.6 > 1 children on average and
+    // the tree would grow to the depth limit: it splits at the first hit only.
+    let roulette = NaiveRecursive::try_new(vec![4, 1], Some(UNLIMITED), Some(1), None)
+        .expect("a bounded recursion with a valid branching factor");
     let (roulette_rays, roulette_mean) = picture(
         tour,
         &mut s,
@@ -125,11 +129,13 @@ fn render(tour: &Tour) -> Result<Section> {
         &roulette,
         &spp(roulette_spp),
         "naive-roulette",
-        "Naive recursion, N = 4, ended by Russian roulette at every hit (a preview of Lecture \
-         12), unbiased",
+        "Naive recursion, N = 4 rays at the first hit and one at each later hit, ended by \
+         Russian roulette (a preview of Lecture 12), unbiased. With 4 rays at every hit the \
+         roulette could not end the tree: it keeps a ray with a chance near the albedo, so each \
+         ray would have more than one child on average",
     )?;
-    let mut cutoff = NaiveRecursive::new(vec![4], Some(UNLIMITED));
-    cutoff.cutoff = Some(CUTOFF);
+    let cutoff = NaiveRecursive::try_new(vec![4], Some(UNLIMITED), None, Some(CUTOFF))
+        .expect("a bounded recursion with a valid branching factor and cutoff");
     // Its caption is completed below, once its mean is known.
     let cut_spp_used = spp(cut_spp).spp;
     let (rays, cut_mean) = picture(
@@ -170,7 +176,7 @@ fn render(tour: &Tour) -> Result<Section> {
         &format!("β < {CUTOFF} (biased)"),
         None,
     ));
-    table.rows.push(row(&roulette, roulette_rays, "Russian roulette", None));
+    table.rows.push(row(&roulette, roulette_rays, "Russian roulette", Some("4 1")));
     println!(
         "  mean of the image: cut-off {:.4} ± {:.4}, roulette {:.4} ± {:.4} ({lower:.0} % lower)",
         cut.mean, cut.se, roulette_b.mean, roulette_b.se
@@ -307,11 +313,11 @@ fn rays_text(per_sample: f64) -> String {
 
 /// The row of `naive-rays.csv` for a render of `naive`.
 fn row(naive: &NaiveRecursive, rays: Rays, ended_by: &str, branching: Option<&str>) -> Vec<String> {
-    let n = branching.map_or_else(|| naive.branching[0].to_string(), String::from);
+    let n = branching.map_or_else(|| naive.branching()[0].to_string(), String::from);
     vec![
         n,
         naive
-            .max_depth
+            .max_depth()
             .map_or_else(|| "unlimited".into(), |d| d.to_string()),
         rays_text(rays.per_sample),
         bound(naive).map_or_else(|| "—".into(), |b| b.to_string()),

@@ -46,7 +46,8 @@ fn render(tour: &Tour) -> Result<Section> {
              in the next room: a path tracer must find the gap by chance, light paths pass through \
              it on their own, and bidirectional path tracing joins the two rooms directly. On the \
              Cornell box naive recursion (N = {NAIVE_N} rays at every hit, the full tree to depth 5 \
-             — at most 341 rays per pixel sample — and Russian roulette deeper) spends its time on \
+             — at most 341 rays per pixel sample — and below it one ray per hit, ended by Russian \
+             roulette) spends its time on \
              the trees of a few pixel samples, path tracing on many samples per pixel. Unbiased \
              algorithms differ only in their noise: at equal time, the lowest error wins."
         ),
