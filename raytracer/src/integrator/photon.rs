@@ -33,7 +33,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use rayon::prelude::*;
 
 use super::subpath::light_subpath;
-use super::vertex::{EMPTY_VERTEX, MAX_VERTICES, Subpath, Vertex, VertexKind, path_vertices};
+use super::vertex::{Subpath, Vertex, VertexKind, path_vertices};
 use crate::math::Vec3;
 use crate::sampling::Sampler;
 use crate::scene::Scene;
@@ -188,10 +188,8 @@ fn trace_batch<T>(
     let mut out = Vec::new();
     // An item needs one camera segment after it: at most D − 1 of its own,
     // i.e. light subpaths of at most D vertices.
-    let max_vertices = path_vertices(s.max_depth)
-        .saturating_sub(1)
-        .min(MAX_VERTICES);
-    let mut path: Subpath = [EMPTY_VERTEX; MAX_VERTICES];
+    let max_vertices = path_vertices(s.max_depth).saturating_sub(1);
+    let mut path: Subpath = Vec::new();
     for i in paths {
         let mut sampler = Sampler::new(s.seed, i, photon_sample_index(s.stream));
         let n = light_subpath(scene, &mut sampler, &mut path, max_vertices, s.rr_depth);
