@@ -245,7 +245,7 @@ impl IrradianceCache {
             false,
         );
         let x = vp.hit?;
-        if !matches!(scene.brdf(&x), Brdf::Lambert(_)) || vp.depth >= self.max_depth() {
+        if !diffuse_towards_viewer(scene.brdf(&x), &x) || vp.depth >= self.max_depth() {
             return None;
         }
         if self.interpolate(&x, vp.depth).is_some() {
@@ -420,8 +420,8 @@ impl Integrator for IrradianceCache {
         }
         let brdf = scene.brdf(&x);
         let mut l = le + beta * nee::sample_light(scene, &x, brdf, sampler, false);
-        if matches!(brdf, Brdf::Lambert(_)) {
-            // f_r = ρ/π whatever the directions.
+        if diffuse_towards_viewer(brdf, &x) {
+            // f_r = ρ/π whatever the directions (on the side it is seen from).
             let f = brdf.eval(Vec3A::Z, Vec3A::Z, x.uv);
             let e = match self.interpolate(&x, depth) {
                 Some(e) => e,
@@ -440,5 +440,18 @@ impl Integrator for IrradianceCache {
             l += beta * c.weight * li;
         }
         l
+    }
+}
+
+/// Whether `x` reflects as a Lambert surface towards its viewer: Lambert,
+/// or a one-sided Lambert seen from the front (from behind it is black, and
+/// the cache has nothing to add there).
+fn diffuse_towards_viewer(brdf: &Brdf, x: &Interaction) -> bool {
+    match brdf {
+        Brdf::Lambert(_) => true,
+        Brdf::OneSided(inner) => {
+            matches!(**inner, Brdf::Lambert(_)) && x.frame.to_local(x.wo).z > 0.0
+        }
+        _ => false,
     }
 }
