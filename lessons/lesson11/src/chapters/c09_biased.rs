@@ -181,7 +181,7 @@ fn render(tour: &Tour) -> Result<Section> {
             &tour.out,
             &picture,
             &format!(
-                "Cornell box, {} ({}), equal time: RMSE {:.4} against {}.",
+                "Cornell box, {} ({}), equal time: RMSE {:.4} against {}, off the lamp.",
                 m.algorithm.label(),
                 if unbiased { "unbiased" } else { "biased" },
                 m.rmse,
