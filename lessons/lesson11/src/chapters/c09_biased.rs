@@ -11,7 +11,7 @@ use raytracer::integrator::{
     IrradianceCache, IrradianceCacheSettings, PhotonMapping, PhotonSettings,
 };
 use raytracer::math::{Color, Vec2};
-use raytracer::metrics::{mean, rmse};
+use raytracer::metrics::mean;
 use raytracer::render::RenderOptions;
 use raytracer::scene::Scene;
 
@@ -293,7 +293,7 @@ fn render(tour: &Tour) -> Result<Section> {
             100.0 * luminance(lost) / luminance(total).max(1e-9)
         ),
     )?;
-    irradiance_records(tour, &mut c, &scene, &base, &k, max_depth, &reference)?;
+    irradiance_records(tour, &mut c, (&scene, &base, max_depth), &k, &reference, &counted)?;
 
     // The caustic scene: the grid at equal time.
     let (mut scene, mut base) = tour.scene("caustic", 1)?;
@@ -593,11 +593,10 @@ fn photon_blur(
 fn irradiance_records(
     tour: &Tour,
     c: &mut ChapterOutput,
-    scene: &Scene,
-    base: &RenderOptions,
+    (scene, base, max_depth): (&Scene, &RenderOptions, u32),
     knobs: &Knobs,
-    max_depth: u32,
     reference: &Reference,
+    counted: &[bool],
 ) -> Result<()> {
     let spp = 4;
     for a in [0.15f32, 0.3, 0.6] {
@@ -622,7 +621,7 @@ fn irradiance_records(
         let r = raytracer::render::render(scene, &cache, &options);
         let seconds = start.elapsed().as_secs_f64();
         let image = r.film.image();
-        let error = rmse(&image, &reference.mean);
+        let error = masked_rmse(&image, &reference.mean, counted);
         let mut dots = image.clone();
         let first = cache.records().iter().map(|r| r.depth).min().unwrap_or(1);
         let lens = scene.camera.position();
@@ -639,7 +638,7 @@ fn irradiance_records(
             &tour.out,
             &picture,
             &format!(
-                "Irradiance caching, a = {a}: {} records, RMSE {error:.4} against {}; a larger a \
+                "Irradiance caching, a = {a}: {} records, RMSE {error:.4} against {} off the lamp; a larger a \
                  lets each record cover more, and its interpolation shows as blotches.",
                 cache.records().len(),
                 reference.name
