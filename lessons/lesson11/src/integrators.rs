@@ -9,7 +9,7 @@
 
 mod biased;
 
-pub use biased::{BiasedArgs, render_sppm_to_files};
+pub use biased::{BiasedArgs, BiasedKind, render_sppm_to_files};
 
 use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
@@ -108,8 +108,11 @@ impl IntegratorKind {
                 strategy_images: None,
             }),
             IntegratorKind::Photon | IntegratorKind::Vpl | IntegratorKind::IrradianceCache => {
+                let Some(kind) = self.biased() else {
+                    bail!("{self:?} is not a biased integrator")
+                };
                 biased::build(
-                    self,
+                    kind,
                     &args.biased,
                     scene,
                     options,
@@ -122,6 +125,19 @@ impl IntegratorKind {
                 "sppm renders in passes of its own, not sample by sample: use `lesson11 render --integrator sppm`"
             ),
         })
+    }
+}
+
+impl IntegratorKind {
+    /// The biased integrator this is, if it is one.
+    pub fn biased(self) -> Option<BiasedKind> {
+        match self {
+            IntegratorKind::Photon => Some(BiasedKind::Photon),
+            IntegratorKind::Sppm => Some(BiasedKind::Sppm),
+            IntegratorKind::Vpl => Some(BiasedKind::Vpl),
+            IntegratorKind::IrradianceCache => Some(BiasedKind::IrradianceCache),
+            _ => None,
+        }
     }
 }
 
@@ -238,7 +254,7 @@ impl IntegratorArgs {
         if kind != Ao && self.ao_distance.is_some() {
             unused("--ao-distance", "it is an option of --integrator ao")?;
         }
-        self.biased.check(kind, &name)?;
+        self.biased.check(kind.biased(), &name)?;
         if self.branching.contains(&0) {
             bail!("--branching factors must be at least 1");
         }

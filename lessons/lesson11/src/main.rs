@@ -18,7 +18,8 @@
 //! chapters/mod.rs  the chapter list in lecture order, and the tour that walks it
 //! chapters/c*.rs   one chapter each: its pictures, tables and plots, and its section of the page
 //! tour.rs          what every chapter is (its entry in the list) and gets (the Tour context)
-//! render_files.rs equal_time.rs algorithms.rs integrators.rs integrators/     shared by chapters and commands
+//! equal_time.rs algorithms.rs integrators.rs integrators/     shared by chapters and commands
+//! render_files.rs  rendering to files: PNG, EXR and the variance, replaced together
 //! reference.rs     the independent references renders are measured against
 //! options.rs       scene, size, samples, seed, threads and output folder of a command line
 //! page/ plots/     the HTML page and its SVG plots

@@ -16,7 +16,6 @@ use raytracer::integrator::{
 use raytracer::render::{RenderOptions, interrupt_flag, sppm::render_sppm};
 use raytracer::scene::Scene;
 
-use super::IntegratorKind;
 use crate::options::{check_memory, create_dir};
 use crate::render_files::write_png_and_exr;
 
@@ -54,11 +53,33 @@ pub struct BiasedArgs {
     pub ic_rays: Option<u32>,
 }
 
+/// The biased integrators, as `--integrator` names them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BiasedKind {
+    Photon,
+    Sppm,
+    Vpl,
+    IrradianceCache,
+}
+
+impl BiasedKind {
+    /// Its `--integrator` name.
+    pub fn name(self) -> &'static str {
+        match self {
+            BiasedKind::Photon => "photon",
+            BiasedKind::Sppm => "sppm",
+            BiasedKind::Vpl => "vpl",
+            BiasedKind::IrradianceCache => "irradiance-cache",
+        }
+    }
+}
+
 impl BiasedArgs {
-    /// Refuses an option that `kind` does not use.
-    pub fn check(&self, kind: IntegratorKind, name: &str) -> Result<()> {
-        use IntegratorKind::{IrradianceCache, Photon, Sppm, Vpl};
-        let given: [(&str, bool, &[IntegratorKind]); 9] = [
+    /// Refuses an option that `kind` (`None`: an unbiased integrator, named
+    /// `name`) does not use.
+    pub fn check(&self, kind: Option<BiasedKind>, name: &str) -> Result<()> {
+        use BiasedKind::{IrradianceCache, Photon, Sppm, Vpl};
+        let given: [(&str, bool, &[BiasedKind]); 9] = [
             ("--photons", self.photons.is_some(), &[Photon, Sppm]),
             ("--k", self.k.is_some(), &[Photon]),
             ("--radius", self.radius.is_some(), &[Photon, Sppm]),
@@ -70,12 +91,8 @@ impl BiasedArgs {
             ("--ic-rays", self.ic_rays.is_some(), &[IrradianceCache]),
         ];
         for (option, set, users) in given {
-            if set && !users.contains(&kind) {
-                let names: Vec<String> = users
-                    .iter()
-                    .filter_map(clap::ValueEnum::to_possible_value)
-                    .map(|v| v.get_name().to_string())
-                    .collect();
+            if set && !kind.is_some_and(|k| users.contains(&k)) {
+                let names: Vec<&str> = users.iter().map(|u| u.name()).collect();
                 bail!(
                     "{option} does not apply to --integrator {name}: it is an option of --integrator {}",
                     names.join(" and ")
@@ -177,7 +194,7 @@ fn in_pool<R: Send>(threads: Option<usize>, work: impl FnOnce() -> R + Send) -> 
 /// Builds `photon`, `vpl` or `irradiance-cache` (their maps, lights or
 /// records made now) and prints one line on what they hold.
 pub fn build(
-    kind: IntegratorKind,
+    kind: BiasedKind,
     args: &BiasedArgs,
     scene: &Scene,
     options: &RenderOptions,
@@ -188,7 +205,7 @@ pub fn build(
     let seed = options.seed;
     let stop = interrupt_flag();
     let (integrator, summary): (Box<dyn Integrator>, String) = match kind {
-        IntegratorKind::Photon => {
+        BiasedKind::Photon => {
             let s = args.photon(max_depth, rr_depth, seed)?;
             check_memory(
                 &format!("{} photon paths", s.photons),
@@ -201,7 +218,7 @@ pub fn build(
             let line = pm.summary();
             (Box::new(pm), line)
         }
-        IntegratorKind::Vpl => {
+        BiasedKind::Vpl => {
             let s = args.vpl(max_depth, rr_depth, seed)?;
             check_memory(
                 &format!("{} VPL paths", s.paths),
@@ -214,7 +231,7 @@ pub fn build(
             let line = ir.summary();
             (Box::new(ir), line)
         }
-        IntegratorKind::IrradianceCache => {
+        BiasedKind::IrradianceCache => {
             let s = args.irradiance_cache(max_depth, rr_depth, seed)?;
             let ic = in_pool(options.threads, || IrradianceCache::build(scene, s, stop))
                 .map_err(anyhow::Error::msg)?;
