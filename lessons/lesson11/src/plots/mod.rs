@@ -1,10 +1,11 @@
-//! Plots as SVG files: line charts (linear or log–log axes) and polar plots of
-//! BRDF lobes. SVG needs no fonts or libraries at build time and every browser
+//! Plots as SVG files: line charts (linear or log–log axes), stacked bars and
+//! polar plots of BRDF lobes. SVG needs no fonts or libraries at build time and every browser
 //! shows it, so the lesson's page stays self-contained. One plot is an image
 //! instead, because it lies over a rendered picture pixel for pixel: the tile
 //! z-map of two renders. Path figures are SVG drawn over a render, which they
 //! embed.
 
+mod bars;
 mod chart;
 mod data_uri;
 mod path_figure;
@@ -12,6 +13,7 @@ mod polar;
 mod series;
 mod zmap;
 
+pub use bars::Bars;
 pub use chart::{Chart, Scale};
 pub use path_figure::{Labels, in_picture, path_figure_svg, pick_sample};
 pub use polar::polar_svg;
