@@ -229,7 +229,11 @@ fn the_page_and_its_assets_load_and_unknown_paths_are_404() {
             "path-nee",
             "naive",
             "light",
-            "bdpt"
+            "bdpt",
+            "photon",
+            "sppm",
+            "vpl",
+            "irradiance-cache"
         ],
         "every --integrator of lesson11 render"
     );
