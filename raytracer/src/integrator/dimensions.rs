@@ -45,6 +45,9 @@
 //!   within each `s = 0, 1, …`: `t = 1` draws a connection to the camera,
 //!   `s = 1` (`t ≥ 2`, at a vertex that can be connected to) a light sample,
 //!   the others nothing.
+//! - **mlt** (Metropolis light transport, [`crate::render::metropolis`]):
+//!   the pixel (2 numbers), then the layout of the integrator it runs over;
+//!   the numbers are the coordinates of the chain's state.
 
 use crate::sampling::Draw;
 
