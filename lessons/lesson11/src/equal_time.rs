@@ -7,21 +7,20 @@ use raytracer::integrator::{
     Bdpt, DirectStrategy, Integrator, LightTracer, NaiveRecursive, PathTracer,
 };
 use raytracer::metrics::rmse;
-use raytracer::render::{RenderOptions, render};
+use raytracer::render::{Metropolis, RenderOptions, render, render_metropolis};
 use raytracer::scene::Scene;
 
-/// Renders `integrator` for about `seconds`: renders of 1, 2, 4, … samples
-/// per pixel measure the time per sample and trace the error against
-/// `reference` as it falls (the convergence curve), then one render takes the
-/// samples that fit the budget.
-fn render_for(
-    scene: &Scene,
-    integrator: &dyn Integrator,
-    base: &RenderOptions,
-    seconds: f64,
-    reference: &Image,
-) -> (Image, u32, f64, Vec<(f64, f64)>) {
-    let run = |spp: u32| {
+/// How one algorithm renders: `spp` samples (mutations, for Metropolis) per
+/// pixel in, the image and its seconds out.
+type Run<'a> = Box<dyn Fn(u32) -> (Image, f64) + 'a>;
+
+/// An integrator rendered by the pixel loop.
+fn pixels<'a>(
+    scene: &'a Scene,
+    integrator: &'a dyn Integrator,
+    base: &'a RenderOptions,
+) -> Run<'a> {
+    Box::new(move |spp| {
         let options = RenderOptions {
             spp,
             progress: false,
@@ -32,7 +31,31 @@ fn render_for(
             result.film.image(),
             result.stats.elapsed.as_secs_f64().max(1e-6),
         )
-    };
+    })
+}
+
+/// Metropolis light transport over `bdpt` with the default parameters;
+/// the bootstrap's time counts.
+fn metropolis<'a>(scene: &'a Scene, bdpt: &'a Bdpt, base: &'a RenderOptions) -> Run<'a> {
+    Box::new(move |spp| {
+        let options = RenderOptions {
+            spp,
+            progress: false,
+            ..base.clone()
+        };
+        let result = render_metropolis(scene, bdpt, &options, &Metropolis::default());
+        (
+            result.film.image(),
+            result.stats.elapsed.as_secs_f64().max(1e-6),
+        )
+    })
+}
+
+/// Renders with `run` for about `seconds`: renders of 1, 2, 4, … samples
+/// per pixel measure the time per sample and trace the error against
+/// `reference` as it falls (the convergence curve), then one render takes the
+/// samples that fit the budget.
+fn render_for(run: &Run, seconds: f64, reference: &Image) -> (Image, u32, f64, Vec<(f64, f64)>) {
     let mut curve = Vec::new();
     let mut spp = 1;
     let per_spp = loop {
@@ -62,18 +85,34 @@ pub struct EqualTimeRow {
     pub curve: Vec<(f64, f64)>,
 }
 
+/// A comparison: its rows and the reference they were measured against.
+pub struct EqualTime {
+    pub rows: Vec<EqualTimeRow>,
+    pub reference: Image,
+}
+
+/// The algorithms that join path, light and bidirectional tracing in a
+/// comparison.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Also {
+    /// Naive recursion, N = 4.
+    pub naive: bool,
+    /// Metropolis light transport over bidirectional path tracing.
+    pub metropolis: bool,
+}
+
 /// Renders `scene` with every algorithm for about `budget` seconds each, all
 /// stopping at `max_depth`, and measures each one's RMSE against a
-/// bidirectional reference of `reference_spp` samples per pixel. Naive
-/// recursion (N = 4) joins the comparison if `with_naive`.
+/// bidirectional reference of `reference_spp` samples per pixel; `also`
+/// adds naive recursion and Metropolis light transport.
 pub fn equal_time(
     scene: &Scene,
     base: &RenderOptions,
     budget: f64,
     reference_spp: u32,
     max_depth: u32,
-    with_naive: bool,
-) -> Vec<EqualTimeRow> {
+    also: Also,
+) -> EqualTime {
     let max_depth = Some(max_depth);
     let bdpt = Bdpt {
         max_depth,
@@ -99,24 +138,33 @@ pub fn equal_time(
         max_depth,
         ..LightTracer::default()
     };
-    let mut algorithms: Vec<(&'static str, &dyn Integrator)> = vec![
-        ("path (MIS)", &path),
-        ("path (BRDF only)", &path_brdf),
-        ("light", &light),
-        ("bidirectional", &bdpt),
+    let mut algorithms: Vec<(&'static str, &str, Run)> = vec![
+        ("path (MIS)", path.name(), pixels(scene, &path, base)),
+        (
+            "path (BRDF only)",
+            path_brdf.name(),
+            pixels(scene, &path_brdf, base),
+        ),
+        ("light", light.name(), pixels(scene, &light, base)),
+        ("bidirectional", bdpt.name(), pixels(scene, &bdpt, base)),
     ];
-    if with_naive {
-        algorithms.insert(0, ("naive recursion, N = 4", &naive));
+    if also.naive {
+        let run = pixels(scene, &naive, base);
+        algorithms.insert(0, ("naive recursion, N = 4", naive.name(), run));
+    }
+    if also.metropolis {
+        let run = metropolis(scene, &bdpt, base);
+        algorithms.push(("Metropolis (over bidirectional)", "mlt", run));
     }
     let mut rows = Vec::new();
-    for (algorithm, integrator) in algorithms {
-        let (image, spp, seconds, curve) = render_for(scene, integrator, base, budget, &reference);
+    for (algorithm, name, run) in algorithms {
+        let (image, spp, seconds, curve) = render_for(&run, budget, &reference);
         let rmse = rmse(&image, &reference);
         println!(
-            "  {:14} {algorithm:24} {spp:6} spp {seconds:7.2} s  RMSE {rmse:.4}",
+            "  {:14} {algorithm:31} {spp:6} spp {seconds:7.2} s  RMSE {rmse:.4}",
             scene.name
         );
-        let stem = format!("{}-{}", scene.name, integrator.name());
+        let stem = format!("{}-{name}", scene.name);
         rows.push(EqualTimeRow {
             algorithm,
             stem,
@@ -127,5 +175,5 @@ pub fn equal_time(
             curve,
         });
     }
-    rows
+    EqualTime { rows, reference }
 }

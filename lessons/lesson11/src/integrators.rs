@@ -1,6 +1,8 @@
 //! The integrators a command line can choose (`--integrator`) and their
 //! options: the lecture's algorithms from direct light to bidirectional path
-//! tracing, shared by `lesson11 render` and the stereo chapter.
+//! tracing and Metropolis light transport, shared by `lesson11 render` and
+//! the stereo chapter (Metropolis only by `render`: it runs Markov chains
+//! over the whole image, not one pixel sample at a time).
 //!
 //! Every option is checked before anything is rendered: an option the chosen
 //! integrator does not use is an error, not silently ignored, and naive
@@ -13,8 +15,10 @@ use raytracer::integrator::{
     AmbientOcclusion, Bdpt, Direct, DirectStrategy, Integrator, LightTracer, NaiveRecursive,
     PathTracer,
 };
-use raytracer::render::RenderOptions;
+use raytracer::render::{Metropolis, RenderOptions};
 use raytracer::scene::{Scene, max_depth_from};
+
+use crate::metropolis::MetropolisArgs;
 
 /// The integrators this build offers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -35,6 +39,9 @@ pub enum IntegratorKind {
     Light,
     /// Bidirectional path tracing: camera and light subpaths, every connection, MIS over all of them.
     Bdpt,
+    /// Metropolis light transport: Markov chains over bidirectional paths; --spp counts mutations
+    /// per pixel (see --chains, --bootstrap, --large-step-probability, --mutation-size).
+    Mlt,
 }
 
 /// The most rays a naive recursive render may trace without `--force`, in
@@ -91,6 +98,10 @@ impl IntegratorKind {
                 rr_depth,
                 strategy_images: None,
             }),
+            IntegratorKind::Mlt => bail!(
+                "--integrator mlt runs Markov chains over the whole image, not one pixel sample at a time: \
+                 only `lesson11 render --integrator mlt` renders with it"
+            ),
         })
     }
 }
@@ -151,6 +162,8 @@ pub struct IntegratorArgs {
     /// Ambient occlusion: length of the occlusion rays, in scene units (metres; default 1).
     #[arg(long, allow_negative_numbers = true)]
     pub ao_distance: Option<f32>,
+    #[command(flatten)]
+    pub metropolis: MetropolisArgs,
 }
 
 impl IntegratorArgs {
@@ -191,6 +204,9 @@ impl IntegratorArgs {
         }
         if kind != Ao && self.ao_distance.is_some() {
             unused("--ao-distance", "it is an option of --integrator ao")?;
+        }
+        if kind != IntegratorKind::Mlt {
+            crate::metropolis::refuse_unused(&self.metropolis, &name)?;
         }
         if self.branching.contains(&0) {
             bail!("--branching factors must be at least 1");
@@ -239,6 +255,22 @@ impl IntegratorArgs {
                 scene.settings.max_depth.unwrap_or(NAIVE_DEFAULT_DEPTH),
             )),
         }
+    }
+
+    /// Metropolis light transport (`--integrator mlt`): the integrator its
+    /// chains run over, bidirectional path tracing with the depth options,
+    /// and its parameters for `options.spp` mutations per pixel, all checked.
+    pub fn metropolis(&self, scene: &Scene, options: &RenderOptions) -> Result<(Bdpt, Metropolis)> {
+        let kind = IntegratorKind::Mlt;
+        self.check(kind)?;
+        let bdpt = Bdpt {
+            max_depth: self.max_depth(kind, scene)?,
+            rr_depth: self.rr_depth(scene),
+            strategy_images: None,
+        };
+        let pixels = scene.camera.width as u64 * scene.camera.height as u64;
+        let metropolis = self.metropolis.metropolis(options.spp as u64 * pixels)?;
+        Ok((bdpt, metropolis))
     }
 
     /// The roulette depth: `--rr-depth`, else the scene's.

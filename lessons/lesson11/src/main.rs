@@ -18,7 +18,9 @@
 //! chapters/mod.rs  the chapter list in lecture order, and the tour that walks it
 //! chapters/c*.rs   one chapter each: its pictures, tables and plots, and its section of the page
 //! tour.rs          what every chapter is (its entry in the list) and gets (the Tour context)
-//! render_files.rs equal_time.rs integrators.rs     shared by chapters and commands
+//! equal_time.rs integrators.rs     shared by chapters and commands
+//! metropolis.rs    --integrator mlt: its options and its render to files
+//! render_files.rs  rendering one picture to its PNG, EXR and variance EXR
 //! options.rs       scene, size, samples, seed, threads and output folder of a command line
 //! page/ plots/     the HTML page and its SVG plots
 //! ```
@@ -34,6 +36,7 @@ mod chapters;
 mod commands;
 mod equal_time;
 mod integrators;
+mod metropolis;
 mod options;
 mod page;
 mod plots;

@@ -114,7 +114,10 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 args.equal_time,
                 512,
                 5,
-                name == "cornell",
+                crate::equal_time::Also {
+                    naive: name == "cornell",
+                    metropolis: name == "door",
+                },
             );
         }
     }

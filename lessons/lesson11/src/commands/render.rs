@@ -39,6 +39,19 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         );
     }
     let (scene, options) = args.scene.load("cornell")?;
+    if args.integrator == IntegratorKind::Mlt {
+        let (bdpt, metropolis) = args.integrator_args.metropolis(&scene, &options)?;
+        crate::metropolis::render_to_files(
+            &scene,
+            &bdpt,
+            &options,
+            &metropolis,
+            &args.scene.out,
+            &format!("{}-mlt", scene.name),
+            args.exposure,
+        )?;
+        return Ok(());
+    }
     let integrator =
         args.integrator
             .build(&args.integrator_args, &scene, &options, args.scene.force)?;

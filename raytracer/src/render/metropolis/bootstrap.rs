@@ -91,7 +91,7 @@ pub fn bootstrap(
                     true
                 });
                 tick(n);
-                done.then(|| (f, path.nonfinite))
+                done.then_some((f, path.nonfinite))
             },
         )
         .collect();

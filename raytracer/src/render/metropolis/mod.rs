@@ -137,38 +137,63 @@ impl Metropolis {
             .map_or(width as u64 * height as u64, u64::from)
     }
 
-    /// Checks the parameters for `mutations` steps in all; the error names
-    /// the parameter, its value and what it must be.
-    pub fn check(&self, mutations: u64) -> Result<(), String> {
+    /// Checks the parameters for `mutations` steps in all.
+    pub fn check(&self, mutations: u64) -> Result<(), ParameterError> {
+        let wrong = |field, reason: String| Err(ParameterError { field, reason });
         let p = self.large_step_probability;
         if !(0.0..=1.0).contains(&p) {
-            return Err(format!(
-                "the large-step probability must be in [0, 1] (0: small steps only, 1: independent paths), got {p}"
-            ));
+            return wrong(
+                "large_step_probability",
+                format!("must be in [0, 1] (0: small steps only, 1: independent paths), got {p}"),
+            );
         }
         let s = self.mutation_size;
         if !(s > 0.0 && s <= 1.0) {
-            return Err(format!(
-                "the mutation size must be in (0, 1] (the deviation of a small step, a fraction of the unit interval; 0.01 is usual), got {s}"
-            ));
+            return wrong(
+                "mutation_size",
+                format!(
+                    "must be in (0, 1] (the deviation of a small step, a fraction of the unit interval; 0.01 is usual), got {s}"
+                ),
+            );
         }
         if self.chains == 0 {
-            return Err("the number of chains must be at least 1".into());
+            return wrong("chains", "must be at least 1, got 0".into());
         }
         if self.chains as u64 > mutations {
-            return Err(format!(
-                "{} chains for {mutations} mutations in all: every chain needs at least one; use fewer chains or more mutations per pixel",
-                self.chains
-            ));
+            return wrong(
+                "chains",
+                format!(
+                    "is {} but there are only {mutations} mutations in all (mutations per pixel × pixels), and every chain needs one: use fewer chains or more mutations per pixel",
+                    self.chains
+                ),
+            );
         }
         if self.bootstrap == Some(0) {
-            return Err(
-                "the bootstrap needs at least 1 path (it estimates the brightness b)".into(),
+            return wrong(
+                "bootstrap",
+                "must be at least 1 path (the bootstrap estimates the brightness b), got 0".into(),
             );
         }
         Ok(())
     }
 }
+
+/// A parameter of [`Metropolis`] out of its range.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ParameterError {
+    /// The field of [`Metropolis`], e.g. `large_step_probability`.
+    pub field: &'static str,
+    /// What it must be and what it is, e.g. `must be in [0, 1] (…), got 1.5`.
+    pub reason: String,
+}
+
+impl std::fmt::Display for ParameterError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Metropolis `{}` {}", self.field, self.reason)
+    }
+}
+
+impl std::error::Error for ParameterError {}
 
 /// A finished (or interrupted) Metropolis render.
 #[derive(Clone, Debug)]
@@ -743,67 +768,49 @@ mod tests {
     fn bad_parameters_are_named() {
         let ok = Metropolis::default();
         assert_eq!(ok.check(1000), Ok(()));
+        let with = |f: fn(&mut Metropolis)| {
+            let mut m = ok.clone();
+            f(&mut m);
+            m
+        };
         let cases = [
             (
-                Metropolis {
-                    large_step_probability: 1.5,
-                    ..ok.clone()
-                },
-                "large-step probability must be in [0, 1]",
+                with(|m| m.large_step_probability = 1.5),
+                "large_step_probability",
+                "must be in [0, 1]",
             ),
             (
-                Metropolis {
-                    large_step_probability: f32::NAN,
-                    ..ok.clone()
-                },
-                "large-step probability",
+                with(|m| m.large_step_probability = f32::NAN),
+                "large_step_probability",
+                "got NaN",
             ),
             (
-                Metropolis {
-                    large_step_probability: -0.1,
-                    ..ok.clone()
-                },
+                with(|m| m.large_step_probability = -0.1),
+                "large_step_probability",
                 "got -0.1",
             ),
             (
-                Metropolis {
-                    mutation_size: -0.01,
-                    ..ok.clone()
-                },
-                "mutation size must be in (0, 1]",
+                with(|m| m.mutation_size = -0.01),
+                "mutation_size",
+                "must be in (0, 1]",
+            ),
+            (with(|m| m.mutation_size = 0.0), "mutation_size", "got 0"),
+            (with(|m| m.chains = 0), "chains", "at least 1"),
+            (
+                with(|m| m.chains = 2000),
+                "chains",
+                "only 1000 mutations in all",
             ),
             (
-                Metropolis {
-                    mutation_size: 0.0,
-                    ..ok.clone()
-                },
-                "mutation size",
-            ),
-            (
-                Metropolis {
-                    chains: 0,
-                    ..ok.clone()
-                },
-                "at least 1",
-            ),
-            (
-                Metropolis {
-                    chains: 2000,
-                    ..ok.clone()
-                },
-                "2000 chains for 1000 mutations",
-            ),
-            (
-                Metropolis {
-                    bootstrap: Some(0),
-                    ..ok.clone()
-                },
-                "bootstrap needs at least 1 path",
+                with(|m| m.bootstrap = Some(0)),
+                "bootstrap",
+                "at least 1 path",
             ),
         ];
-        for (m, expected) in cases {
+        for (m, field, reason) in cases {
             let e = m.check(1000).unwrap_err();
-            assert!(e.contains(expected), "{m:?}: {e}");
+            assert_eq!(e.field, field, "{m:?}");
+            assert!(e.reason.contains(reason), "{m:?}: {e}");
         }
     }
 }

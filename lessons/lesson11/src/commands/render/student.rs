@@ -36,10 +36,12 @@ pub fn run(
             branching: ia.branching()[0],
         },
         IntegratorKind::Direct | IntegratorKind::PathNee => StudentRender::Direct,
-        IntegratorKind::Ao | IntegratorKind::Light | IntegratorKind::Bdpt => bail!(
-            "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
+        IntegratorKind::Ao | IntegratorKind::Light | IntegratorKind::Bdpt | IntegratorKind::Mlt => {
+            bail!(
+                "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
              (light tracing and bidirectional tracing are graded piece by piece: exercises 14 and 15)"
-        ),
+            )
+        }
     };
     let exercise = which.exercise();
     let (student, reference) = (which.student(), which.reference());
