@@ -68,6 +68,9 @@ pub mod ex14_light_tracing;
 #[allow(unused_variables)]
 #[cfg_attr(feature = "solutions", path = "../solutions/ex15_bdpt_connection.rs")]
 pub mod ex15_bdpt_connection;
+#[allow(unused_variables)]
+#[cfg_attr(feature = "solutions", path = "../solutions/ex18_metropolis_step.rs")]
+pub mod ex18_metropolis_step;
 
 /// The module names, in lecture order (they match `info.toml`).
 pub const MODULES: &[&str] = &[
@@ -86,6 +89,7 @@ pub const MODULES: &[&str] = &[
     "ex13_mis",
     "ex14_light_tracing",
     "ex15_bdpt_connection",
+    "ex18_metropolis_step",
 ];
 
 /// Whether this build uses the reference solutions (feature `solutions`).
