@@ -22,7 +22,8 @@ use crate::render_files::{OutputFiles, warn_if_unlit};
 #[derive(Args, Debug, Clone, Default)]
 pub struct MetropolisArgs {
     /// Metropolis: independent Markov chains, each with an equal share of the mutations (default
-    /// 64). The image does not depend on --threads; the chains' spread is its variance EXR.
+    /// 64, or one per mutation if there are fewer). The image does not depend on --threads; the
+    /// chains' spread is its variance EXR.
     #[arg(long, allow_negative_numbers = true)]
     pub chains: Option<i64>,
     /// Metropolis: independent paths of the bootstrap that estimates the brightness b and starts
@@ -70,7 +71,10 @@ impl MetropolisArgs {
         let metropolis = Metropolis {
             chains: match self.chains {
                 Some(v) => count("--chains", v)?,
-                None => default.chains,
+                // A tiny render has fewer mutations than 64.
+                None => default
+                    .chains
+                    .min(mutations.clamp(1, u32::MAX as u64) as u32),
             },
             bootstrap: self
                 .bootstrap

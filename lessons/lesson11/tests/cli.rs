@@ -64,6 +64,7 @@ fn the_tour_writes_every_picture_its_page_shows() {
         "path (BRDF only)",
         "light",
         "bidirectional",
+        "Metropolis (over bidirectional)",
     ] {
         assert!(
             compare.contains(algorithm),
@@ -97,6 +98,38 @@ fn render_writes_png_exr_and_variance() {
         "cornell-path.exr",
         "cornell-path-variance.exr",
     ] {
+        assert!(out.join(f).is_file(), "{f} missing");
+    }
+    std::fs::remove_dir_all(&out).ok();
+}
+
+/// Metropolis light transport writes the same three files; a render this
+/// small (48 mutations) runs with one chain per mutation.
+#[test]
+fn render_mlt_writes_png_exr_and_the_chains_variance() {
+    let out = temp_dir("render-mlt");
+    let o = lesson11(&[
+        "render",
+        "--scene",
+        "door",
+        "--integrator",
+        "mlt",
+        "--width",
+        "8",
+        "--height",
+        "6",
+        "--spp",
+        "1",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        said.contains("Metropolis: b = ") && said.contains("48 chains"),
+        "{said}"
+    );
+    for f in ["door-mlt.png", "door-mlt.exr", "door-mlt-variance.exr"] {
         assert!(out.join(f).is_file(), "{f} missing");
     }
     std::fs::remove_dir_all(&out).ok();
