@@ -11,8 +11,9 @@ use raytracer::render::{Metropolis, RenderOptions, render, render_metropolis};
 use raytracer::scene::Scene;
 
 /// How one algorithm renders: `spp` samples (mutations, for Metropolis) per
-/// pixel in, the image and its seconds out.
-type Run<'a> = Box<dyn Fn(u32) -> (Image, f64) + 'a>;
+/// pixel in; the image, its seconds, and the part of them that does not grow
+/// with `spp` (Metropolis's bootstrap) out.
+type Run<'a> = Box<dyn Fn(u32) -> (Image, f64, f64) + 'a>;
 
 /// An integrator rendered by the pixel loop.
 fn pixels<'a>(
@@ -30,12 +31,13 @@ fn pixels<'a>(
         (
             result.film.image(),
             result.stats.elapsed.as_secs_f64().max(1e-6),
+            0.0,
         )
     })
 }
 
 /// Metropolis light transport over `bdpt` with the default parameters;
-/// the bootstrap's time counts.
+/// the bootstrap's time counts, as a fixed cost.
 fn metropolis<'a>(scene: &'a Scene, bdpt: &'a Bdpt, base: &'a RenderOptions) -> Run<'a> {
     Box::new(move |spp| {
         let options = RenderOptions {
@@ -47,6 +49,7 @@ fn metropolis<'a>(scene: &'a Scene, bdpt: &'a Bdpt, base: &'a RenderOptions) -> 
         (
             result.film.image(),
             result.stats.elapsed.as_secs_f64().max(1e-6),
+            result.bootstrap_seconds,
         )
     })
 }
@@ -54,20 +57,21 @@ fn metropolis<'a>(scene: &'a Scene, bdpt: &'a Bdpt, base: &'a RenderOptions) -> 
 /// Renders with `run` for about `seconds`: renders of 1, 2, 4, … samples
 /// per pixel measure the time per sample and trace the error against
 /// `reference` as it falls (the convergence curve), then one render takes the
-/// samples that fit the budget.
+/// samples that fit the budget (after the fixed part of the time).
 fn render_for(run: &Run, seconds: f64, reference: &Image) -> (Image, u32, f64, Vec<(f64, f64)>) {
     let mut curve = Vec::new();
     let mut spp = 1;
-    let per_spp = loop {
-        let (image, secs) = run(spp);
+    let (fixed, per_spp) = loop {
+        let (image, secs, fixed) = run(spp);
         curve.push((secs, rmse(&image, reference) as f64));
         if secs * 2.0 > seconds / 2.0 || spp >= 1 << 15 {
-            break secs / spp as f64;
+            let fixed = fixed.clamp(0.0, secs / 2.0);
+            break (fixed, (secs - fixed) / spp as f64);
         }
         spp *= 2;
     };
-    let spp = ((seconds / per_spp) as u32).clamp(1, 1 << 16);
-    let (image, secs) = run(spp);
+    let spp = (((seconds - fixed) / per_spp) as u32).clamp(1, 1 << 16);
+    let (image, secs, _) = run(spp);
     curve.push((secs, rmse(&image, reference) as f64));
     curve.sort_by(|a, b| a.0.total_cmp(&b.0));
     (image, spp, secs, curve)
