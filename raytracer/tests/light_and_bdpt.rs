@@ -123,6 +123,53 @@ fn furnace_gives_one_minus_half_to_the_depth() {
     }
 }
 
+/// The furnace with albedo 0.98 and `L_e = 0.02`: still exactly
+/// `L_e/(1 − ρ) = 1`, but the light's paths are long — Russian roulette
+/// (from 5 bounces, survival capped at 0.95) lets a twentieth of them go on
+/// past 63 bounces, and the terms of 64 bounces and more hold `0.98⁶⁴ = 27 %`
+/// of the light (`ρ^k` of it after `k` bounces). Light tracing and BDPT once kept at most 64 vertices per
+/// subpath whatever the max depth said: light tracing then gave 0.721 ±
+/// 0.009 here, 32 standard errors off (BDPT loses less, only the strategies of paths
+/// longer than its subpaths; its standard error here is about 7 %). Now the
+/// max depth is their only limit, as for the path tracer. Tolerance as in
+/// [`assert_z`] (5 standard errors, false failure < 6e-7 per check).
+#[test]
+fn no_vertex_cap_in_a_bright_furnace() {
+    let mut parts = raytracer::scene::load_builtin("furnace").unwrap();
+    let object = &mut parts.objects[0];
+    object.emitter.as_mut().unwrap().radiance = raytracer::math::Color::splat(0.02);
+    parts.brdfs[object.brdf as usize] = raytracer::brdf::Brdf::Lambert(raytracer::brdf::Lambert {
+        albedo: raytracer::brdf::Texture::Constant(raytracer::math::Color::splat(0.98)),
+    });
+    let mut scene = Scene::build("bright furnace", parts);
+    scene.set_resolution(8, 8);
+    let lt = LightTracer {
+        max_depth: None,
+        rr_depth: 5,
+    };
+    let bdpt = Bdpt {
+        max_depth: None,
+        rr_depth: 5,
+        ..Bdpt::default()
+    };
+    let pt = PathTracer::default();
+    assert_z(
+        "path tracing, albedo 0.98",
+        image_mean(&film(&scene, &pt, 256, 12)),
+        1.0,
+    );
+    assert_z(
+        "light tracing, albedo 0.98",
+        image_mean(&path_totals_film(&scene, &lt, 512, 13)),
+        1.0,
+    );
+    assert_z(
+        "bdpt, albedo 0.98",
+        image_mean(&path_totals_film(&scene, &bdpt, 64, 14)),
+        1.0,
+    );
+}
+
 /// Path, light and bidirectional tracing render the same Cornell box at max
 /// depth `depth` (32×32, 64 spp): a tile-by-tile z-test (8×8 tiles, 16 tiles ×
 /// 3 channels × 3 pairs) with the films' own variances. Threshold: Šidák-style

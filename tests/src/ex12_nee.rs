@@ -27,7 +27,9 @@ use raytracer::frame::Frame;
 use raytracer::geometry::{Quad, Shape};
 use raytracer::math::{Color, INV_PI, Vec2, Vec3A};
 use raytracer::sampling::Sampler;
-use raytracer::scene::{Emitter, Interaction, RenderSettings, Scene, SceneObject, SceneParts};
+use raytracer::scene::{
+    Emitter, Interaction, LightSelection, RenderSettings, Scene, SceneObject, SceneParts,
+};
 
 use crate::compare::{EX12_CORNELL_DIRECT, compare};
 use crate::polygon::{corners, integrate_over_quad, irradiance, project_from};
@@ -317,7 +319,10 @@ fn scene(
         objects,
         lights: Vec::new(),
     };
-    let scene = Scene::build("grader-nee", parts);
+    let mut scene = Scene::build("grader-nee", parts);
+    // The cases say "each chosen with probability 1/2": uniform choice (the
+    // renderer's default is by power, which would give light A 0.68 here).
+    scene.set_light_selection(LightSelection::Uniform);
     let ng = Vec3A::new(0.0, floor_normal, 0.0);
     let it = Interaction {
         p: X,

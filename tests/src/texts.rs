@@ -107,12 +107,6 @@ pub fn cited_slides(source: &str) -> (Vec<String>, Vec<String>) {
     (en, bg)
 }
 
-/// Names pinned by the team's decisions (notes/DECISIONS.md) that another
-/// branch brings: `Scene::choose_light` returns a `LightChoice { index,
-/// light, pmf }`. Accepted by [`Api`] while the sources lack them; once the
-/// renderer has them, [`Api::pinned_but_missing`] is empty and this list can go.
-pub const PINNED: &[(&str, &[&str])] = &[("LightChoice", &["index", "light", "pmf"])];
-
 /// glam's vector types (re-exported by `raytracer::math`) and the members
 /// the texts may use; glam is not ours to scan.
 const GLAM_TYPES: &[&str] = &["Vec2", "Vec3", "Vec3A", "UVec2", "Color"];
@@ -254,29 +248,14 @@ impl Api {
     }
 
     fn has_type(&self, t: &str) -> bool {
-        self.types.contains_key(t)
-            || GLAM_TYPES.contains(&t)
-            || STD_NAMES.contains(&t)
-            || PINNED.iter().any(|(p, _)| *p == t)
+        self.types.contains_key(t) || GLAM_TYPES.contains(&t) || STD_NAMES.contains(&t)
     }
 
     fn has_member(&self, t: &str, m: &str) -> bool {
         if GLAM_TYPES.contains(&t) && GLAM_MEMBERS.contains(&m) {
             return true;
         }
-        if PINNED.iter().any(|(p, ms)| *p == t && ms.contains(&m)) {
-            return true;
-        }
         self.types.get(t).is_some_and(|ms| ms.contains(m))
-    }
-
-    /// Pinned names the sources do not define yet.
-    pub fn pinned_but_missing(&self) -> Vec<String> {
-        PINNED
-            .iter()
-            .filter(|(t, _)| !self.types.contains_key(*t))
-            .map(|(t, _)| t.to_string())
-            .collect()
     }
 
     /// Every API mention of `code` that names nothing in the sources:
@@ -319,9 +298,7 @@ impl Api {
             if after_dot {
                 let name = &segments[0];
                 // `x.0`, numbers, and text like "e.g." are not names.
-                let known = self.fns.contains(name)
-                    || GLAM_MEMBERS.contains(&name.as_str())
-                    || PINNED.iter().any(|(_, ms)| ms.contains(&name.as_str()));
+                let known = self.fns.contains(name) || GLAM_MEMBERS.contains(&name.as_str());
                 if call && !known {
                     out.push(format!(".{name}("));
                 } else if spans && !call && !known && !self.fields.contains(name) {
@@ -616,12 +593,6 @@ pub fn luminance(c: Color) -> f32 { 0.0 }
             api.unknown_names("Malley's method, e.g. 1 − cos θ", false)
                 .is_empty()
         );
-        // Pinned by the team's decisions: accepted before it exists.
-        assert!(
-            api.unknown_names("LightChoice, choice.pmf", true)
-                .is_empty()
-        );
-        assert_eq!(api.pinned_but_missing(), ["LightChoice"]);
     }
 
     #[test]

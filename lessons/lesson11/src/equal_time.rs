@@ -1,6 +1,7 @@
-//! Every algorithm at the same time budget, measured against one reference:
-//! the comparison of chapter 8 (unbiased algorithms differ only in their
-//! noise) and of `lesson11 bench`.
+//! Every algorithm at the same time budget, measured against one independent
+//! reference: the comparison of chapter 8 (unbiased algorithms differ only
+//! in their noise) and of `lesson11 bench`; Metropolis light transport joins
+//! it on request.
 
 use raytracer::film::Image;
 use raytracer::integrator::{
@@ -9,6 +10,8 @@ use raytracer::integrator::{
 use raytracer::metrics::rmse;
 use raytracer::render::{Metropolis, RenderOptions, render, render_metropolis};
 use raytracer::scene::Scene;
+
+use crate::reference::Reference;
 
 /// How one algorithm renders: `spp` samples (mutations, for Metropolis) per
 /// pixel in; the image, its seconds, and the part of them that does not grow
@@ -89,58 +92,62 @@ pub struct EqualTimeRow {
     pub curve: Vec<(f64, f64)>,
 }
 
-/// A comparison: its rows and the reference they were measured against.
-pub struct EqualTime {
-    pub rows: Vec<EqualTimeRow>,
-    pub reference: Image,
-}
+/// The branching factor of naive recursion in the comparison.
+pub const NAIVE_N: u32 = 4;
 
 /// The algorithms that join path, light and bidirectional tracing in a
 /// comparison.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Also {
-    /// Naive recursion, N = 4.
+    /// Naive recursion, N = 4 down to the roulette's depth, then 1.
     pub naive: bool,
     /// Metropolis light transport over bidirectional path tracing.
     pub metropolis: bool,
 }
 
 /// Renders `scene` with every algorithm for about `budget` seconds each, all
-/// stopping at `max_depth`, and measures each one's RMSE against a
-/// bidirectional reference of `reference_spp` samples per pixel; `also`
-/// adds naive recursion and Metropolis light transport.
+/// stopping at `max_depth` (the reference's) with Russian roulette from the
+/// scene's depth, and measures each one's RMSE against `reference`, an
+/// independent estimate (another renderer, or another seed): an algorithm's
+/// own samples are never part of it. Naive recursion (N = 4 down to the
+/// roulette's depth, then one ray per hit, ended by roulette) and
+/// Metropolis light transport (over the same bidirectional tracer) join the
+/// comparison as `also` says.
 pub fn equal_time(
     scene: &Scene,
     base: &RenderOptions,
     budget: f64,
-    reference_spp: u32,
+    reference: &Reference,
     max_depth: u32,
     also: Also,
-) -> EqualTime {
+) -> Vec<EqualTimeRow> {
+    let rr_depth = scene.settings.rr_depth;
     let max_depth = Some(max_depth);
     let bdpt = Bdpt {
         max_depth,
+        rr_depth,
         ..Bdpt::default()
     };
-    let reference_options = RenderOptions {
-        spp: reference_spp,
-        label: format!("{} reference", scene.name),
-        ..base.clone()
-    };
-    let reference = render(scene, &bdpt, &reference_options).film.image();
-    let naive = NaiveRecursive::new(vec![4], max_depth);
+    // The full tree down to the roulette's depth, then one ray per hit: with
+    // N ≥ 2 at every hit, roulette (which keeps a ray with a chance near the
+    // albedo) would leave each ray more than one child on average.
+    let mut branching = vec![NAIVE_N; rr_depth.saturating_sub(1).max(1) as usize];
+    branching.push(1);
+    let naive = NaiveRecursive::try_new(branching, max_depth, Some(rr_depth), None)
+        .expect("a bounded recursion with valid branching factors");
     let path = PathTracer {
         max_depth,
-        ..PathTracer::default()
+        rr_depth,
+        strategy: DirectStrategy::Mis,
     };
     let path_brdf = PathTracer {
         max_depth,
+        rr_depth,
         strategy: DirectStrategy::BrdfOnly,
-        ..PathTracer::default()
     };
     let light = LightTracer {
         max_depth,
-        ..LightTracer::default()
+        rr_depth,
     };
     let mut algorithms: Vec<(&'static str, &str, Run)> = vec![
         ("path (MIS)", path.name(), pixels(scene, &path, base)),
@@ -154,7 +161,7 @@ pub fn equal_time(
     ];
     if also.naive {
         let run = pixels(scene, &naive, base);
-        algorithms.insert(0, ("naive recursion, N = 4", naive.name(), run));
+        algorithms.insert(0, ("naive recursion, N = 4 then 1", naive.name(), run));
     }
     if also.metropolis {
         let run = metropolis(scene, &bdpt, base);
@@ -162,10 +169,10 @@ pub fn equal_time(
     }
     let mut rows = Vec::new();
     for (algorithm, name, run) in algorithms {
-        let (image, spp, seconds, curve) = render_for(&run, budget, &reference);
-        let rmse = rmse(&image, &reference);
+        let (image, spp, seconds, curve) = render_for(&run, budget, &reference.mean);
+        let rmse = rmse(&image, &reference.mean);
         println!(
-            "  {:14} {algorithm:31} {spp:6} spp {seconds:7.2} s  RMSE {rmse:.4}",
+            "  {:14} {algorithm:34} {spp:6} spp {seconds:7.2} s  RMSE {rmse:.4}",
             scene.name
         );
         let stem = format!("{}-{name}", scene.name);
@@ -179,5 +186,5 @@ pub fn equal_time(
             curve,
         });
     }
-    EqualTime { rows, reference }
+    rows
 }

@@ -51,7 +51,7 @@ pub const RAY_BUDGET: f64 = 1e10;
 
 /// The max depth of naive recursion when neither the command line nor the
 /// scene gives a finite one (an unlimited one must be asked for with
-/// `--max-depth -1 --roulette`).
+/// `--max-depth -1 --roulette` and a last branching factor of 1).
 pub const NAIVE_DEFAULT_DEPTH: u32 = 4;
 
 impl IntegratorKind {
@@ -83,9 +83,13 @@ impl IntegratorKind {
             IntegratorKind::PathBrdf => path(DirectStrategy::BrdfOnly),
             IntegratorKind::PathNee => path(DirectStrategy::LightOnly),
             IntegratorKind::Naive => {
-                let mut naive = NaiveRecursive::new(args.branching(), max_depth);
-                naive.roulette_depth = args.roulette.then_some(rr_depth);
-                naive.cutoff = args.cutoff;
+                let naive = NaiveRecursive::try_new(
+                    args.branching(),
+                    max_depth,
+                    args.roulette.then_some(rr_depth),
+                    args.cutoff,
+                )
+                .map_err(|e| anyhow::anyhow!("{e}"))?;
                 check_ray_budget(&naive, scene, options, force)?;
                 Box::new(naive)
             }
@@ -115,12 +119,17 @@ fn check_ray_budget(
     force: bool,
 ) -> Result<()> {
     let depth = naive
-        .max_depth
+        .max_depth()
         .map_or_else(|| "unlimited".to_string(), |d| d.to_string());
     let Some(per_sample) = naive.rays_per_sample_bound() else {
         println!(
-            "naive recursion (N = {:?}, D = {depth}): no bound on the rays per sample; Russian roulette ends the recursion",
-            naive.branching
+            "naive recursion (N = {:?}, D = {depth}): no bound on the rays per sample; {} ends the recursion",
+            naive.branching(),
+            if naive.roulette_depth().is_some() {
+                "Russian roulette"
+            } else {
+                "the cutoff"
+            }
         );
         return Ok(());
     };
@@ -128,7 +137,10 @@ fn check_ray_budget(
     let total = per_sample as f64 * samples;
     println!(
         "naive recursion (N = {:?}, D = {depth}): at most {per_sample} rays per sample, {total:.2e} rays for {}×{} at {} spp",
-        naive.branching, scene.camera.width, scene.camera.height, options.spp
+        naive.branching(),
+        scene.camera.width,
+        scene.camera.height,
+        options.spp
     );
     if total > RAY_BUDGET && !force {
         bail!(
@@ -247,8 +259,9 @@ impl IntegratorArgs {
         }
         match given {
             Some(None) if !self.roulette => bail!(
-                "naive recursion with --max-depth -1 (unlimited) never ends: add --roulette, \
-                 or give a depth such as --max-depth 4"
+                "naive recursion with --max-depth -1 (unlimited) never ends: add --roulette \
+                 with a last branching factor of 1 (e.g. --branching 8,1), or give a depth \
+                 such as --max-depth 4"
             ),
             Some(d) => Ok(d),
             None => Ok(Some(

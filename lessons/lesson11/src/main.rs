@@ -21,6 +21,7 @@
 //! equal_time.rs integrators.rs     shared by chapters and commands
 //! metropolis.rs    --integrator mlt: its options and its render to files
 //! render_files.rs  rendering one picture to its PNG, EXR and variance EXR
+//! reference.rs     the independent references renders are measured against
 //! options.rs       scene, size, samples, seed, threads and output folder of a command line
 //! page/ plots/     the HTML page and its SVG plots
 //! ```
@@ -40,6 +41,7 @@ mod metropolis;
 mod options;
 mod page;
 mod plots;
+mod reference;
 mod render_files;
 mod tour;
 

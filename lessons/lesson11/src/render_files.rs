@@ -17,7 +17,7 @@ use raytracer::render::{RenderOptions, RenderStats, render};
 use raytracer::scene::Scene;
 
 use crate::options::create_dir;
-use crate::page::Picture;
+use crate::page::{Picture, seconds_text};
 
 /// Renders and writes `dir/stem.png`, `dir/stem.exr` and `dir/stem-variance.exr`,
 /// then prints one summary line. An interrupted render (Ctrl-C, SIGTERM,
@@ -119,14 +119,16 @@ impl OutputFiles {
             );
         }
         println!(
-            "  wrote {} and .exr ({spp} spp, {seconds:.2} s)",
-            png.display()
+            "  wrote {} and .exr ({spp} spp, {})",
+            png.display(),
+            seconds_text(seconds)
         );
         Ok(Picture {
             png: png.clone(),
             exr: exr.clone(),
-            seconds,
             spp,
+            exposure,
+            seconds: Some(seconds),
         })
     }
 }
@@ -181,14 +183,24 @@ pub fn write_png_and_exr(
     Ok((png, exr))
 }
 
-/// Writes an image computed outside `render` as `dir/stem.png` and
-/// `dir/stem.exr`, recorded as a picture of `spp` samples per pixel.
-pub fn write_image(dir: &Path, stem: &str, image: &Image, spp: u32) -> Result<Picture> {
-    let (png, exr) = write_png_and_exr(image, dir, stem, 0.0)?;
+/// Writes an image computed outside `render` as `dir/stem.png` (at
+/// `exposure` stops) and `dir/stem.exr`, recorded as a picture of `spp`
+/// samples per pixel that took `seconds` to render (`None` if it was not
+/// one render of its own).
+pub fn write_image(
+    dir: &Path,
+    stem: &str,
+    image: &Image,
+    spp: u32,
+    exposure: f32,
+    seconds: Option<f64>,
+) -> Result<Picture> {
+    let (png, exr) = write_png_and_exr(image, dir, stem, exposure)?;
     Ok(Picture {
         png,
         exr,
-        seconds: 0.0,
         spp,
+        exposure,
+        seconds,
     })
 }

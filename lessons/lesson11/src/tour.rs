@@ -17,7 +17,7 @@ use raytracer::render::{RenderOptions, memory_needed};
 use raytracer::scene::Scene;
 
 use crate::options::{SceneArgs, check_memory, check_threads, create_dir, load_scene};
-use crate::page::{Figure, Section};
+use crate::page::{Figure, Picture, Section};
 use crate::render_files::render_to_files;
 
 /// How long the tour may take.
@@ -205,7 +205,8 @@ impl Tour {
         })
     }
 
-    /// Renders and adds the picture to the chapter.
+    /// Renders the picture (PNG at exposure 0), adds it to the chapter with
+    /// its caption, and returns what it wrote.
     pub fn picture(
         &self,
         chapter: &mut ChapterOutput,
@@ -214,13 +215,13 @@ impl Tour {
         options: &RenderOptions,
         stem: &str,
         caption: &str,
-    ) -> Result<()> {
+    ) -> Result<Picture> {
         let p = render_to_files(scene, integrator, options, &chapter.dir, stem, 0.0)?;
         chapter
             .section
             .figures
             .push(Figure::new(&self.out, &p, caption));
-        Ok(())
+        Ok(p)
     }
 }
 

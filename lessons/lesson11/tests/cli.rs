@@ -44,18 +44,98 @@ fn assert_links_exist(page: &Path) {
     );
 }
 
+/// A figure of the page as the test reads it.
+struct PageFigure {
+    src: String,
+    caption: String,
+    spp: Option<u32>,
+    exposure: Option<f32>,
+}
+
+fn unescape(s: &str) -> String {
+    s.replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&quot;", "\"")
+        .replace("&amp;", "&")
+}
+
+fn figures(html: &str) -> Vec<PageFigure> {
+    html.split("<figure")
+        .skip(1)
+        .map(|part| {
+            let head = &part[..part.find('>').unwrap()];
+            let attr = |name: &str| {
+                let key = format!("{name}=\"");
+                head.find(&key).map(|k| {
+                    let rest = &head[k + key.len()..];
+                    rest[..rest.find('"').unwrap()].to_string()
+                })
+            };
+            let src = part.split("src=\"").nth(1).unwrap();
+            let caption = part.split("<figcaption>").nth(1).unwrap();
+            let caption = &caption[..caption.find("</figcaption>").unwrap()];
+            let caption = caption.split(" · <a href").next().unwrap();
+            PageFigure {
+                src: src[..src.find('"').unwrap()].to_string(),
+                caption: unescape(caption),
+                spp: attr("data-spp").map(|v| v.parse().unwrap()),
+                exposure: attr("data-exposure").map(|v| v.parse().unwrap()),
+            }
+        })
+        .collect()
+}
+
+/// The numbers written before `unit` in `text` ("3 spp", "+6 stops").
+fn numbers_before(text: &str, unit: &str) -> Vec<f64> {
+    text.match_indices(unit)
+        .filter_map(|(k, _)| {
+            let before = text[..k].trim_end();
+            let start = before
+                .rfind(|c: char| !(c.is_ascii_digit() || c == '.' || c == '+' || c == '-'))
+                .map_or(0, |i| i + before[i..].chars().next().unwrap().len_utf8());
+            before[start..].parse().ok()
+        })
+        .collect()
+}
+
+/// The tour at tiny size with `--spp 3`, once for the tests that read it: a
+/// caption that states any other number of samples for a render of its own
+/// was written by hand, not from the render.
+fn tiny_tour() -> &'static Path {
+    static OUT: std::sync::OnceLock<PathBuf> = std::sync::OnceLock::new();
+    OUT.get_or_init(|| {
+        let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli-tour");
+        let _ = std::fs::remove_dir_all(&out);
+        let o = lesson11(&[
+            "tour",
+            "--quality",
+            "tiny",
+            "--spp",
+            "3",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "tour failed: {}", stderr(&o));
+        out
+    })
+}
+
 #[test]
 fn the_tour_writes_every_picture_its_page_shows() {
-    let out = temp_dir("tour");
-    let o = lesson11(&["tour", "--quality", "tiny", "--out", out.to_str().unwrap()]);
-    assert!(o.status.success(), "tour failed: {}", stderr(&o));
+    let out = tiny_tour();
     assert_links_exist(&out.join("index.html"));
     let csv = std::fs::read_to_string(out.join("04-rendering-equation/naive-rays.csv")).unwrap();
     assert!(csv.starts_with("N (branching),max depth D,"), "{csv}");
-    assert_eq!(csv.lines().count(), 10, "a header and 9 rows");
+    assert_eq!(
+        csv.lines().count(),
+        13,
+        "a header, 9 rows of N and D, and the cut-off, roulette and 16-4-2-1 pictures' rows"
+    );
     let compare = std::fs::read_to_string(out.join("08-compare/equal-time.csv")).unwrap();
     assert!(
-        compare.starts_with("scene,algorithm,spp,seconds,RMSE\n"),
+        compare.starts_with(
+            "scene,algorithm,max depth D,spp,seconds,RMSE,reference,reference noise floor\n"
+        ),
         "{compare}"
     );
     for algorithm in [
@@ -71,7 +151,153 @@ fn the_tour_writes_every_picture_its_page_shows() {
             "the comparison misses {algorithm}"
         );
     }
-    std::fs::remove_dir_all(&out).ok();
+}
+
+/// The equal-time errors are measured against independent references, each
+/// with its noise floor: Mitsuba's Cornell box at its own depth, the stored
+/// door render; never a render with the algorithms' own seed.
+#[test]
+fn equal_time_is_measured_against_independent_references_with_their_noise_floor() {
+    let compare = std::fs::read_to_string(tiny_tour().join("08-compare/equal-time.csv")).unwrap();
+    let mut rows = 0;
+    for line in compare.lines().skip(1) {
+        let floor: f64 = line.rsplit(',').next().unwrap().parse().unwrap();
+        assert!(floor > 0.0, "a noise floor: {line}");
+        if line.starts_with("cornell,") {
+            assert!(
+                line.contains(",65,") && line.contains("Mitsuba 3"),
+                "{line}"
+            );
+        } else {
+            assert!(
+                line.starts_with("door,") && line.contains("(stored)"),
+                "{line}"
+            );
+        }
+        rows += 1;
+    }
+    // Door: four algorithms and Metropolis; Cornell box: naive recursion and four.
+    assert_eq!(rows, 10);
+    let html = std::fs::read_to_string(tiny_tour().join("index.html")).unwrap();
+    assert!(html.contains("noise floors"), "the table states the floors");
+}
+
+/// What captions say of a render is what the render was: its samples per
+/// pixel, its exposure (and the -evN of its file name, where it has one), a
+/// time that is never 0.0 s.
+#[test]
+fn captions_state_the_real_spp_exposure_and_time() {
+    let html = std::fs::read_to_string(tiny_tour().join("index.html")).unwrap();
+    for zero in ["0.0 s", "0.00 s", " 0 s"] {
+        assert!(!html.contains(zero), "the page shows a time of {zero}");
+    }
+    let figures = figures(&html);
+    let renders: Vec<&PageFigure> = figures.iter().filter(|f| f.spp.is_some()).collect();
+    assert!(renders.len() > 40, "{} renders", renders.len());
+    for f in &figures {
+        let stated = numbers_before(&f.caption, " spp");
+        match f.spp {
+            Some(spp) => {
+                assert!(!stated.is_empty(), "{}: no spp in `{}`", f.src, f.caption);
+                for n in stated {
+                    assert_eq!(n, spp as f64, "{}: `{}`", f.src, f.caption);
+                }
+            }
+            None => assert!(
+                stated.is_empty() || f.caption.contains("per eye"),
+                "{}: a caption that states spp without a render's: `{}`",
+                f.src,
+                f.caption
+            ),
+        }
+        if let Some(stops) = f.exposure {
+            if stops == 0.0 {
+                assert!(f.caption.contains("exposure 0"), "{}", f.caption);
+            } else {
+                assert_eq!(
+                    numbers_before(&f.caption, " stops"),
+                    [stops as f64],
+                    "{}: `{}`",
+                    f.src,
+                    f.caption
+                );
+            }
+            // A file named for its exposure (door-path-ev6.png) has it.
+            if let Some(in_name) = f
+                .src
+                .rsplit_once("-ev")
+                .and_then(|(_, rest)| rest.trim_end_matches(".png").parse::<f32>().ok())
+            {
+                assert_eq!(in_name, stops, "{}", f.src);
+            }
+        }
+    }
+    // The pictures made at another exposure are there and say so.
+    let door: Vec<_> = figures
+        .iter()
+        .filter(|f| f.src.starts_with("08-compare/door-") && f.src.ends_with(".png"))
+        .collect();
+    assert_eq!(
+        door.len(),
+        8,
+        "the reference, four algorithms and Metropolis, and Metropolis's noise beside BDPT's"
+    );
+    assert!(door.iter().all(|f| f.exposure == Some(6.0)));
+}
+
+/// The rays per pixel sample a naive picture's caption states are the ones
+/// of its row in naive-rays.csv, within the bound it states.
+#[test]
+fn naive_captions_state_the_rays_of_naive_rays_csv() {
+    let out = tiny_tour();
+    let html = std::fs::read_to_string(out.join("index.html")).unwrap();
+    let csv = std::fs::read_to_string(out.join("04-rendering-equation/naive-rays.csv")).unwrap();
+    let rows: Vec<Vec<&str>> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    let mut checked = 0;
+    for f in figures(&html) {
+        let Some(stem) = f
+            .src
+            .strip_prefix("04-rendering-equation/")
+            .and_then(|s| s.strip_suffix(".png"))
+        else {
+            continue;
+        };
+        let row = match stem {
+            "naive-n8-d4" => rows.iter().find(|r| r[0] == "8" && r[1] == "4"),
+            "naive-cutoff" => rows.iter().find(|r| r[5].starts_with("β <")),
+            "naive-roulette" => rows.iter().find(|r| r[5] == "Russian roulette"),
+            "naive-16-4-2-1" => rows.iter().find(|r| r[0] == "16 4 2 1"),
+            _ => continue,
+        };
+        let row = row.unwrap_or_else(|| panic!("naive-rays.csv has no row for {stem}: {csv}"));
+        let measured = f
+            .caption
+            .split("Measured: ")
+            .nth(1)
+            .and_then(|s| s.split(' ').next())
+            .unwrap_or_else(|| panic!("{stem}: no measured rays in `{}`", f.caption));
+        assert_eq!(measured, row[2], "{stem}: `{}`", f.caption);
+        let bound = f
+            .caption
+            .split("(at most ")
+            .nth(1)
+            .map(|s| s[..s.find(')').unwrap()].to_string());
+        assert_eq!(bound.as_deref().unwrap_or("—"), row[3], "{stem}");
+        if let Ok(b) = row[3].parse::<f64>() {
+            assert!(measured.parse::<f64>().unwrap() <= b, "{stem}: {row:?}");
+        }
+        checked += 1;
+    }
+    assert_eq!(checked, 4, "the four naive pictures");
+    assert_eq!(
+        rows.iter().find(|r| r[0] == "16 4 2 1").unwrap()[3],
+        "337",
+        "1 + 16 + 64 + 128 + 128"
+    );
 }
 
 #[test]
@@ -210,6 +436,7 @@ fn a_written_builtin_scene_renders_from_its_file() {
         "door",
         "stereo",
         "brdf-gallery",
+        "veach-mis",
     ] {
         assert!(
             listing.contains(name),

@@ -15,11 +15,20 @@
 //! - reflective models are two-sided: seen from below they behave as from
 //!   above (the frame is mirrored), so meshes with any winding look right.
 //!   Glass distinguishes the sides: the normal points out of the glass.
+//! - a reflective model can be made **one-sided**, [`Brdf::OneSided`]:
+//!   `f_r(ω_i → ω_o) = 0` unless both directions lie on the side of the
+//!   shading normal (`ω_o.z > 0` and `ω_i.z > 0`), so the surface is black from
+//!   behind. That is a statement about `f_r` alone — its support is the front
+//!   hemisphere pair — so it fits the contract as it is: the integrator still
+//!   multiplies by `|cos θ_i|`, and reciprocity holds (the condition is
+//!   symmetric). Mitsuba's BSDFs are all one-sided (its `twosided` plugin is
+//!   the adapter the other way round), so a scene that must match Mitsuba,
+//!   `cornell`, asks for it (`sides = "front"` of a material in a scene file).
 //!
-//! Both the two-sidedness and the dropping of useless samples (zero pdf, zero
-//! or non-finite value, a reflected direction on the wrong side) happen in one
-//! place, the `match` of [`Brdf`]; the models only ever see `ω_o` in the upper
-//! hemisphere (glass excepted). Files: one per model, [`fresnel`] for the
+//! The two-sidedness, the one-sidedness and the dropping of useless samples
+//! (zero pdf, zero or non-finite value, a reflected direction on the wrong
+//! side) happen in one place, the `match` of [`Brdf`]; the models only ever
+//! see `ω_o` in the upper hemisphere (glass excepted). Files: one per model, [`fresnel`] for the
 //! Fresnel equations and Snell's law, [`texture`] for spatially varying albedo.
 //!
 //! Delta lobes (mirror, glass) follow pbrt's convention: the sample's `f` is
@@ -78,6 +87,10 @@ pub enum Brdf {
     Phong(Phong),
     Mirror(Mirror),
     Glass(Glass),
+    /// A reflective model (Lambert, Phong, mirror) seen only from the front:
+    /// zero unless `ω_o` and `ω_i` both lie above the surface (see the
+    /// module doc). Made by [`Brdf::one_sided`].
+    OneSided(Box<Brdf>),
 }
 
 /// The direction mirrored through the surface plane (`z → −z`): how the
@@ -88,6 +101,22 @@ fn flip_z(w: Vec3A) -> Vec3A {
 }
 
 impl Brdf {
+    /// This model, black from behind (see [`Brdf::OneSided`]). Glass has two
+    /// sides by nature (in and out) and is returned as it is; a one-sided
+    /// model stays one-sided.
+    pub fn one_sided(self) -> Brdf {
+        match self {
+            Brdf::Glass(_) | Brdf::OneSided(_) => self,
+            other => Brdf::OneSided(Box::new(other)),
+        }
+    }
+
+    /// Whether the model is black from behind.
+    #[inline]
+    pub fn is_one_sided(&self) -> bool {
+        matches!(self, Brdf::OneSided(_))
+    }
+
     /// `f_r(ω_i → ω_o)` at the surface point with texture coordinates `uv`,
     /// without the cosine. Zero for delta lobes, and for reflective models when
     /// `wo` and `wi` lie on different sides (they do not transmit).
@@ -97,6 +126,8 @@ impl Brdf {
             Brdf::Lambert(m) => two_sided(wo, wi, Color::ZERO, |wo, wi| m.eval(wo, wi, uv)),
             Brdf::Phong(m) => two_sided(wo, wi, Color::ZERO, |wo, wi| m.eval(wo, wi)),
             Brdf::Mirror(_) | Brdf::Glass(_) => Color::ZERO,
+            Brdf::OneSided(m) if wo.z > 0.0 && wi.z > 0.0 => m.eval(wo, wi, uv),
+            Brdf::OneSided(_) => Color::ZERO,
         }
     }
 
@@ -119,6 +150,8 @@ impl Brdf {
             Brdf::Phong(m) => sample_two_sided(wo, |wo| m.sample(wo, u)),
             Brdf::Mirror(m) => sample_two_sided(wo, |wo| m.sample(wo)),
             Brdf::Glass(m) => m.sample(wo, u_lobe, mode).filter(|s| s.wi.z != 0.0),
+            Brdf::OneSided(m) if wo.z > 0.0 => m.sample(wo, uv, u_lobe, u, mode),
+            Brdf::OneSided(_) => None,
         }?;
         let valid = s.pdf_w > 0.0
             && s.pdf_w.is_finite()
@@ -130,12 +163,17 @@ impl Brdf {
 
     /// Density per solid angle with which [`Brdf::sample`] returns `wi`
     /// (zero for delta lobes and for directions the model never samples).
+    /// `uv` is part of the contract (a textured model's density may depend on
+    /// it); today only the one-sided wrapper passes it on.
     #[inline]
-    pub fn pdf(&self, wo: Vec3A, wi: Vec3A, _uv: Vec2) -> f32 {
+    #[allow(clippy::only_used_in_recursion)]
+    pub fn pdf(&self, wo: Vec3A, wi: Vec3A, uv: Vec2) -> f32 {
         match self {
             Brdf::Lambert(m) => two_sided(wo, wi, 0.0, |wo, wi| m.pdf(wo, wi)),
             Brdf::Phong(m) => two_sided(wo, wi, 0.0, |wo, wi| m.pdf(wo, wi)),
             Brdf::Mirror(_) | Brdf::Glass(_) => 0.0,
+            Brdf::OneSided(m) if wo.z > 0.0 && wi.z > 0.0 => m.pdf(wo, wi, uv),
+            Brdf::OneSided(_) => 0.0,
         }
     }
 
@@ -144,26 +182,10 @@ impl Brdf {
     /// estimation is pointless at this surface.
     #[inline]
     pub fn is_delta(&self) -> bool {
-        matches!(self, Brdf::Mirror(_) | Brdf::Glass(_))
-    }
-
-    /// Whether the model transmits light to the other side (glass).
-    #[inline]
-    pub fn has_transmission(&self) -> bool {
-        matches!(self, Brdf::Glass(_))
-    }
-
-    /// A rough reflectance in `[0, 1]³`, for Russian roulette and previews:
-    /// the albedo at normal incidence (Lambert ρ, Phong ρ_s, mirror
-    /// reflectance, glass tint, which is the total of reflection and
-    /// transmission).
-    #[inline]
-    pub fn albedo_hint(&self, uv: Vec2) -> Color {
         match self {
-            Brdf::Lambert(m) => m.albedo.eval(uv),
-            Brdf::Phong(m) => m.albedo,
-            Brdf::Mirror(m) => m.reflectance,
-            Brdf::Glass(m) => m.tint,
+            Brdf::Mirror(_) | Brdf::Glass(_) => true,
+            Brdf::OneSided(m) => m.is_delta(),
+            Brdf::Lambert(_) | Brdf::Phong(_) => false,
         }
     }
 }
@@ -206,4 +228,77 @@ fn sample_two_sided(
         s.wi = flip_z(s.wi);
     }
     Some(s)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::testing::{check_pdfs, check_reciprocity, dir};
+    use super::*;
+
+    fn models() -> Vec<Brdf> {
+        vec![
+            Brdf::Lambert(Lambert {
+                albedo: Texture::Constant(Color::new(0.8, 0.5, 0.2)),
+            }),
+            Brdf::Phong(Phong {
+                albedo: Color::splat(0.7),
+                exponent: 20.0,
+            }),
+            Brdf::Mirror(Mirror {
+                reflectance: Color::ONE,
+            }),
+        ]
+    }
+
+    /// A one-sided model is its two-sided model from the front (eval, pdf
+    /// and samples bit for bit), and black from behind: zero `f_r` and pdf
+    /// for every pair with a direction below, no sample. Reciprocity holds
+    /// and the sampled pdfs agree with `pdf`. (Before, every model was
+    /// two-sided and `cornell`'s lamp reflected from its back.)
+    #[test]
+    fn one_sided_is_the_model_in_front_and_black_behind() {
+        let uv = Vec2::new(0.3, 0.6);
+        for two in models() {
+            let one = two.clone().one_sided();
+            assert!(one.is_one_sided() && !two.is_one_sided());
+            assert_eq!(one.is_delta(), two.is_delta());
+            assert!(one.clone().one_sided().is_one_sided(), "idempotent");
+            for (k, theta_o) in [0.0f32, 40.0, 85.0].into_iter().enumerate() {
+                let wo = dir(theta_o);
+                let below = flip_z(wo);
+                for i in 0..256u32 {
+                    let u = Vec2::new((i % 16) as f32 / 16.0 + 0.01, (i / 16) as f32 / 16.0 + 0.02);
+                    let a = one.sample(wo, uv, 0.5, u, TransportMode::Radiance);
+                    let b = two.sample(wo, uv, 0.5, u, TransportMode::Radiance);
+                    assert_eq!(a, b, "{two:?}: front sample");
+                    assert_eq!(one.sample(below, uv, 0.5, u, TransportMode::Radiance), None);
+                    let wi = dir(5.0 + 0.3 * i as f32);
+                    assert_eq!(one.eval(wo, wi, uv), two.eval(wo, wi, uv));
+                    assert_eq!(one.pdf(wo, wi, uv), two.pdf(wo, wi, uv));
+                    for (x, y) in [(below, wi), (wo, flip_z(wi)), (below, flip_z(wi))] {
+                        assert_eq!(one.eval(x, y, uv), Color::ZERO, "{two:?} from behind");
+                        assert_eq!(one.pdf(x, y, uv), 0.0);
+                    }
+                    // The two-sided model is not black from behind.
+                    if !two.is_delta() && k == 0 {
+                        assert!(two.eval(below, flip_z(wo), uv).max_element() > 0.0);
+                    }
+                }
+                if !one.is_delta() {
+                    check_pdfs(&one, wo).unwrap();
+                }
+            }
+            if !one.is_delta() {
+                check_reciprocity(&one);
+            }
+        }
+        let glass = Brdf::Glass(Glass {
+            ior: 1.5,
+            tint: Color::ONE,
+        });
+        assert!(
+            !glass.one_sided().is_one_sided(),
+            "glass keeps its two sides"
+        );
+    }
 }

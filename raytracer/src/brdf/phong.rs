@@ -266,7 +266,6 @@ mod tests {
             b.eval(dir(89.0), Vec3A::new(0.0, 0.0, -1.0), Vec2::ZERO),
             Color::ZERO
         );
-        assert_eq!(b.albedo_hint(Vec2::ZERO), Color::splat(0.5));
         assert!(!b.is_delta());
     }
 }

@@ -156,6 +156,133 @@ fn rays_with_negative_zero_components_hit() {
     }
 }
 
+/// Rays with zero direction components of either sign, against brute force,
+/// through every traversal: the binary tree, the four-wide tree (closest hit
+/// and occlusion) and packets of 4 and 16. The scene is full of axis-aligned
+/// quads (a floor of tiles, walls, boxes) whose boxes are flat, so a ray
+/// parallel to an axis plane lies exactly in a slab's boundary planes: with
+/// `d.x = −0.0` the reciprocal is −∞-like, and a traversal that picks its
+/// near and far planes by `d.x < 0.0` (false for −0.0) misses (the four-wide
+/// one did: a straight-down ray over a floor of quads found nothing). Each
+/// ray aims at a point of a primitive, with 1 or 2 components of its
+/// direction replaced by ±0 (the origin moved so that it still aims there).
+#[test]
+fn signed_zero_directions_match_brute_force_in_every_traversal() {
+    let mut shapes = Vec::new();
+    let q = |o: Vec3A, e1: Vec3A, e2: Vec3A| Shape::Quad(Quad { origin: o, e1, e2 });
+    for i in 0..5 {
+        for j in 0..5 {
+            let o = Vec3A::new(i as f32 * 0.4 - 1.0, -1.0, j as f32 * 0.4 - 1.0);
+            shapes.push(q(o, 0.4 * Vec3A::Z, 0.4 * Vec3A::X));
+        }
+    }
+    shapes.extend(cornell_walls());
+    shapes.push(Shape::Mesh(Arc::new(Mesh::cube().transformed(
+        &(Transform::translate(Vec3::new(0.3, -0.6, 0.2)) * Transform::scale(Vec3::splat(0.3))),
+    ))));
+    shapes.push(Shape::Mesh(Arc::new(soup(300, 0.1, 21))));
+    shapes.push(Shape::Sphere(Sphere {
+        center: Vec3A::new(-0.4, 0.2, -0.3),
+        radius: 0.25,
+    }));
+    let g = Geometry::new(shapes);
+    let bounds: Vec<Aabb> = g.prims.iter().map(padded_bounds).collect();
+    let binary = Bvh::build(&bounds);
+    let binary_closest = |ray: &Ray| {
+        let mut best: Option<f32> = None;
+        binary.traverse(ray.o, ray.d, ray.t_max, |first, count, t_max| {
+            for k in first..first + count {
+                let prim = binary.order[k as usize];
+                if let Some((t, _)) = g.prims[prim as usize].intersect(ray.o, ray.d, *t_max) {
+                    *t_max = t;
+                    best = Some(t);
+                }
+            }
+            false
+        });
+        best
+    };
+    let mut rays = Vec::new();
+    let (mut zeros, mut hits) = ([0usize; 2], 0usize);
+    for i in 0..4000u64 {
+        let mut s = Sampler::new(31, i, 0);
+        let prim = &g.prims[(s.next_1d() * g.prims.len() as f32) as usize % g.prims.len()];
+        let b = padded_bounds(prim);
+        let target = b.min + (b.max - b.min) * Vec3A::new(s.next_1d(), s.next_1d(), s.next_1d());
+        let mut d = uniform_sphere(&mut s);
+        // One or two axes, chosen at random, get a signed zero.
+        let first = (s.next_1d() * 3.0) as usize % 3;
+        let axes = if s.next_1d() < 0.5 {
+            vec![first]
+        } else {
+            vec![first, (first + 1 + (s.next_1d() * 2.0) as usize % 2) % 3]
+        };
+        for &a in &axes {
+            let negative = s.next_1d() < 0.5;
+            d[a] = if negative { -0.0 } else { 0.0 };
+            zeros[negative as usize] += 1;
+        }
+        let d = d / d.length();
+        let o = target - (0.5 + 2.0 * s.next_1d()) * d;
+        let t_max = if i % 5 == 0 { 1.0 } else { f32::INFINITY };
+        rays.push(Ray { o, d, t_max });
+    }
+    assert!(
+        zeros.iter().all(|&z| z > 1000),
+        "both signs, often: {zeros:?}"
+    );
+    for (i, ray) in rays.iter().enumerate() {
+        let slow = g.intersect_brute_force(ray);
+        hits += slow.is_some() as usize;
+        let fast = g.intersect(ray);
+        assert_eq!(
+            fast.map(|h| h.t),
+            slow.map(|h| h.t),
+            "four-wide, ray {i}: {ray:?}"
+        );
+        assert_eq!(
+            g.occluded(ray),
+            slow.is_some(),
+            "occlusion, ray {i}: {ray:?}"
+        );
+        assert_eq!(
+            binary_closest(ray),
+            slow.map(|h| h.t),
+            "binary, ray {i}: {ray:?}"
+        );
+    }
+    assert!(
+        hits > rays.len() / 2,
+        "{hits} hits: the rays aim at primitives"
+    );
+    for (k, four) in rays.chunks_exact(4).enumerate() {
+        let four: [Ray; 4] = four.try_into().unwrap();
+        let got = g.intersect4(&four);
+        for j in 0..4 {
+            let slow = g.intersect_brute_force(&four[j]);
+            assert_eq!(
+                got[j].map(|h| h.t),
+                slow.map(|h| h.t),
+                "packet of 4, ray {}",
+                4 * k + j
+            );
+        }
+    }
+    for (k, sixteen) in rays.chunks_exact(16).enumerate() {
+        let sixteen: [Ray; 16] = sixteen.try_into().unwrap();
+        let got = g.intersect16(&sixteen);
+        for j in 0..16 {
+            let slow = g.intersect_brute_force(&sixteen[j]);
+            assert_eq!(
+                got[j].map(|h| h.t),
+                slow.map(|h| h.t),
+                "packet of 16, ray {}",
+                16 * k + j
+            );
+        }
+    }
+}
+
 #[test]
 fn empty_geometry_hits_nothing() {
     let g = Geometry::new(Vec::new());

@@ -37,7 +37,7 @@ use super::dimensions::LENS;
 use super::mis_weight::mis_weight;
 use super::nee::{self, LightPoint};
 use super::subpath::{EscapedRay, camera_subpath, light_subpath};
-use super::vertex::{EMPTY_VERTEX, MAX_VERTICES, Subpath, Vertex, path_vertices, visible};
+use super::vertex::{Vertex, path_vertices, visible, with_subpaths};
 use crate::film::Splat;
 use crate::math::{Color, UVec2, Vec2};
 use crate::sampling::Sampler;
@@ -88,8 +88,8 @@ struct Connection {
 /// The unweighted contribution of strategy `(s, t)`; `None` if it is zero.
 fn connect(
     scene: &Scene,
-    light: &Subpath,
-    camera: &Subpath,
+    light: &[Vertex],
+    camera: &[Vertex],
     s: usize,
     t: usize,
     sampler: &mut Sampler,
@@ -130,9 +130,10 @@ fn connect(
         if value == Color::ZERO {
             return None;
         }
-        // For MIS the resampled point counts with the density of a light
-        // path's origin, P(light) p_A (pbrt does the same): the weights of
-        // all strategies use the same densities, so they still sum to one.
+        // The resampled point carries the density of a light path's origin,
+        // P(light) p_A, like y_0 of every other strategy; `mis_weight`
+        // scales this strategy by the density next event estimation really
+        // had (a sphere's cone), so its weight is right by construction.
         let mut y = Vertex::light(choice.index, ls.p, ls.n, Color::ZERO, 0.0);
         y.pdf_fwd_a = y.pdf_light_origin_a(scene);
         if !visible(scene, pt, &y) {
@@ -156,7 +157,8 @@ fn connect(
     }
     let w = d / d2.sqrt(); // from y_{s−1} towards z_{t−1}
     let g = qs.abs_cos(w) * pt.abs_cos(w) / d2;
-    let value = qs.beta * qs.f(scene, w) * pt.f(scene, -w) * pt.beta * g;
+    // The light side scatters with the adjoint BRDF (shading normals).
+    let value = qs.beta * qs.f_importance(scene, w) * pt.f(scene, -w) * pt.beta * g;
     if value == Color::ZERO || !visible(scene, qs, pt) {
         return None;
     }
@@ -178,24 +180,27 @@ impl Bdpt {
         splats: &mut Vec<Splat>,
     ) -> Color {
         let max_vertices = path_vertices(self.max_depth); // D + 1
-        let mut camera: Subpath = [EMPTY_VERTEX; MAX_VERTICES];
-        let mut light: Subpath = [EMPTY_VERTEX; MAX_VERTICES];
-        let cam = camera_subpath(
-            scene,
-            pixel,
-            sampler,
-            &mut camera,
-            max_vertices,
-            self.rr_depth,
-        );
-        let n_light = light_subpath(
-            scene,
-            sampler,
-            &mut light,
-            max_vertices.saturating_sub(1),
-            self.rr_depth,
-        );
-        let n_camera = cam.vertices;
+        with_subpaths(|camera, light| {
+            let escaped =
+                camera_subpath(scene, pixel, sampler, camera, max_vertices, self.rr_depth);
+            light_subpath(scene, sampler, light, max_vertices - 1, self.rr_depth);
+            self.strategies(scene, light, camera, escaped, sampler, splats)
+        })
+    }
+
+    /// Sums the strategies of one pixel sample's two subpaths (or the one
+    /// selected by `strategy_images`).
+    fn strategies(
+        &self,
+        scene: &Scene,
+        light: &mut [Vertex],
+        camera: &mut [Vertex],
+        escaped: Option<EscapedRay>,
+        sampler: &mut Sampler,
+        splats: &mut Vec<Splat>,
+    ) -> Color {
+        let max_vertices = path_vertices(self.max_depth);
+        let (n_camera, n_light) = (camera.len(), light.len());
         let keep = |s: usize, t: usize| {
             self.strategy_images
                 .is_none_or(|f| f.s as usize == s && f.t as usize == t)
@@ -204,24 +209,33 @@ impl Bdpt {
         let mut l = Color::ZERO;
         // The environment seen by an escaping camera path: strategy
         // (0, n_C + 1), the only one that generates such paths (weight 1).
-        if let Some(EscapedRay { beta, d }) = cam.escaped
+        if let Some(EscapedRay { beta, d }) = escaped
             && n_camera < max_vertices
             && keep(0, n_camera + 1)
         {
             l += beta * scene.escaped_radiance(d);
         }
         for t in 1..=n_camera {
-            for s in 0..=n_light {
-                if s + t < 2 || s + t > max_vertices || !keep(s, t) {
+            // s = 1 with t ≥ 2 resamples its light point (next event
+            // estimation): it needs no light subpath, and is tried also when
+            // none could start (the environment was chosen for it). Once it
+            // was skipped then, and the sun of `stereo` under its sky lost
+            // most of its direct light.
+            for s in 0..=n_light.max(1) {
+                if s + t < 2 || s + t > max_vertices || !keep(s, t) || (s > n_light && t == 1) {
                     continue;
                 }
-                let Some(c) = connect(scene, &light, &camera, s, t, sampler) else {
+                let Some(c) = connect(scene, light, camera, s, t, sampler) else {
                     continue;
                 };
-                let w = if weighted {
-                    mis_weight(scene, &mut light, &mut camera, s, t, c.sampled)
-                } else {
+                let w = if !weighted {
                     1.0
+                } else if s == 1 && t >= 2 {
+                    // The resampled point is the light subpath's only vertex.
+                    let mut y = [c.sampled.expect("s = 1 resamples the light point")];
+                    mis_weight(scene, &mut y, camera, s, t, None)
+                } else {
+                    mis_weight(scene, light, camera, s, t, c.sampled)
                 };
                 let value = c.value * w;
                 match c.raster {

@@ -31,14 +31,15 @@ pub struct CameraConnection {
 ///
 /// because `G(q, lens) / p_A(lens) = |cos θ_q| |cos θ_lens| / (d² p_A)` and
 /// `camera.sample_wi` returns `p_ω = d² / (cos θ_lens · A_lens)` (the lens
-/// density per unit solid angle at `q`). Visibility-tested. `None` if the
-/// point is off the film, behind the camera or in shadow.
+/// density per unit solid angle at `q`). At a surface, `f` is the adjoint
+/// BRDF of importance transport ([`Vertex::f_importance`]). Visibility-tested.
+/// `None` if the point is off the film, behind the camera or in shadow.
 pub fn connect_to_camera(scene: &Scene, q: &Vertex, u_lens: Vec2) -> Option<CameraConnection> {
     if !q.is_connectible(scene) {
         return None;
     }
     let cs = scene.camera.sample_wi(q.p(), u_lens)?;
-    let l = q.beta * q.f(scene, cs.wi) * (q.abs_cos(cs.wi) * cs.we / cs.pdf_w);
+    let l = q.beta * q.f_importance(scene, cs.wi) * (q.abs_cos(cs.wi) * cs.we / cs.pdf_w);
     if l == Color::ZERO {
         return None;
     }

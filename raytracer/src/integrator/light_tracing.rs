@@ -37,7 +37,7 @@ use super::Integrator;
 use super::camera_connection::connect_to_camera;
 use super::dimensions::LENS;
 use super::subpath::light_subpath;
-use super::vertex::{EMPTY_VERTEX, MAX_VERTICES};
+use super::vertex::{path_vertices, with_subpaths};
 use crate::film::Splat;
 use crate::math::{Color, UVec2};
 use crate::sampling::Sampler;
@@ -74,20 +74,19 @@ impl Integrator for LightTracer {
         splats: &mut Vec<Splat>,
     ) -> Color {
         // s vertices joined to the lens give s + 1 vertices: s ≤ D.
-        let max_vertices = self
-            .max_depth
-            .map_or(MAX_VERTICES, |d| (d as usize).min(MAX_VERTICES));
-        let mut path = [EMPTY_VERTEX; MAX_VERTICES];
-        let n = light_subpath(scene, sampler, &mut path, max_vertices, self.rr_depth);
-        for q in &path[..n] {
-            let u_lens = LENS.draw(sampler);
-            if let Some(c) = connect_to_camera(scene, q, u_lens) {
-                splats.push(Splat {
-                    raster: c.camera.raster,
-                    value: c.value,
-                });
+        let max_vertices = path_vertices(self.max_depth) - 1;
+        with_subpaths(|path, _| {
+            light_subpath(scene, sampler, path, max_vertices, self.rr_depth);
+            for q in path.iter() {
+                let u_lens = LENS.draw(sampler);
+                if let Some(c) = connect_to_camera(scene, q, u_lens) {
+                    splats.push(Splat {
+                        raster: c.camera.raster,
+                        value: c.value,
+                    });
+                }
             }
-        }
+        });
         // Everything went to the film as splats.
         Color::ZERO
     }

@@ -7,8 +7,9 @@
 //! The integrators share their steps, one file each: [`nee`] (light
 //! sampling and its MIS weight), [`continuation`] (the BRDF sample that
 //! continues a path), [`roulette`] (Russian roulette), and for light and
-//! bidirectional tracing [`vertex`], [`subpath`], [`camera_connection`] and
-//! [`mis_weight`]. [`dimensions`] names every random number they draw and
+//! bidirectional tracing [`vertex`], [`subpath`], [`camera_connection`],
+//! [`mis_weight`] and [`shading_normals`] (the adjoint correction of
+//! importance transport). [`dimensions`] names every random number they draw and
 //! gives each integrator's layout.
 
 use crate::film::Splat;
@@ -45,6 +46,7 @@ mod naive;
 pub mod nee;
 mod path;
 pub mod roulette;
+pub mod shading_normals;
 pub mod stop;
 pub mod subpath;
 pub mod vertex;

@@ -9,7 +9,9 @@
 //! The recursion ends when a ray escapes, when the depth limit is reached,
 //! optionally when the product of the BRDF weights along the recursion falls
 //! below a threshold (the lecture's idea; it is *biased*: the light it
-//! ignores is small but not zero), or by Russian roulette (unbiased). With N
+//! ignores is small but not zero), or by Russian roulette (unbiased), which
+//! judges a branch by what it carries, not by its share `1/N` of the split
+//! it belongs to. With N
 //! branches per level a pixel sample costs about `N^D` rays — the
 //! combinatorial explosion that path tracing (N = 1, many samples per pixel)
 //! avoids. The lecture's variant "many rays at the top, few below" is a
@@ -32,31 +34,101 @@ use crate::scene::Scene;
 pub struct NaiveRecursive {
     /// Branching factor per recursion level: `branching[d]` rays leave a hit
     /// at depth `d`; the last entry repeats for deeper levels.
-    pub branching: Vec<u32>,
-    /// Maximum depth (Mitsuba's convention, as the path tracer); `None` = unlimited
-    /// (then `roulette` must end the recursion).
-    pub max_depth: Option<u32>,
+    branching: Vec<u32>,
+    /// Maximum depth (Mitsuba's convention, as the path tracer); `None` =
+    /// unlimited (then the roulette or the cutoff ends the recursion).
+    max_depth: Option<u32>,
     /// Stop recursing once the largest channel of the product of BRDF weights
     /// `Π f_r |cos θ| / p` (each level divided by its N) is below this (biased).
-    pub cutoff: Option<f32>,
+    cutoff: Option<f32>,
     /// Russian roulette from this depth on (unbiased), if set.
-    pub roulette_depth: Option<u32>,
+    roulette_depth: Option<u32>,
     rays: AtomicU64,
 }
 
 impl NaiveRecursive {
+    /// The recursion with `branching` factors, bounded by the max depth `D`.
+    ///
+    /// # Panics
+    /// If a branching factor is 0 or there is none, or `max_depth` is `None`:
+    /// an unlimited recursion needs an end, [`NaiveRecursive::try_new`].
     pub fn new(branching: Vec<u32>, max_depth: Option<u32>) -> Self {
-        assert!(
-            !branching.is_empty() && branching.iter().all(|&n| n > 0),
-            "branching factors must be ≥ 1"
-        );
-        NaiveRecursive {
+        Self::try_new(branching, max_depth, None, None).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// The recursion with `branching` factors, max depth `max_depth`,
+    /// Russian roulette from depth `roulette_depth` on and the lecture's
+    /// `cutoff`, if set. Refuses a recursion that would not end: with
+    /// unlimited depth, the last branching factor `N` repeats at every level
+    /// below, and
+    /// - without roulette or cutoff nothing ends it;
+    /// - with roulette alone and `N ≥ 2`, a ray survives with `q` near the
+    ///   albedo and has `N q > 1` children on average where `N > 1/q`: the
+    ///   tree grows without end (roulette ends a path, `N = 1`, for sure);
+    /// - with the cutoff alone and `N = 1`, a white surface keeps the product
+    ///   of weights at 1 for ever (each level's `1/N ≤ 1/2` shrinks it for
+    ///   `N ≥ 2`).
+    ///
+    /// Also refuses a factor of 0, no factor, and a cutoff that is not a
+    /// number ≥ 0.
+    pub fn try_new(
+        branching: Vec<u32>,
+        max_depth: Option<u32>,
+        roulette_depth: Option<u32>,
+        cutoff: Option<f32>,
+    ) -> Result<Self, String> {
+        if branching.is_empty() || branching.contains(&0) {
+            return Err(format!("branching factors must be ≥ 1, got {branching:?}"));
+        }
+        if let Some(c) = cutoff
+            && !(c.is_finite() && c >= 0.0)
+        {
+            return Err(format!("the cutoff must be a number ≥ 0, got {c}"));
+        }
+        if max_depth.is_none() {
+            let last = *branching.last().unwrap();
+            let ends = match (roulette_depth, cutoff) {
+                (Some(_), _) if last == 1 => true,
+                (_, Some(_)) if last >= 2 => true,
+                _ => false,
+            };
+            if !ends {
+                return Err(format!(
+                    "naive recursion with unlimited depth and branching {branching:?} never ends: \
+                     give a max depth, or end the branching with 1 and use Russian roulette \
+                     (the last factor repeats at every deeper level; roulette ends a single \
+                     path, not a tree whose rays have {last} children each), or use the cutoff \
+                     with a last factor ≥ 2"
+                ));
+            }
+        }
+        Ok(NaiveRecursive {
             branching,
             max_depth,
-            cutoff: None,
-            roulette_depth: None,
+            cutoff,
+            roulette_depth,
             rays: AtomicU64::new(0),
-        }
+        })
+    }
+
+    /// The branching factors (the last repeats).
+    pub fn branching(&self) -> &[u32] {
+        &self.branching
+    }
+
+    /// The max depth D (`None`: unlimited).
+    pub fn max_depth(&self) -> Option<u32> {
+        self.max_depth
+    }
+
+    /// The depth from which Russian roulette plays, if it does.
+    pub fn roulette_depth(&self) -> Option<u32> {
+        self.roulette_depth
+    }
+
+    /// The lecture's cutoff, if set.
+    pub fn cutoff(&self) -> Option<f32> {
+        self.cutoff
     }
 
     /// Rays traced so far (camera rays included).
@@ -83,11 +155,17 @@ impl NaiveRecursive {
         self.branching[(depth as usize).min(self.branching.len() - 1)]
     }
 
+    /// `L_o` along `ray` at recursion depth `depth`. `throughput` is the
+    /// product of the BRDF weights `Π f_r |cos θ| / p` down to here, without
+    /// the levels' `1/N`, and `product` the same with them (each branch's
+    /// share of the pixel's estimate).
+    #[allow(clippy::too_many_arguments)]
     fn radiance(
         &self,
         scene: &Scene,
         ray: &Ray,
         depth: u32,
+        throughput: Color,
         product: Color,
         sampler: &mut Sampler,
         rays: &mut u64,
@@ -116,9 +194,12 @@ impl NaiveRecursive {
             };
             let mut weight = c.weight;
             if self.roulette_depth.is_some_and(|d| depth + 1 >= d) {
-                // Judged by the product of the weights down to here (each
-                // level's 1/N included), with no η correction.
-                let Some(q) = russian_roulette(product * weight, 1.0, sampler) else {
+                // Judged by what the branch carries, without the 1/N of
+                // the levels above: the N siblings of a split share the
+                // light between them, and a survival probability that
+                // counted the 1/N (as once) killed most of them right
+                // after the split, undoing it. No η correction.
+                let Some(q) = russian_roulette(throughput * weight, 1.0, sampler) else {
                     continue;
                 };
                 weight /= q;
@@ -128,6 +209,7 @@ impl NaiveRecursive {
                     scene,
                     &c.ray,
                     depth + 1,
+                    throughput * weight,
                     product * weight / n as f32,
                     sampler,
                     rays,
@@ -152,8 +234,53 @@ impl Integrator for NaiveRecursive {
     ) -> Color {
         let ray = camera_ray(scene, pixel, sampler);
         let mut rays = 0u64;
-        let l = self.radiance(scene, &ray, 0, Color::ONE, sampler, &mut rays);
+        let l = self.radiance(scene, &ray, 0, Color::ONE, Color::ONE, sampler, &mut rays);
         self.rays.fetch_add(rays, Ordering::Relaxed);
         l
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A recursion that nothing ends is refused by the library, not only by
+    /// the command line: unlimited depth without roulette or cutoff (it
+    /// never returned, `NaiveRecursive::new(_, None)` was accepted), roulette
+    /// alone over a repeating split (a tree that never stops growing), the
+    /// cutoff alone without one (a white wall keeps the product at 1).
+    #[test]
+    fn a_recursion_without_end_is_refused() {
+        for (branching, roulette, cutoff) in [
+            (vec![4], None, None),
+            (vec![1], None, None),
+            (vec![16, 4, 2], Some(1), None),
+            (vec![8], Some(5), None),
+            (vec![4, 1], None, Some(0.01)),
+        ] {
+            let e = NaiveRecursive::try_new(branching.clone(), None, roulette, cutoff).unwrap_err();
+            assert!(
+                e.contains("never ends"),
+                "{branching:?} {roulette:?} {cutoff:?}: {e}"
+            );
+        }
+        assert!(std::panic::catch_unwind(|| NaiveRecursive::new(vec![4], None)).is_err());
+        for (branching, roulette, cutoff) in [
+            (vec![16, 4, 1], Some(1), None),
+            (vec![1], Some(5), None),
+            (vec![4, 2], None, Some(0.01)),
+            (vec![8], Some(3), Some(0.1)),
+        ] {
+            NaiveRecursive::try_new(branching.clone(), None, roulette, cutoff)
+                .unwrap_or_else(|e| panic!("{branching:?} {roulette:?} {cutoff:?}: {e}"));
+        }
+        // A finite depth always ends.
+        NaiveRecursive::try_new(vec![8], Some(4), None, None).unwrap();
+        for bad in [vec![], vec![2, 0]] {
+            assert!(NaiveRecursive::try_new(bad, Some(3), None, None).is_err());
+        }
+        for bad in [-1.0, f32::NAN, f32::INFINITY] {
+            assert!(NaiveRecursive::try_new(vec![2], Some(3), None, Some(bad)).is_err());
+        }
     }
 }

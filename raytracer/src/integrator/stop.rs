@@ -6,9 +6,10 @@
 //! a path tracer without a depth limit or roulette may bounce for ever in a
 //! closed white furnace. Such integrators call [`stop_requested`] as they go
 //! (once per ray: a thread-local read and a relaxed atomic load) and, when it
-//! says yes, return at once with whatever they have. The others need not:
-//! direct light and ambient occlusion trace a few rays per sample, light and
-//! bidirectional tracing at most 64 vertices per subpath.
+//! says yes, return at once with whatever they have (the random walks of
+//! light and bidirectional tracing check every 64 bounces, as the path
+//! tracer does). Direct light and ambient occlusion need not: they trace a
+//! few rays per sample.
 //!
 //! The render loop runs each worker inside [`watch`], which makes
 //! `stop_requested` read that render's flag, and after each sample asks

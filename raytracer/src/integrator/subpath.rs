@@ -8,6 +8,10 @@
 //!
 //! **Depth.** Mitsuba's `max_depth = D` allows at most `D − 1` scattering
 //! vertices, i.e. `s + t − 2 ≤ D − 1`: paths of at most `D + 1` vertices.
+//! That is the only limit, as for the path tracer: a subpath is a growable
+//! buffer, reused from sample to sample, and unlimited depth is unlimited
+//! (a fixed buffer of 64 vertices once dropped the tail that Russian
+//! roulette lets through: at albedo 0.99 half the light of a furnace).
 //!
 //! Not handled (documented limit): environment lights on the light side.
 //! Light subpaths that start at the environment are dropped; bidirectional
@@ -17,21 +21,13 @@
 use super::continuation::sample_continuation;
 use super::dimensions::{EMISSION_DIRECTION, EMISSION_POINT, LIGHT_CHOICE};
 use super::roulette::russian_roulette;
-use super::vertex::{MAX_VERTICES, Subpath, Vertex, pdf_w_to_a};
+use super::shading_normals::importance_correction;
+use super::stop::stop_requested;
+use super::vertex::{Subpath, Vertex, pdf_w_to_a};
 use crate::brdf::TransportMode;
 use crate::math::{Color, Ray, UVec2, Vec3A};
 use crate::sampling::Sampler;
 use crate::scene::{LightChoice, Scene};
-
-/// How a random walk ended.
-#[derive(Clone, Copy, Debug)]
-pub struct WalkEnd {
-    /// Number of vertices in the buffer (the start vertex included).
-    pub vertices: usize,
-    /// The ray that left the scene, if one did (camera subpaths only: it
-    /// sees the environment).
-    pub escaped: Option<EscapedRay>,
-}
 
 /// A camera subpath's last ray, which hit nothing.
 #[derive(Clone, Copy, Debug)]
@@ -42,21 +38,24 @@ pub struct EscapedRay {
     pub d: Vec3A,
 }
 
-/// Extends the subpath whose last vertex is `path[0..start+1]` by a random
-/// walk: `ray` leaves `path[start]` with solid-angle density `pdf_w`, and
-/// `beta` is the throughput the first new vertex gets. At every surface the
-/// BRDF is sampled in transport mode `mode`; each new vertex records
-/// `pdf_fwd_a`, and its predecessor `pdf_rev_a` (the reverse walk's density, the
-/// BRDF's `pdf(ω_i → ω_o)`). Stops at `max_vertices`, at a failed sample or by
-/// Russian roulette after `rr_depth` scattering events (which divides the
-/// survivors' throughput by their probability `q`). Draws, per surface below
+/// Extends the subpath `path` (its last vertex is where the walk starts) by
+/// a random walk: `ray` leaves that vertex with solid-angle density `pdf_w`,
+/// and `beta` is the throughput the first new vertex gets. At every surface
+/// the BRDF is sampled in transport mode `mode` (with the adjoint correction
+/// for shading normals in importance mode); each new vertex records
+/// `pdf_fwd_a`, and its predecessor `pdf_rev_a` (the reverse walk's density,
+/// the BRDF's `pdf(ω_i → ω_o)`). Stops when the subpath holds `max_vertices`
+/// (no other cap: the buffer grows as the walk needs), at a failed sample, or
+/// by Russian roulette after `rr_depth` scattering events (which divides the
+/// survivors' throughput by their probability `q`). A walk that neither
+/// depth nor roulette ends (a closed white furnace without them) ends when
+/// the render is asked to stop ([`super::stop`]). Draws, per surface below
 /// `max_vertices`: a continuation, then (from `rr_depth` on) the roulette's
 /// number.
 #[allow(clippy::too_many_arguments)]
 pub fn random_walk(
     scene: &Scene,
     path: &mut Subpath,
-    start: usize,
     mut ray: Ray,
     mut beta: Color,
     mut pdf_w: f32,
@@ -64,27 +63,23 @@ pub fn random_walk(
     max_vertices: usize,
     rr_depth: u32,
     sampler: &mut Sampler,
-) -> WalkEnd {
-    let max_vertices = max_vertices.min(MAX_VERTICES);
-    let mut n = start + 1;
+) -> Option<EscapedRay> {
     // The walk's own throughput Π f |cos| / p (without the start's L_e or
     // W_e), for Russian roulette; `eta_scale` undoes glass's 1/η² on radiance.
     let mut walk = Color::ONE;
     let mut eta_scale = 1.0f32;
     let mut scatterings = 0u32;
-    while n < max_vertices {
+    while path.len() < max_vertices {
+        if scatterings % 64 == 63 && stop_requested() {
+            break;
+        }
         let Some(it) = scene.intersect(&ray) else {
-            let escaped =
-                (mode == TransportMode::Radiance).then_some(EscapedRay { beta, d: ray.d });
-            return WalkEnd {
-                vertices: n,
-                escaped,
-            };
+            return (mode == TransportMode::Radiance).then_some(EscapedRay { beta, d: ray.d });
         };
         let mut v = Vertex::surface(scene, it, beta);
-        v.pdf_fwd_a = pdf_w_to_a(pdf_w, &path[n - 1], &v);
-        path[n] = v;
-        n += 1;
+        v.pdf_fwd_a = pdf_w_to_a(pdf_w, path.last().expect("a walk starts at a vertex"), &v);
+        path.push(v);
+        let n = path.len();
         if n >= max_vertices {
             break;
         }
@@ -101,11 +96,14 @@ pub fn random_walk(
             pdf_w = 0.0;
             pdf_rev_w = 0.0;
         }
-        beta *= c.weight;
-        walk *= c.weight;
-        if mode == TransportMode::Radiance {
-            eta_scale *= bs.eta * bs.eta;
+        let mut weight = c.weight;
+        match mode {
+            TransportMode::Radiance => eta_scale *= bs.eta * bs.eta,
+            // Light paths scatter with the adjoint BRDF (shading normals).
+            TransportMode::Importance => weight *= importance_correction(&it, it.wo, c.wi),
         }
+        beta *= weight;
+        walk *= weight;
         let (cur, prev) = (path[n - 1], path[n - 2]);
         path[n - 2].pdf_rev_a = pdf_w_to_a(pdf_rev_w, &cur, &prev);
         ray = c.ray;
@@ -118,16 +116,15 @@ pub fn random_walk(
             walk /= q;
         }
     }
-    WalkEnd {
-        vertices: n,
-        escaped: None,
-    }
+    None
 }
 
-/// The camera subpath `z_0 z_1 …` of a pixel sample: `z_0` on the lens with
-/// `β = W_e cos θ / (p_A p_ω) = 1` (a pixel sample's importance is 1), then a
-/// random walk in radiance mode. Draws the camera ray's numbers, then the
-/// walk's.
+/// The camera subpath `z_0 z_1 …` of a pixel sample, into `path` (cleared
+/// first), at most `max_vertices` long: `z_0` on the lens with
+/// `β = W_e cos θ / (p_A p_ω) = 1` (a pixel sample's importance is 1), then
+/// a random walk in radiance mode. Returns the ray that escaped the scene,
+/// if the walk ended that way (it sees the environment). Draws the camera
+/// ray's numbers, then the walk's.
 pub fn camera_subpath(
     scene: &Scene,
     pixel: UVec2,
@@ -135,21 +132,18 @@ pub fn camera_subpath(
     path: &mut Subpath,
     max_vertices: usize,
     rr_depth: u32,
-) -> WalkEnd {
+) -> Option<EscapedRay> {
+    path.clear();
     let ray = super::camera_ray(scene, pixel, sampler);
-    path[0] = Vertex::camera(ray.o, Color::ONE);
+    path.push(Vertex::camera(ray.o, Color::ONE));
     if max_vertices < 2 {
-        return WalkEnd {
-            vertices: 1,
-            escaped: None,
-        };
+        return None;
     }
     // p_ω of the primary ray over the whole film (see `camera::pdf_we`).
     let pdf_w = scene.camera.pdf_we(&ray).pdf_w;
     random_walk(
         scene,
         path,
-        0,
         ray,
         Color::ONE,
         pdf_w,
@@ -181,6 +175,7 @@ pub fn light_subpath(
         EMISSION_POINT.draw(sampler),
         EMISSION_DIRECTION.draw(sampler),
     );
+    path.clear();
     if max_vertices == 0 {
         return 0;
     }
@@ -197,13 +192,17 @@ pub fn light_subpath(
         return 0;
     }
     let pdf_origin = pmf * e.pdf_a;
-    path[0] = Vertex::light(
+    // y_0 lies on the light's surface (e.p); only the ray that leaves it
+    // starts off the surface. Stored at the ray's origin, the lamp seen by
+    // light tracing's t = 1 connections was moved by the offset (its edge
+    // rows of `cornell` differed by −0.26% and +1.7% from path tracing).
+    path.push(Vertex::light(
         index,
-        e.ray.o,
+        e.p,
         e.n,
         Color::splat(1.0 / pdf_origin),
         pdf_origin,
-    );
+    ));
     if max_vertices < 2 {
         return 1;
     }
@@ -212,7 +211,6 @@ pub fn light_subpath(
     random_walk(
         scene,
         path,
-        0,
         e.ray,
         beta,
         e.pdf_w,
@@ -220,6 +218,6 @@ pub fn light_subpath(
         max_vertices,
         rr_depth,
         sampler,
-    )
-    .vertices
+    );
+    path.len()
 }

@@ -38,21 +38,16 @@
 //! (the `t = 1` connection of a light vertex to the lens) and [`super::mis_weight`]
 //! (the MIS weight of a strategy).
 //!
-//! Not handled (documented limits): pbrt's correction factor for shading
-//! normals in importance transport (our shapes shade with their geometric
-//! normal except smooth meshes).
+//! Shading normals: light-subpath vertices scatter with the adjoint BRDF
+//! ([`super::shading_normals`]); densities are those of the BRDF's sampling.
 
+use std::cell::RefCell;
+
+use super::shading_normals::importance_correction;
 use crate::frame::Frame;
 use crate::geometry::Interaction;
 use crate::math::{Color, Ray, Vec2, Vec3A};
 use crate::scene::Scene;
-
-/// Capacity of a subpath buffer (vertices). With unlimited depth Russian
-/// roulette ends paths long before: a path of 64 vertices has survived 63
-/// bounces (probability below 0.95^58 ≈ 0.05 even at the roulette's cap
-/// [`MAX_SURVIVAL`](super::roulette::MAX_SURVIVAL), and far less at
-/// realistic albedos); the truncation drops that tail.
-pub const MAX_VERTICES: usize = 64;
 
 /// No light at this vertex.
 pub const NO_LIGHT: u32 = u32::MAX;
@@ -92,7 +87,7 @@ pub struct Vertex {
     pub delta: bool,
 }
 
-/// A placeholder vertex for buffers (overwritten before use).
+/// A placeholder vertex (the constructors fill in what they know).
 pub const EMPTY_VERTEX: Vertex = Vertex {
     kind: VertexKind::Surface,
     it: Interaction {
@@ -115,14 +110,33 @@ pub const EMPTY_VERTEX: Vertex = Vertex {
     delta: false,
 };
 
-/// A subpath buffer, allocated once per sample on the stack.
-pub type Subpath = [Vertex; MAX_VERTICES];
+/// A subpath: its vertices from the lens or the light on, as many as the
+/// walk made (no fixed capacity: the max depth is the only limit, as for
+/// the path tracer).
+pub type Subpath = Vec<Vertex>;
 
-/// The number of vertices a subpath buffer may hold for Mitsuba's max depth
-/// `D` (paths of at most `D + 1` vertices), capped by [`MAX_VERTICES`].
+thread_local! {
+    /// Subpath buffers of this thread, kept between samples.
+    static SUBPATHS: RefCell<Vec<Subpath>> = const { RefCell::new(Vec::new()) };
+}
+
+/// Runs `f` with two subpath buffers of this thread (a camera and a light
+/// subpath): they keep their capacity from sample to sample, so a render
+/// allocates them once per thread, not once per sample. Their contents are
+/// whatever the last user left (the walks clear them).
+pub fn with_subpaths<R>(f: impl FnOnce(&mut Subpath, &mut Subpath) -> R) -> R {
+    let take = || SUBPATHS.with(|s| s.borrow_mut().pop().unwrap_or_default());
+    let (mut a, mut b) = (take(), take());
+    let result = f(&mut a, &mut b);
+    SUBPATHS.with(|s| s.borrow_mut().extend([a, b]));
+    result
+}
+
+/// The number of vertices a subpath may hold for Mitsuba's max depth `D`
+/// (paths of at most `D + 1` vertices); unlimited for `None`.
 #[inline]
 pub fn path_vertices(max_depth: Option<u32>) -> usize {
-    max_depth.map_or(MAX_VERTICES, |d| (d as usize + 1).min(MAX_VERTICES))
+    max_depth.map_or(usize::MAX, |d| d as usize + 1)
 }
 
 /// `p_A(y) = p_ω · |cos θ_y| / ‖x − y‖²` (thesis eq. 8.10): a solid-angle
@@ -239,6 +253,19 @@ impl Vertex {
         }
     }
 
+    /// [`Vertex::f`] of a light-subpath vertex, which scatters importance:
+    /// at a surface the BRDF times the adjoint correction for shading
+    /// normals ([`importance_correction`], `ω_o` towards the previous light
+    /// vertex, `w` onwards); at a light `L_e` as in `f`.
+    #[inline]
+    pub fn f_importance(&self, scene: &Scene, w: Vec3A) -> Color {
+        let f = self.f(scene, w);
+        match self.kind {
+            VertexKind::Surface => f * importance_correction(&self.it, self.it.wo, w),
+            _ => f,
+        }
+    }
+
     /// `|cos θ|` of the unit direction `w` at this vertex: with the shading
     /// normal at a surface, the light's normal at an area light, 1 where there
     /// is no surface (point light).
@@ -303,6 +330,31 @@ impl Vertex {
         let light = &scene.lights[self.light as usize];
         let emission = light.pdf_le(self.p(), self.it.ng, self.it.ng);
         scene.light_pmf(self.light) * emission.pdf_a
+    }
+
+    /// Area density with which next event estimation at `from` picks this
+    /// (light or emitting surface) point — the strategy `s = 1` of
+    /// bidirectional tracing: `P(light) · p_ω · |cos θ_y| / ‖y − x‖²` with
+    /// `p_ω` of [`crate::light::Light::pdf_li_w`]. For a quad that is the
+    /// origin density `P(light)/A`; for a sphere seen from outside, the
+    /// cone's density (zero off the cap `from` sees); for a point light the
+    /// origin density (the point is fixed).
+    pub fn pdf_light_point_a(&self, scene: &Scene, from: &Vertex) -> f32 {
+        if self.light == NO_LIGHT {
+            return 0.0;
+        }
+        let light = &scene.lights[self.light as usize];
+        if light.is_delta() {
+            return self.pdf_light_origin_a(scene);
+        }
+        let d = self.p() - from.p();
+        let d2 = d.length_squared();
+        if d2 == 0.0 {
+            return 0.0;
+        }
+        let wi = d / d2.sqrt();
+        let pdf_w = light.pdf_li_w(from.p(), self.p(), self.it.ng, wi);
+        scene.light_pmf(self.light) * pdf_w * self.it.ng.dot(wi).abs() / d2
     }
 }
 

@@ -15,7 +15,7 @@
 use crate::frame::Frame;
 use crate::geometry::{Quad, Sphere};
 use crate::light::{Emission, LightSample};
-use crate::math::{Color, INV_PI, PI, Ray, RayPdf, Vec2, Vec3A};
+use crate::math::{Color, INV_PI, PI, Ray, RayPdf, Vec2, Vec3A, ray_offset};
 use crate::sampling::warp::{cosine_hemisphere, uniform_sphere};
 
 /// The surface of an area light.
@@ -91,10 +91,23 @@ impl AreaLight {
     /// cone is only a better choice from clearly outside. A receiver *on* the
     /// sphere (the furnace: the light shining on its own inner wall) would
     /// otherwise be taken for an outside point by rounding, and the cone's
-    /// nearest intersection would be the receiver itself.
+    /// nearest intersection would be the receiver itself. The shell is the
+    /// ray offset of the sphere's coordinates ([`ray_offset`]): far wider
+    /// than the rounding of a point on the sphere (a few ulps of them), and
+    /// the same fraction of the sphere at every scale of the scene.
     #[inline]
     fn inside_sphere(s: &Sphere, p: Vec3A) -> bool {
-        (p - s.center).length_squared() <= s.radius * s.radius * (1.0 + 1e-3)
+        let shell = s.radius + ray_offset(s.center.abs().max_element() + s.radius);
+        (p - s.center).length_squared() <= shell * shell
+    }
+
+    /// Whether the point `q` of a sphere lies on the cap that a receiver at
+    /// `p` outside it sees, the only part cone sampling draws:
+    /// `(q − c)·(p − c) ≥ r²` (on the boundary the line p q is tangent),
+    /// with a relative slack of 1e-4 for the rounding of `q`.
+    #[inline]
+    fn on_visible_cap(s: &Sphere, p: Vec3A, q: Vec3A) -> bool {
+        (q - s.center).dot(p - s.center) >= s.radius * s.radius * (1.0 - 1e-4)
     }
 
     /// Next event estimation from the receiver `p` (see [`crate::light::Light::sample_li`]).
@@ -161,13 +174,19 @@ impl AreaLight {
 
     /// Solid-angle density of `sample_li` for the direction `wi` from `p`
     /// that hit the light at `p_light` with normal `n_light`. Zero where
-    /// `sample_li` never samples (the back of a one-sided light).
+    /// `sample_li` never samples: the back of a one-sided light, and for a
+    /// sphere seen from outside, every point off the cap that `p` sees (cone
+    /// sampling never draws it: a ray from `p` can only reach it through the
+    /// sphere, but the density must not rely on that).
     pub fn pdf_li_w(&self, p: Vec3A, p_light: Vec3A, n_light: Vec3A, wi: Vec3A) -> f32 {
         if !self.two_sided && n_light.dot(wi) >= 0.0 {
             return 0.0;
         }
         match &self.shape {
             AreaShape::Sphere(s) if !Self::inside_sphere(s, p) => {
+                if !Self::on_visible_cap(s, p, p_light) {
+                    return 0.0;
+                }
                 let (one_minus_cos_max, _) =
                     cone_of_sphere(s.radius, (s.center - p).length_squared());
                 1.0 / (2.0 * PI * one_minus_cos_max)
@@ -219,6 +238,7 @@ impl AreaLight {
         }
         let d = frame.to_world(local);
         Some(Emission {
+            p,
             ray: Ray::spawn(p, n, d),
             n,
             le: self.radiance,
@@ -420,6 +440,31 @@ mod tests {
         assert_matches("sphere from inside", &inv, 4.0 * std::f64::consts::PI, 0.02);
     }
 
+    /// Seen from outside, a sphere is sampled in the cone of the cap the
+    /// receiver sees: `pdf_li_w` of a point off that cap is 0, also for a
+    /// two-sided sphere whose far side faces the receiver from inside (it
+    /// used to return the cone's density for any point, right only because
+    /// a ray cannot reach the far side through the sphere). Points of the
+    /// cap keep the cone's density.
+    #[test]
+    fn sphere_pdf_is_zero_off_the_visible_cap() {
+        let s = Sphere {
+            center: Vec3A::new(0.0, 1.0, 0.0),
+            radius: 0.5,
+        };
+        for two_sided in [false, true] {
+            let l = light(AreaShape::Sphere(s), two_sided);
+            let p = Vec3A::new(0.4, -1.0, 1.5);
+            for smp in samples(&l, p, 256, 70) {
+                let far = s.center - (smp.p - s.center);
+                let n = (far - s.center).normalize();
+                let wi = (far - p).normalize();
+                assert_eq!(l.pdf_li_w(p, far, n, wi), 0.0, "far side {far}");
+                assert_eq!(l.pdf_li_w(p, smp.p, smp.n, smp.wi), smp.pdf_w);
+            }
+        }
+    }
+
     /// Next event estimation `mean(L cos θ / p_ω)` against Lambert's exact
     /// irradiance, for receivers facing up and tilted (the quad stays above
     /// their tangent planes). 2^16 samples, 5 standard errors.
@@ -482,7 +527,8 @@ mod tests {
 
     /// Flux by light tracing's estimator `L_e |cos θ| / (p_A p_ω)` equals
     /// `π A L` per side and `power()`; `pdf_le` agrees with each emission,
-    /// which leaves from the light's surface on an emitting side. With
+    /// whose point lies on the light's surface and whose ray leaves it on an
+    /// emitting side. With
     /// cosine sampling the estimator is constant (rounding tolerance only);
     /// a two-sided light must pick each side half the time (2^14 samples,
     /// std. error 0.0039, tolerance 0.03 > 7 σ: false failure < 1e-11).
@@ -503,8 +549,14 @@ mod tests {
                 let mut front = 0;
                 for i in 0..n {
                     let mut smp = Sampler::new(60, i, 0);
-                    let e = l.sample_le(smp.next_2d(), smp.next_2d()).unwrap();
-                    let RayPdf { pdf_a, pdf_w } = l.pdf_le(e.ray.o, e.n, e.ray.d);
+                    let u_pos = smp.next_2d();
+                    let e = l.sample_le(u_pos, smp.next_2d()).unwrap();
+                    let RayPdf { pdf_a, pdf_w } = l.pdf_le(e.p, e.n, e.ray.d);
+                    // The vertex on the surface (light tracing once stored
+                    // the offset origin: the lamp moved by the offset), the
+                    // ray's origin just off it, on the side it leaves to.
+                    assert_eq!(l.shape.sample_area(u_pos).0, e.p);
+                    assert!(e.ray.o != e.p && (e.ray.o - e.p).dot(e.ray.d) > 0.0);
                     assert!((pdf_a - e.pdf_a).abs() <= 1e-5 * e.pdf_a);
                     assert!((pdf_w - e.pdf_w).abs() <= 1e-3 * e.pdf_w);
                     let cos = e.n.dot(e.ray.d);

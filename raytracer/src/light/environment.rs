@@ -301,6 +301,7 @@ impl EnvironmentLight {
         let disk = concentric_disk(u_pos);
         let o = self.scene_center + r * (d + frame.s * disk.x + frame.t * disk.y);
         Some(Emission {
+            p: o,
             ray: Ray::new(o, -d),
             n: -d,
             le,

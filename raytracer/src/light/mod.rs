@@ -54,6 +54,11 @@ pub struct LightSample {
 /// A ray leaving a light (the first vertex of a light path).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Emission {
+    /// The point on the light: on its surface, where the path's vertex `y_0`
+    /// lies (the ray's origin is pushed off the surface; the vertex is not).
+    pub p: Vec3A,
+    /// The ray that leaves `p`: its origin offset off an area light's
+    /// surface (see [`crate::math::Ray::spawn`]).
     pub ray: Ray,
     /// Surface normal at the ray's origin (zero for a point light; the
     /// direction of travel for the environment).
@@ -167,7 +172,8 @@ impl Light {
     /// Emitted flux `Φ` (W): `π A L` per emitting side of an area light,
     /// `4π I` for a point light, `π r² ∫ L dω` for the environment (the flux
     /// through the scene's bounding disk; depends on the scene bounds).
-    /// Used to choose lights in proportion to their power.
+    /// Lights are chosen in proportion to it (`Scene::choose_light`, unless
+    /// `Scene::set_light_selection` asks for a uniform choice).
     #[inline]
     pub fn power(&self) -> Color {
         match self {
@@ -309,7 +315,7 @@ mod tests {
                 let Some(e) = light.sample_le(smp.next_2d(), smp.next_2d()) else {
                     continue;
                 };
-                let RayPdf { pdf_a, pdf_w } = light.pdf_le(e.ray.o, e.n, e.ray.d);
+                let RayPdf { pdf_a, pdf_w } = light.pdf_le(e.p, e.n, e.ray.d);
                 assert!((pdf_a - e.pdf_a).abs() <= 1e-4 * e.pdf_a, "light {k}");
                 assert!((pdf_w - e.pdf_w).abs() <= 1e-3 * e.pdf_w, "light {k}");
                 assert_eq!(e.is_delta_position, light.is_delta());

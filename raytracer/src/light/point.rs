@@ -44,6 +44,7 @@ impl PointLight {
     #[inline]
     pub fn sample_le(&self, u_dir: Vec2) -> Emission {
         Emission {
+            p: self.position,
             ray: Ray::new(self.position, uniform_sphere(u_dir)),
             n: Vec3A::ZERO,
             le: self.intensity,

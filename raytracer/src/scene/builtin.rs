@@ -2,8 +2,8 @@
 //!
 //! Lecture topic: the scenes of the lecture's pictures — the Cornell box
 //! (numerically identical to Mitsuba 3's), two furnaces whose answer is
-//! exactly 1, a caustic, a room lit through a door ajar, a stereo scene and a
-//! BRDF gallery. Each is a TOML file in `raytracer/scenes/` (read it, it is
+//! exactly 1, a caustic, a room lit through a door ajar, a stereo scene, a
+//! BRDF gallery and Veach's scene for multiple importance sampling. Each is a TOML file in `raytracer/scenes/` (read it, it is
 //! commented); [`write_builtin`] copies one out so that a student can edit it
 //! and load it back with [`super::load_file`].
 
@@ -78,6 +78,12 @@ pub const BUILTIN_SCENES: &[BuiltinScene] = &[
         name: "brdf-gallery",
         description: "Lambert, Phong n = 1, 10, 100, 1000, mirror and glass balls side by side",
         toml: include_str!("../../scenes/brdf-gallery.toml"),
+        assets: &[],
+    },
+    BuiltinScene {
+        name: "veach-mis",
+        description: "Veach's MIS scene: four plates of rising glossiness, four lights of rising size",
+        toml: include_str!("../../scenes/veach-mis.toml"),
         assets: &[],
     },
 ];
@@ -168,6 +174,7 @@ mod tests {
             "door",
             "stereo",
             "brdf-gallery",
+            "veach-mis",
         ] {
             assert!(builtin(name).is_some(), "{name}");
         }
@@ -277,7 +284,11 @@ mod tests {
         let parts = load_without_meshes("cornell");
         let albedo = |name: &str| {
             let i = parts.brdf_names.iter().position(|n| n == name).unwrap();
-            match &parts.brdfs[i] {
+            // One-sided, as Mitsuba's `diffuse`: black from behind.
+            let Brdf::OneSided(model) = &parts.brdfs[i] else {
+                panic!("{name} is not one-sided: {:?}", parts.brdfs[i])
+            };
+            match model.as_ref() {
                 Brdf::Lambert(Lambert {
                     albedo: Texture::Constant(c),
                 }) => *c,
@@ -386,6 +397,41 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// In `veach-mis` every plate mirrors the row of lights towards the
+    /// camera (its normal bisects the directions from its centre to the
+    /// camera and to the lights' centre), and the four lights have equal
+    /// power (radiance × radius² = 1) and rising size.
+    #[test]
+    fn veach_plates_mirror_the_lights_and_the_lights_have_equal_power() {
+        let parts = load_without_meshes("veach-mis");
+        let eye = parts.camera.position;
+        let mut exponents = Vec::new();
+        let mut radii = Vec::new();
+        for object in &parts.objects {
+            match (&object.shape, object.emitter) {
+                (Shape::Quad(q), None) => {
+                    let centre = q.origin + 0.5 * (q.e1 + q.e2);
+                    let half = ((eye - centre).normalize() + (-centre).normalize()).normalize();
+                    let normal = q.e1.cross(q.e2).normalize();
+                    assert!((normal - half).length() < 1e-4, "{}", object.name);
+                    let Brdf::Phong(p) = parts.brdfs[object.brdf as usize] else {
+                        panic!("{} is glossy", object.name)
+                    };
+                    exponents.push(p.exponent);
+                }
+                (Shape::Sphere(s), Some(e)) => {
+                    let power = e.radiance.x * s.radius * s.radius;
+                    assert!((power - 1.0).abs() < 1e-3, "{}: {power}", object.name);
+                    radii.push(s.radius);
+                }
+                _ => panic!("{}: only plates and spherical lights", object.name),
+            }
+        }
+        assert_eq!((exponents.len(), radii.len()), (4, 4));
+        assert!(exponents.windows(2).all(|w| w[0] > w[1]), "{exponents:?}");
+        assert!(radii.windows(2).all(|w| w[0] < w[1]), "{radii:?}");
     }
 
     #[test]

@@ -82,6 +82,8 @@ pub struct MaterialDesc {
     pub ior: Option<Spanned<Real>>,
     /// glass; default 1.
     pub tint: Option<Spanned<ColorDesc>>,
+    /// lambert, phong, mirror: "both" (default) or "front" (black from behind).
+    pub sides: Option<Spanned<String>>,
 }
 
 /// `[[shapes]]`: `type` is sphere, quad, rectangle, cube or mesh.

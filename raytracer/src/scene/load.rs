@@ -308,6 +308,26 @@ impl Context<'_> {
     }
 
     fn material(&self, name: &str, desc: &Spanned<MaterialDesc>) -> Result<Brdf> {
+        let brdf = self.material_model(name, desc)?;
+        let Some(sides) = &desc.get_ref().sides else {
+            return Ok(brdf);
+        };
+        match sides.get_ref().as_str() {
+            "both" => Ok(brdf),
+            "front" if matches!(brdf, Brdf::Glass(_)) => Err(self.error(
+                sides.span(),
+                "glass has two sides by nature (light enters and leaves it): `sides` is not used by a glass material",
+            )),
+            "front" => Ok(brdf.one_sided()),
+            other => Err(self.error(
+                sides.span(),
+                format!("`sides` must be \"front\" (black from behind) or \"both\", got `{other}`"),
+            )),
+        }
+    }
+
+    /// The BRDF model of a material, before `sides`.
+    fn material_model(&self, name: &str, desc: &Spanned<MaterialDesc>) -> Result<Brdf> {
         let m = desc.get_ref();
         let kind = m.kind.get_ref().as_str();
         let required = |field: &str| {

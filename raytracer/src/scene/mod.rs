@@ -18,6 +18,7 @@ use crate::camera::{Camera, CameraParams};
 use crate::geometry::{Geometry, Shape};
 use crate::light::{AreaLight, AreaShape, Light};
 use crate::math::{Color, Ray, Vec3A};
+use crate::sampling::Distribution1D;
 
 /// Geometry makes interactions; [`Scene::intersect`] returns them, so they
 /// are named here too (the exercises import them with the scene).
@@ -112,6 +113,19 @@ pub struct ObjectInfo {
     pub light: Option<u32>,
 }
 
+/// How [`Scene::choose_light`] picks a light for next event estimation and
+/// for the start of a light path.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LightSelection {
+    /// In proportion to the light's emitted power ([`Light::power`], the
+    /// mean of its three channels): a bright lamp is chosen more often than
+    /// a dim one, so each choice carries about the same light. The default.
+    #[default]
+    Power,
+    /// Every light with probability `1/n`, as Mitsuba does.
+    Uniform,
+}
+
 /// A light picked by [`Scene::choose_light`].
 #[derive(Clone, Copy, Debug)]
 pub struct LightChoice<'a> {
@@ -151,6 +165,10 @@ pub struct Scene {
     pub lights: Vec<Light>,
     /// Index of the environment in `lights`, if the scene has one.
     pub environment: Option<u32>,
+    /// How lights are chosen (change it with [`Scene::set_light_selection`]).
+    light_selection: LightSelection,
+    /// The lights' powers when they are chosen by power (`None`: uniformly).
+    light_power: Option<Distribution1D>,
 }
 
 impl Scene {
@@ -212,7 +230,7 @@ impl Scene {
             lights.push(light);
         }
         let settings = parts.settings;
-        Scene {
+        let mut scene = Scene {
             name: name.to_string(),
             camera: Camera::new(parts.camera, settings.width, settings.height),
             settings,
@@ -222,7 +240,30 @@ impl Scene {
             brdfs: parts.brdfs,
             lights,
             environment,
-        }
+            light_selection: LightSelection::default(),
+            light_power: None,
+        };
+        scene.set_light_selection(LightSelection::default());
+        scene
+    }
+
+    /// Chooses lights by power (the default) or uniformly from now on.
+    pub fn set_light_selection(&mut self, selection: LightSelection) {
+        self.light_selection = selection;
+        self.light_power =
+            (selection == LightSelection::Power && !self.lights.is_empty()).then(|| {
+                let power: Vec<f32> = self
+                    .lights
+                    .iter()
+                    .map(|l| l.power().element_sum() / 3.0)
+                    .collect();
+                Distribution1D::new(&power)
+            });
+    }
+
+    /// How lights are chosen.
+    pub fn light_selection(&self) -> LightSelection {
+        self.light_selection
     }
 
     /// Changes the image size (and the camera's aspect ratio with it).
@@ -244,27 +285,36 @@ impl Scene {
         !self.geometry.occluded(ray)
     }
 
-    /// Picks a light for next event estimation with the number `u`:
-    /// uniformly, as Mitsuba does (each of `n` lights with probability
-    /// `1/n`). `None` if the scene has no light.
+    /// Picks a light for next event estimation, or to start a light path,
+    /// with the number `u`: in proportion to its power by default, or
+    /// uniformly (see [`LightSelection`]). `None` if the scene has no light.
     #[inline]
     pub fn choose_light(&self, u: f32) -> Option<LightChoice<'_>> {
         let n = self.lights.len();
         if n == 0 {
             return None;
         }
-        let i = ((u * n as f32) as usize).min(n - 1);
+        let (i, pmf) = match &self.light_power {
+            Some(power) => power.sample_discrete(u),
+            None => (((u * n as f32) as usize).min(n - 1), 1.0 / n as f32),
+        };
         Some(LightChoice {
             index: i as u32,
             light: &self.lights[i],
-            pmf: 1.0 / n as f32,
+            pmf,
         })
     }
 
-    /// Probability that [`Self::choose_light`] picks light `index`.
+    /// Probability that [`Self::choose_light`] picks light `index` (0 for
+    /// an index that is not a light).
     #[inline]
-    pub fn light_pmf(&self, _index: u32) -> f32 {
-        1.0 / self.lights.len().max(1) as f32
+    pub fn light_pmf(&self, index: u32) -> f32 {
+        let n = self.lights.len();
+        match &self.light_power {
+            _ if index as usize >= n => 0.0,
+            Some(power) => power.discrete_pdf(index as usize),
+            None => 1.0 / n as f32,
+        }
     }
 
     /// Radiance arriving along a ray that left the scene (the environment, or black).

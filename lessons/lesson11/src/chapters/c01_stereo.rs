@@ -63,8 +63,9 @@ struct StereoArgs {
     /// (deliberately flawed: it causes vertical parallax).
     #[arg(long)]
     pub toe_in: bool,
-    /// Leakage of the anaglyph filters in the crosstalk preview (0 = perfect filters).
-    #[arg(long, default_value_t = 0.1)]
+    /// Leakage of the anaglyph filters in the crosstalk pictures (0 = perfect filters);
+    /// they are written as crosstalk-EYE-leakPERCENT.png.
+    #[arg(long, default_value_t = 0.3)]
     pub leakage: f32,
     /// Light field: views per side of the N×N grid (0 = no light field).
     #[arg(long, default_value_t = 5)]
@@ -101,7 +102,7 @@ impl Default for StereoArgs {
             mode: vec!["all".into()],
             desaturate: 0.0,
             toe_in: false,
-            leakage: 0.1,
+            leakage: 0.3,
             lf_views: 5,
             lf_aperture: 0.4,
             lf_downscale: 2,
@@ -355,26 +356,19 @@ fn render_section(args: &StereoArgs, page_root: &Path) -> Result<Section> {
         )?);
     }
 
-    // Crosstalk: what each eye sees of the red–cyan anaglyph through leaky filters.
-    let glasses = Anaglyph::RedCyan;
-    let anaglyph = glasses.compose(left, right, args.desaturate);
-    for (view, eye) in crosstalk::eye_views(&anaglyph, glasses, args.leakage)
-        .iter()
-        .zip(Eye::BOTH)
-    {
-        section.figures.push(save(
-            view,
+    if modes.contains(&Composite::Anaglyph(Anaglyph::RedCyan)) {
+        eye_views(args, left, right, &dir, page_root, &mut section)?;
+    }
+    if modes.contains(&Composite::Anaglyph(Anaglyph::Dubois)) {
+        separation_sweep(
+            args,
+            &scene,
+            integrator.as_ref(),
+            &options,
             &dir,
             page_root,
-            &format!("crosstalk-{}", eye.name()),
-            args.exposure,
-            format!(
-                "What the {} eye sees of the red–cyan anaglyph through filters leaking {:.0} % \
-                 of the other colours: the faint doubled edges are ghosting.",
-                eye.name(),
-                100.0 * args.leakage
-            ),
-        )?);
+            &mut section,
+        )?;
     }
 
     if args.lf_views > 0 {
@@ -398,6 +392,158 @@ fn light_field_size(args: &StereoArgs, scene: &raytracer::scene::Scene) -> (u32,
         (scene.camera.width / args.lf_downscale).max(1),
         (scene.camera.height / args.lf_downscale).max(1),
     )
+}
+
+/// What each eye sees of the colour red–cyan anaglyph through its filter:
+/// perfect filters at the run's `--desaturate`, perfect filters after
+/// desaturating by 0.5 (the lecture's remedy), and filters leaking
+/// `--leakage` of the other colours (ghosting). Each view is the brightness
+/// the eye gets, as grey ([`crosstalk::eye_view`]).
+fn eye_views(
+    args: &StereoArgs,
+    left: &Image,
+    right: &Image,
+    dir: &Path,
+    page_root: &Path,
+    section: &mut Section,
+) -> Result<()> {
+    let glasses = Anaglyph::RedCyan;
+    let filter = |eye: Eye| match eye {
+        Eye::Left => "red",
+        Eye::Right => "cyan",
+    };
+    let anaglyph = glasses.compose(left, right, args.desaturate);
+    let perfect = crosstalk::eye_views(&anaglyph, glasses, 0.0);
+    let desaturated = crosstalk::eye_views(&glasses.compose(left, right, 0.5), glasses, 0.0);
+    let leaky = crosstalk::eye_views(&anaglyph, glasses, args.leakage);
+    let at = if args.desaturate > 0.0 {
+        format!(", the anaglyph desaturated by {}", args.desaturate)
+    } else {
+        String::new()
+    };
+    let pct = (100.0 * args.leakage).round() as u32;
+    for (k, eye) in Eye::BOTH.into_iter().enumerate() {
+        let name = eye.name();
+        let red_ball = match eye {
+            Eye::Left => "the near red ball is bright",
+            Eye::Right => {
+                "the near red ball turns dark, since little of its light is green or blue: the \
+                 two eyes see it differently"
+            }
+        };
+        section.figures.push(save(
+            &perfect[k],
+            dir,
+            page_root,
+            &format!("filtered-{name}"),
+            args.exposure,
+            format!(
+                "What the {name} eye sees of the red–cyan anaglyph through a perfect {} filter \
+                 (leakage 0{at}), as brightness: {red_ball}.",
+                filter(eye)
+            ),
+        )?);
+        let back = match eye {
+            Eye::Left => "the red ball a little dimmer",
+            Eye::Right => "the red ball brighter, closer to what the left eye sees",
+        };
+        section.figures.push(save(
+            &desaturated[k],
+            dir,
+            page_root,
+            &format!("filtered-{name}-desat50"),
+            args.exposure,
+            format!(
+                "The same for the {name} eye after desaturating both frames by 0.5 before \
+                 mixing: {back}."
+            ),
+        )?);
+        section.figures.push(save(
+            &leaky[k],
+            dir,
+            page_root,
+            &format!("crosstalk-{name}-leak{pct}"),
+            args.exposure,
+            format!(
+                "What the {name} eye sees through filters leaking {pct} % of the other colours{at}: \
+                 the faint doubled edges are ghosting, the other eye's frame showing through.",
+            ),
+        )?);
+    }
+    Ok(())
+}
+
+/// The stereo separations of the sweep: almost flat, a person's eyes, a giant's.
+const SWEEP: [f32; 3] = [0.02, 0.065, 0.3];
+
+/// Dubois anaglyphs of the scene at the separations of [`SWEEP`], all with
+/// the same convergence distance, at half the eyes' size and half their
+/// samples (what the sweep shows is depth, not detail).
+#[allow(clippy::too_many_arguments)]
+fn separation_sweep(
+    args: &StereoArgs,
+    scene: &raytracer::scene::Scene,
+    integrator: &dyn raytracer::integrator::Integrator,
+    options: &RenderOptions,
+    dir: &Path,
+    page_root: &Path,
+    section: &mut Section,
+) -> Result<()> {
+    let mut small = scene.clone();
+    let (w, h) = (
+        (scene.camera.width / 2).max(1),
+        (scene.camera.height / 2).max(1),
+    );
+    small.set_resolution(w, h);
+    let spp = (options.spp / 2).max(1);
+    let start = Instant::now();
+    for separation in SWEEP {
+        let rig = StereoRig {
+            separation,
+            convergence: args.convergence,
+            toe_in: args.toe_in,
+        };
+        rig.validate()?;
+        let mut eye_scene = small.clone();
+        let mut eyes = Vec::new();
+        for (camera, eye) in rig.eyes(&small.camera).into_iter().zip(Eye::BOTH) {
+            eye_scene.camera = camera;
+            let opts = RenderOptions {
+                spp,
+                progress: false,
+                label: format!("{} {} eye, separation {separation}", scene.name, eye.name()),
+                ..options.clone()
+            };
+            eyes.push(raytracer::render::render(&eye_scene, integrator, &opts).film.image());
+        }
+        if raytracer::render::interrupted() {
+            bail!("interrupted by Ctrl-C while rendering the separation sweep");
+        }
+        let look = if separation < 0.05 {
+            "almost flat"
+        } else if separation < 0.1 {
+            "a person's eyes, in metres"
+        } else {
+            "a giant's eyes: exaggerated depth, the scene looks like a model"
+        };
+        section.figures.push(save(
+            &Anaglyph::Dubois.compose(&eyes[0], &eyes[1], args.desaturate),
+            dir,
+            page_root,
+            &format!("separation-{separation:.3}"),
+            args.exposure,
+            format!(
+                "stereoSeparation {separation}: {look}. Dubois anaglyph, zero parallax at the \
+                 same distance for every separation ({w}×{h}, {spp} spp per eye)."
+            ),
+        )?);
+    }
+    println!(
+        "  separation sweep: {} pairs of {w}×{h} at {spp} spp in {:.1} s",
+        SWEEP.len(),
+        start.elapsed().as_secs_f64()
+    );
+    Ok(())
 }
 
 /// Renders the light field and writes its contact sheet, refocused images
@@ -502,11 +648,16 @@ fn section_text(args: &StereoArgs, convergence: f32) -> String {
          look smaller and deeper, too large looks wrong, too small looks flat: tune it for each \
          scene. Both eyes use the same random numbers, so their noise matches and does not \
          shimmer. The anaglyphs are mixed in linear RGB, before sRGB encoding, because filters \
-         and screens act on light, which adds linearly. Look at the near red ball: in the colour \
-         red–cyan anaglyph the right (cyan) eye hardly sees it; half-colour, grey and \
-         --desaturate fix that at the cost of colour. Dubois' matrices keep the most colour. \
-         The crosstalk images show ghosting from imperfect filters. The light field is a grid of \
-         pinhole views: averaging them shifted for one depth refocuses the picture after \
+         and screens act on light, which adds linearly. Look at the near red ball: it has little \
+         green or blue, so through the cyan filter the right eye sees it dark and the left eye \
+         bright (the filtered views show what each eye gets, as brightness): the eyes see \
+         different pictures and struggle to fuse them. \
+         Desaturating both frames a little before mixing (here by 0.5) brings it back at the cost \
+         of colour; half-colour and grey anaglyphs do the same, and Dubois' matrices keep the \
+         most colour. Filters that leak let part of the other frame through: the doubled edges of \
+         ghosting. The separation sweep shows stereoSeparation 0.02, 0.065 and 0.3 with the same \
+         convergence distance: almost flat, a person's eyes, a giant's. The light field is a grid \
+         of pinhole views: averaging them shifted for one depth refocuses the picture after \
          rendering, and any two views of a row form a stereo pair.",
         sep = args.separation
     )

@@ -23,12 +23,22 @@ fn render(tour: &Tour) -> Result<Section> {
     let mut s = tour.chapter(
         "03-brdf",
         "3 · BRDFs",
-        "A BRDF f_r(ω_i → ω_o) says how much of the light arriving from ω_i leaves towards ω_o. The plots \
-         show lobes in the plane of incidence, the directional albedo ∫ f_r cos θ dω (energy conservation \
-         demands ≤ 1) of normalized and unnormalized Phong, and reciprocity. The render shows Lambert, \
-         normalized Phong with n = 1, 10, 100 and 1000, a perfect mirror and glass, path traced: as n \
-         grows the highlight narrows and brightens, and the normalization (n+2)/2π keeps the reflected \
-         energy the same.",
+        "A BRDF f_r(x, ω_i, ω_o) says how much of the light arriving at x from direction ω_i is \
+         reflected towards ω_o. Both directions point away from x: ω_o towards the viewer, ω_i \
+         towards where the light comes from (the lecture's ω_i points the other way, into the \
+         surface, hence its factor (−ω_i·n) = cos θ_i). The lecture calls f_r \"how likely\" light \
+         from ω_i is reflected towards ω_o: a good intuition, but exactly it is a density over \
+         directions, in sr⁻¹, the reflected radiance per unit of light arriving from a small cone \
+         dω_i, and it can exceed 1 (Phong with n = 100 reaches 11.09 in the reciprocity table \
+         below, and (n+2)/2π ≈ 16.2 at its peak). What may not exceed 1 is its integral, the \
+         directional albedo ∫ f_r cos θ dω: that is energy conservation. The plots show lobes in \
+         the plane of incidence, the directional albedo of normalized and unnormalized Phong, and \
+         reciprocity. The normalization S(n) = (n+2)/2π makes the albedo exactly 1 at normal \
+         incidence only: at grazing angles part of the lobe falls below the surface and the albedo \
+         drops below 1. The albedo table is a Monte Carlo estimate, so it prints each value's \
+         standard error beside it and judges it against 1 with that error. The render shows \
+         Lambert, normalized Phong with n = 1, 10, 100 and 1000, a perfect mirror and glass, path \
+         traced: as n grows the highlight narrows and brightens.",
     )?;
     plots_and_tables(&mut s, tour)?;
     let (scene, options) = tour.scene("brdf-gallery", 32)?;
@@ -39,7 +49,8 @@ fn render(tour: &Tour) -> Result<Section> {
         &pt,
         &options,
         "brdf-gallery",
-        "The BRDF gallery, path traced.",
+        "The BRDF gallery, path traced: Lambert, normalized Phong with n = 1, 10, 100, 1000, a \
+         mirror and glass.",
     )?;
     Ok(s.section)
 }
@@ -64,17 +75,61 @@ fn dir(theta: f64) -> Vec3A {
 }
 
 /// Directional albedo `∫ f_r cos θ_i dω_i` for light leaving towards `wo`,
-/// estimated with the BRDF's own sampling: the mean of `f cos / pdf`.
-fn directional_albedo(brdf: &Brdf, wo: Vec3A, samples: u32) -> f64 {
-    let mut sum = 0.0f64;
+/// estimated with the BRDF's own sampling: the mean of `f cos / pdf` over
+/// `samples` directions, and the standard error of that mean.
+fn directional_albedo(brdf: &Brdf, wo: Vec3A, samples: u32) -> (f64, f64) {
+    let (mut sum, mut squares) = (0.0f64, 0.0f64);
     for i in 0..samples {
         let mut sampler = Sampler::new(3, i as u64, 0);
         let (u_lobe, u) = (sampler.next_1d(), sampler.next_2d());
         if let Some(bs) = brdf.sample(wo, Vec2::ZERO, u_lobe, u, TransportMode::Radiance) {
-            sum += (bs.f.x * bs.wi.z.abs() / bs.pdf_w) as f64;
+            let x = (bs.f.x * bs.wi.z.abs() / bs.pdf_w) as f64;
+            sum += x;
+            squares += x * x;
         }
     }
-    sum / samples as f64
+    let n = samples as f64;
+    let mean = sum / n;
+    let variance = ((squares / n - mean * mean) * n / (n - 1.0).max(1.0)).max(0.0);
+    (mean, (variance / n).sqrt())
+}
+
+/// How many standard errors an albedo may lie above 1 before it counts as
+/// creating energy: a one-sided 4σ test, false alarm about 3·10⁻⁵ per row.
+const SIGMAS: f64 = 4.0;
+
+/// What an estimated albedo `a ± se` says about energy conservation.
+fn verdict(a: f64, se: f64) -> String {
+    if se == 0.0 {
+        return if (a - 1.0).abs() < 1e-6 {
+            "exactly 1 in every sample (zero variance): conserves energy, none lost".into()
+        } else if a < 1.0 {
+            format!("{a:.4} in every sample: conserves energy")
+        } else {
+            format!("{a:.4} in every sample: creates energy")
+        };
+    }
+    let z = (a - 1.0) / se;
+    if z > SIGMAS {
+        format!("above 1 by {z:.0} standard errors: creates energy")
+    } else if z >= -SIGMAS {
+        format!("1 within its noise (z = {z:+.1}): conserves energy, none lost")
+    } else {
+        format!(
+            "below 1 by more than {SIGMAS} standard errors: conserves energy, loses {:.0} %",
+            100.0 * (1.0 - a)
+        )
+    }
+}
+
+/// A positive number with two significant digits (0.0027, 0.0000068), so
+/// that a small standard error is not printed as 0.
+fn two_digits(x: f64) -> String {
+    if x <= 0.0 {
+        return "0".into();
+    }
+    let decimals = (1 - x.log10().floor() as i32).max(0) as usize;
+    format!("{x:.decimals$}")
 }
 
 /// The plots and tables: lobes, directional albedo and reciprocity.
@@ -133,31 +188,47 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
         series: Vec::new(),
     };
     let mut table = Table::new(
-        "Directional albedo at normal incidence (≤ 1 conserves energy)",
+        &format!(
+            "Directional albedo at normal incidence, estimated with {samples} BRDF samples each: \
+             ≤ 1 conserves energy, judged with the standard error (above 1 by more than \
+             {SIGMAS} standard errors creates energy)"
+        ),
         &[
             "BRDF",
-            "normalized: ρ (n+2)/2π cos^n α",
-            "unnormalized: ρ cos^n α",
+            "albedo (estimate)",
+            "standard error",
+            "exact",
+            "verdict",
         ],
     );
-    table.rows.push(vec![
+    let mut row = |label: String, (a, se): (f64, f64), exact: f64| {
+        table.rows.push(vec![
+            label,
+            format!("{a:.4}"),
+            two_digits(se),
+            format!("{exact:.4}"),
+            verdict(a, se),
+        ]);
+    };
+    row(
         "Lambert ρ/π".into(),
-        format!("{:.4}", directional_albedo(&lambert(), Vec3A::Z, samples)),
-        "—".into(),
-    ]);
+        directional_albedo(&lambert(), Vec3A::Z, samples),
+        1.0,
+    );
     for n in [1.0f32, 10.0, 100.0] {
         let brdf = phong(n);
         // Without the factor (n+2)/2π the BRDF is the normalized one times 2π/(n+2).
         let unnormalize = 2.0 * std::f64::consts::PI / (n as f64 + 2.0);
         let at = |deg: f64| directional_albedo(&brdf, dir(deg.to_radians()), samples);
-        let normal = at(0.0);
-        table.rows.push(vec![
-            format!("Phong n = {n}"),
-            format!("{normal:.4}"),
-            format!("{:.4}", normal * unnormalize),
-        ]);
+        let (a, se) = at(0.0);
+        row(format!("Phong n = {n}, S(n) = (n+2)/2π"), (a, se), 1.0);
+        row(
+            format!("Phong n = {n}, unnormalized (S = 1)"),
+            (a * unnormalize, se * unnormalize),
+            unnormalize,
+        );
         let angles: Vec<f64> = (0..=17).map(|k| k as f64 * 5.0).collect();
-        let values: Vec<f64> = angles.iter().map(|&a| at(a)).collect();
+        let values: Vec<f64> = angles.iter().map(|&a| at(a).0).collect();
         albedo.series.push(Series {
             label: format!("n={n}"),
             points: angles.iter().copied().zip(values.iter().copied()).collect(),
@@ -173,7 +244,7 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
     }
     let path = c.dir.join("albedo.svg");
     albedo.write(&path)?;
-    c.section.figures.push(Figure::plot(&tour.out, &path, "Directional albedo: normalized Phong is exactly 1 at normal incidence and less at grazing angles; unnormalized Phong with n = 1 reflects more than it receives."));
+    c.section.figures.push(Figure::plot(&tour.out, &path, "Directional albedo against the angle of ω_o: normalized Phong is 1 at normal incidence (exactly; the estimate within its standard error) and less at grazing angles, where part of the lobe falls below the surface; unnormalized Phong with n = 1 reflects more than it receives, with n = 100 far less."));
     table.write_csv(&c.dir.join("albedo.csv"))?;
     c.section.tables.push(table);
 

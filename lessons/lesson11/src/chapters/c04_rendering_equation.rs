@@ -1,27 +1,57 @@
 //! Chapter 4 · The rendering equation solved by naive recursive Monte Carlo:
-//! N rays at every hit, so a pixel sample costs 1 + N + … + N^(D−1) rays
-//! (counted and tabulated), against path tracing's one ray per bounce.
+//! N rays at every hit, so a pixel sample costs up to 1 + N + … + N^(D−1)
+//! rays (counted and tabulated), the ways to stop the recursion (a cut-off
+//! on the throughput, biased; Russian roulette, unbiased), many rays at the
+//! top and few below, and path tracing's one ray per bounce.
 
-use anyhow::Result;
+use anyhow::{Context, Result};
+use raytracer::film::Image;
 use raytracer::integrator::{DirectStrategy, NaiveRecursive, PathTracer};
+use raytracer::metrics::mean;
+use raytracer::render::RenderOptions;
+use raytracer::scene::Scene;
 
-use crate::page::{Section, Table};
-use crate::tour::{Chapter, Quality, Tour};
+use crate::page::{Figure, Section, Table, seconds_number};
+use crate::render_files::render_to_files;
+use crate::tour::{Chapter, ChapterOutput, Quality, Tour};
 
 pub const CHAPTER: Chapter = Chapter::new(
     "rendering-equation",
-    "4 · The rendering equation: naive recursive Monte Carlo and its N^D rays per pixel",
+    "4 · The rendering equation: naive recursive Monte Carlo, its rays per pixel, and how to stop it",
     render,
 );
+
+/// The throughput below which the cut-off picture stops recursing. With
+/// N = 4 on the Cornell box, 0.01 drops 6 % of the light (the image's mean,
+/// measured), too little to see through the noise of BRDF sampling; 0.05
+/// drops 14 % at 16 rays per pixel sample.
+const CUTOFF: f32 = 0.05;
+
+/// Mitsuba's max depth: in practice unlimited, so that only the cut-off or
+/// the roulette ends the recursion.
+const UNLIMITED: u32 = 65;
 
 /// Chapter 4: the rendering equation solved by naive recursion, and its cost.
 fn render(tour: &Tour) -> Result<Section> {
     let mut s = tour.chapter(
         "04-rendering-equation",
         "4 · The rendering equation and its recursion",
-        "Naive recursive Monte Carlo shoots N rays at every hit and recurses: a pixel sample costs \
-         1 + N + N² + … rays, so the cost explodes with depth (the table counts the rays actually traced). \
-         Path tracing follows one ray per bounce and spends the same budget on more samples per pixel.",
+        "The rendering equation is recursive: the light arriving at x from ω_i is the light leaving \
+         the first point x′ that the ray from x in direction ω_i hits, towards x, L_i(x, ω_i) = \
+         L_o(x′, −ω_i), itself given by the same equation. Naive recursive Monte Carlo solves it as \
+         written: at every hit it shoots N random rays, finds by recursion what each one brings, \
+         and averages f_r L_i cos θ_i / p over them. Depth D counts the rays (segments) of a path \
+         from the camera, as Mitsuba's max depth does: D = 1 sees only the lights, D = 2 is direct \
+         light. One pixel sample then traces at most 1 + N + … + N^(D−1) = (N^D − 1)/(N − 1) rays; \
+         the table counts the rays actually traced, fewer because some leave through the open \
+         front of the box. The recursion may also stop once the throughput β, the product of the \
+         factors f_r cos θ_i / (N p) from the camera on, is almost 0 — the lecture's idea, and \
+         biased: the light it drops is small, not zero, so the picture comes out darker — or by \
+         Russian roulette (a preview of Lecture 12), which stops at random and divides what \
+         survives by its chance, and stays unbiased; it ends a path, not a tree that keeps \
+         splitting, so its picture splits only at the first hit. Many rays at the top and few below (16, 4, \
+         2, 1) tames the tree, but not enough. Path tracing follows one ray per bounce and spends \
+         the same rays on many samples per pixel.",
     )?;
     let (mut scene, mut options) = tour.scene("cornell", 1)?;
     if tour.quality != Quality::Tiny {
@@ -29,60 +59,269 @@ fn render(tour: &Tour) -> Result<Section> {
     }
     options.progress = false;
     let mut table = Table::new(
-        "Naive recursion on the Cornell box, 1 sample per pixel",
+        "Naive recursion on the Cornell box: rays per pixel sample, counted",
         &[
             "N (branching)",
             "max depth D",
-            "rays per pixel (measured)",
-            "rays per pixel bound Σ N^d",
+            "rays per pixel sample (measured)",
+            "rays per pixel sample at most",
             "seconds",
+            "ended by",
         ],
     );
-    let pixels = (scene.camera.width * scene.camera.height) as f64;
+    // The ladder of N and D at 1 spp; N = 8, D = 4 is also the chapter's picture.
+    let mut ladder = options.clone();
+    ladder.spp = 1;
     for n in [2u32, 4, 8] {
         for d in [2u32, 3, 4] {
             let naive = NaiveRecursive::new(vec![n], Some(d));
-            let result = raytracer::render::render(&scene, &naive, &options);
-            table.rows.push(vec![
-                n.to_string(),
-                d.to_string(),
-                format!("{:.1}", naive.rays_traced() as f64 / pixels),
-                naive.rays_per_sample_bound().unwrap_or(0).to_string(),
-                format!("{:.3}", result.stats.elapsed.as_secs_f64()),
-            ]);
+            let rays = if (n, d) == (8, 4) {
+                let (rays, _) = picture(
+                    tour,
+                    &mut s,
+                    &scene,
+                    &naive,
+                    &options,
+                    "naive-n8-d4",
+                    "Naive recursion, N = 8, D = 4",
+                )?;
+                rays
+            } else {
+                measure(&scene, &naive, &ladder)
+            };
+            table.rows.push(row(&naive, rays, "max depth", None));
+            let r = table.rows.last().expect("a row");
+            println!(
+                "  naive N={n} D={d}: {} rays per pixel sample, {} s",
+                r[2], r[4]
+            );
         }
     }
-    for row in &table.rows {
-        println!(
-            "  naive N={} D={}: {} rays per pixel, {} s",
-            row[0], row[1], row[2], row[4]
-        );
+
+    // Stopping the recursion: the same N, and a depth limit that neither
+    // reaches. Without light sampling both are noisy, so they get a smaller
+    // image and many samples; roulette, with fewer rays per pixel sample,
+    // twice the samples.
+    let mut small = scene.clone();
+    if tour.quality != Quality::Tiny {
+        small.set_resolution(64, 64);
     }
-    table.write_csv(&s.dir.join("naive-rays.csv"))?;
-    s.section.tables.push(table);
-    let naive = NaiveRecursive::new(vec![8], Some(4));
-    tour.picture(
+    let (cut_spp, roulette_spp) = match tour.quality {
+        Quality::Tiny => (options.spp, options.spp),
+        Quality::Quick => (128, 256),
+        Quality::Full => (1024, 2048),
+    };
+    let spp = |n: u32| RenderOptions {
+        spp: tour.overrides.spp.unwrap_or(n),
+        ..options.clone()
+    };
+    // Roulette first, so that the cut-off's caption can compare their means;
+    // on the page the cut-off comes first, as on the slide.
+    // Roulette keeps a ray with a chance near the albedo, so with N = 4 at
+    // every hit each ray would have about 4 × 0.6 > 1 children on average and
+    // the tree would grow to the depth limit: it splits at the first hit only.
+    let roulette = NaiveRecursive::try_new(vec![4, 1], Some(UNLIMITED), Some(1), None)
+        .expect("a bounded recursion with a valid branching factor");
+    let (roulette_rays, roulette_mean) = picture(
+        tour,
+        &mut s,
+        &small,
+        &roulette,
+        &spp(roulette_spp),
+        "naive-roulette",
+        "Naive recursion, N = 4 rays at the first hit and one at each later hit, ended by \
+         Russian roulette (a preview of Lecture 12), unbiased. With 4 rays at every hit the \
+         roulette could not end the tree: it keeps a ray with a chance near the albedo, so each \
+         ray would have more than one child on average",
+    )?;
+    let cutoff = NaiveRecursive::try_new(vec![4], Some(UNLIMITED), None, Some(CUTOFF))
+        .expect("a bounded recursion with a valid branching factor and cutoff");
+    // Its caption is completed below, once its mean is known.
+    let cut_spp_used = spp(cut_spp).spp;
+    let (rays, cut_mean) = picture(
+        tour,
+        &mut s,
+        &small,
+        &cutoff,
+        &spp(cut_spp),
+        "naive-cutoff",
+        &format!("Naive recursion, N = 4, stopped once the throughput β < {CUTOFF}, biased"),
+    )?;
+    // Darker by more than 4 standard errors of the difference (a false claim
+    // has probability below 4·10⁻⁵), or the caption says the samples are too few.
+    let (cut, roulette_b) = (&cut_mean, &roulette_mean);
+    let gap = roulette_b.mean - cut.mean;
+    let se = cut.se.hypot(roulette_b.se);
+    let lower = 100.0 * gap / roulette_b.mean;
+    let verdict = if gap > 4.0 * se {
+        format!(
+            ", biased: {lower:.0} % darker than the roulette picture (mean {:.4}), the light of \
+             the paths it cut, small but not zero.",
+            roulette_b.mean
+        )
+    } else {
+        format!(
+            ", biased, though at {} spp the difference from the roulette picture (mean {:.4}) is \
+             still within the noise.",
+            cut_spp_used, roulette_b.mean
+        )
+    };
+    let figures = &mut s.section.figures;
+    let n = figures.len();
+    figures[n - 1].caption = figures[n - 1].caption.replacen(", biased.", &verdict, 1);
+    figures.swap(n - 2, n - 1);
+    table.rows.push(row(
+        &cutoff,
+        rays,
+        &format!("β < {CUTOFF} (biased)"),
+        None,
+    ));
+    table.rows.push(row(&roulette, roulette_rays, "Russian roulette", Some("4 1")));
+    println!(
+        "  mean of the image: cut-off {:.4} ± {:.4}, roulette {:.4} ± {:.4} ({lower:.0} % lower)",
+        cut.mean, cut.se, roulette_b.mean, roulette_b.se
+    );
+
+    let top_heavy = NaiveRecursive::new(vec![16, 4, 2, 1], Some(5));
+    let (rays, _) = picture(
+        tour,
         &mut s,
         &scene,
-        &naive,
+        &top_heavy,
         &options,
-        "naive-n8-d4",
-        "Naive recursion, N = 8, D = 4, 1 spp.",
+        "naive-16-4-2-1",
+        "Naive recursion with 16, 4, 2, 1 rays by level (many rays at the top, few below), D = 5",
     )?;
+    table.rows.push(row(&top_heavy, rays, "max depth", Some("16 4 2 1")));
+
+    table.write_csv(&s.dir.join("naive-rays.csv"))?;
+    s.section.tables.push(table);
+
     let pt = PathTracer {
         max_depth: Some(4),
         rr_depth: 5,
         strategy: DirectStrategy::BrdfOnly,
     };
     let mut equal = options.clone();
-    equal.spp = if tour.quality == Quality::Tiny { 2 } else { 64 };
+    equal.spp = tour.overrides.spp.unwrap_or(64);
     tour.picture(
         &mut s,
         &scene,
         &pt,
         &equal,
         "path-d4",
-        "Path tracing (BRDF sampling only, as naive recursion), D = 4.",
+        &format!(
+            "Path tracing, BRDF sampling only (as naive recursion), D = 4: {} paths of at most 4 \
+             rays per pixel.",
+            equal.spp
+        ),
     )?;
     Ok(s.section)
+}
+
+/// What a naive render measured: rays per pixel sample and seconds.
+struct Rays {
+    per_sample: f64,
+    seconds: f64,
+}
+
+/// Renders `naive` without a picture: its rays per pixel sample and seconds.
+fn measure(scene: &Scene, naive: &NaiveRecursive, options: &RenderOptions) -> Rays {
+    let result = raytracer::render::render(scene, naive, options);
+    let samples = scene.camera.width as f64 * scene.camera.height as f64 * options.spp as f64;
+    Rays {
+        per_sample: naive.rays_traced() as f64 / samples,
+        seconds: result.stats.elapsed.as_secs_f64(),
+    }
+}
+
+/// The mean of an image over pixels and channels, and its standard error.
+struct Brightness {
+    mean: f64,
+    se: f64,
+}
+
+/// Renders `naive` into a picture whose caption states the rays it traced
+/// per pixel sample, as its row of `naive-rays.csv` does, and the mean of
+/// the image (its brightness, with far less noise than any pixel): returns
+/// both, the mean with its standard error.
+fn picture(
+    tour: &Tour,
+    s: &mut ChapterOutput,
+    scene: &Scene,
+    naive: &NaiveRecursive,
+    options: &RenderOptions,
+    stem: &str,
+    caption: &str,
+) -> Result<(Rays, Brightness)> {
+    let before = naive.rays_traced();
+    let picture = render_to_files(scene, naive, options, &s.dir, stem, 0.0)?;
+    let traced = naive.rays_traced() - before;
+    let per_sample = traced as f64
+        / (scene.camera.width as f64 * scene.camera.height as f64 * options.spp as f64);
+    let rays = Rays {
+        per_sample,
+        seconds: picture.seconds.unwrap_or_default(),
+    };
+    let read = |path: &std::path::Path| {
+        Image::read_exr(path).with_context(|| format!("cannot read back {}", path.display()))
+    };
+    let image = read(&picture.exr)?;
+    let variance = read(&picture.exr.with_file_name(format!("{stem}-variance.exr")))?;
+    let mean = mean(&image).element_sum() as f64 / 3.0;
+    // The variance of a pixel's channel average is at most (Σ_c σ_c)²/9,
+    // whatever the correlation of the channels; pixels are independent.
+    let pixels = variance.pixels.len().max(1) as f64;
+    let var_sum: f64 = variance
+        .pixels
+        .iter()
+        .map(|v| {
+            let s = v.x.max(0.0).sqrt() + v.y.max(0.0).sqrt() + v.z.max(0.0).sqrt();
+            (s * s) as f64 / 9.0
+        })
+        .sum();
+    let brightness = Brightness {
+        mean,
+        se: var_sum.sqrt() / pixels,
+    };
+    let bound = match bound(naive) {
+        Some(b) => format!(" (at most {b})"),
+        None => String::new(),
+    };
+    s.section.figures.push(Figure::new(
+        &tour.out,
+        &picture,
+        &format!(
+            "{caption}. Measured: {} rays per pixel sample{bound}; mean of the image {mean:.4}.",
+            rays_text(per_sample)
+        ),
+    ));
+    Ok((rays, brightness))
+}
+
+/// The most rays one pixel sample can trace, if that is a number worth printing.
+fn bound(naive: &NaiveRecursive) -> Option<u64> {
+    naive
+        .rays_per_sample_bound()
+        .filter(|&b| b < 1_000_000_000_000)
+}
+
+/// A measured ray count as captions and the CSV print it.
+fn rays_text(per_sample: f64) -> String {
+    format!("{per_sample:.1}")
+}
+
+/// The row of `naive-rays.csv` for a render of `naive`.
+fn row(naive: &NaiveRecursive, rays: Rays, ended_by: &str, branching: Option<&str>) -> Vec<String> {
+    let n = branching.map_or_else(|| naive.branching()[0].to_string(), String::from);
+    vec![
+        n,
+        naive
+            .max_depth()
+            .map_or_else(|| "unlimited".into(), |d| d.to_string()),
+        rays_text(rays.per_sample),
+        bound(naive).map_or_else(|| "—".into(), |b| b.to_string()),
+        seconds_number(rays.seconds),
+        ended_by.into(),
+    ]
 }

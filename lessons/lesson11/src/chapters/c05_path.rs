@@ -1,41 +1,61 @@
 //! Chapter 5 · Path tracing: one continuation per bounce, a ladder of samples
 //! per pixel, and the three ways of finding the light (BRDF sampling, light
-//! sampling, both under multiple importance sampling).
+//! sampling, both under multiple importance sampling), on the Cornell box and
+//! on Veach's scene of glossy plates and lights of rising size.
 
 use anyhow::Result;
+use raytracer::brdf::Brdf;
 use raytracer::integrator::{DirectStrategy, PathTracer};
+use raytracer::light::{AreaLight, AreaShape, Light};
+use raytracer::scene::Scene;
 
 use crate::page::Section;
 use crate::tour::{Chapter, Tour};
 
 pub const CHAPTER: Chapter = Chapter::new(
     "path",
-    "5 · Path tracing: a samples-per-pixel ladder; BRDF sampling, light sampling and MIS",
+    "5 · Path tracing: a samples-per-pixel ladder; BRDF sampling, light sampling and MIS, on Veach's scene too",
     render,
 );
+
+/// The samples per pixel of the ladder, at every quality (the slides name
+/// the pictures by them).
+const LADDER: [u32; 4] = [1, 4, 16, 64];
 
 /// Chapter 5: path tracing, samples per pixel, and light sampling with MIS.
 fn render(tour: &Tour) -> Result<Section> {
     let mut s = tour.chapter(
         "05-path",
         "5 · Path tracing",
-        "One continuation per bounce and many samples per pixel: the noise falls as 1/√spp (each row of \
-         pictures quadruples the samples and halves the noise). Below, the three ways of finding light at \
-         equal samples: BRDF sampling only (lights are found by chance), light sampling only, and both \
-         combined by multiple importance sampling.",
+        "Path tracing, which Kajiya proposed in the same paper as the rendering equation: one random \
+         continuation per bounce instead of N, and many samples per pixel instead, which also give \
+         anti-aliasing for free. The throughput is updated at every bounce as in the recursion with \
+         N = 1, β ← β f_r cos θ_i / p(ω_i), and Russian roulette (a preview of Lecture 12) ends the \
+         paths at no fixed depth. The noise falls as 1/√spp: each picture of the ladder has four \
+         times the samples of the one before and half its noise. Then the ways of finding the light \
+         at equal samples, a preview of Lecture 12: BRDF sampling alone must hit a lamp by chance; \
+         light sampling (next event estimation) joins every vertex to a point on a light by a shadow \
+         ray; multiple importance sampling (MIS) uses both and weights each sample by the power \
+         heuristic. On the all-diffuse Cornell box the three pictures differ little. Veach's scene \
+         shows why MIS matters: light sampling wins with small lights and rough plates (bottom left), \
+         BRDF sampling with large lights and shiny plates (top right), and MIS is good at both.",
     )?;
     let pt = PathTracer::default();
-    for spp in [1u32, 4, 16, 64] {
-        let (scene, mut options) = tour.scene("cornell", spp)?;
-        options.spp = options.spp.min(spp.max(1) * 8);
-        let stem = format!("cornell-path-{spp:03}spp");
+    let mut done = Vec::new();
+    for nominal in LADDER {
+        let (scene, mut options) = tour.scene("cornell", nominal)?;
+        options.spp = tour.overrides.spp.unwrap_or(nominal);
+        if done.contains(&options.spp) {
+            continue;
+        }
+        done.push(options.spp);
         tour.picture(
             &mut s,
             &scene,
             &pt,
             &options,
-            &stem,
-            &format!("Path tracing, {spp} spp."),
+            &format!("cornell-path-{:03}spp", options.spp),
+            "Path tracing (light and BRDF sampling under MIS, unlimited depth, roulette from depth 5).",
         )?;
     }
     let (scene, options) = tour.scene("cornell", 16)?;
@@ -43,17 +63,18 @@ fn render(tour: &Tour) -> Result<Section> {
         (
             DirectStrategy::BrdfOnly,
             "cornell-brdf-only",
-            "BRDF sampling only.",
+            "Cornell box, BRDF sampling only: the lamp is found only by paths that happen to hit it.",
         ),
         (
             DirectStrategy::LightOnly,
             "cornell-light-only",
-            "Light sampling only (no MIS).",
+            "Cornell box, light sampling only (next event estimation, no MIS).",
         ),
         (
             DirectStrategy::Mis,
             "cornell-mis",
-            "Light and BRDF sampling under MIS (power heuristic).",
+            "Cornell box, light and BRDF sampling under MIS (power heuristic): on diffuse walls \
+             hardly different from light sampling alone.",
         ),
     ] {
         let pt = PathTracer {
@@ -62,5 +83,70 @@ fn render(tour: &Tour) -> Result<Section> {
         };
         tour.picture(&mut s, &scene, &pt, &options, stem, caption)?;
     }
+    let (scene, options) = tour.scene("veach-mis", 16)?;
+    for (strategy, stem, caption) in [
+        (
+            DirectStrategy::BrdfOnly,
+            "veach-brdf",
+            "Veach's scene, BRDF sampling only: clean where the light is large and the plate \
+             shiny (top right), noisy where a small light meets a rough plate (bottom left), whose \
+             directions rarely hit it.",
+        ),
+        (
+            DirectStrategy::LightOnly,
+            "veach-light",
+            "Veach's scene, light sampling only: clean where the light is small and the plate rough \
+             (bottom left), noisy where a large light meets a shiny plate (top right), where most \
+             points on the light fall outside the narrow lobe.",
+        ),
+        (
+            DirectStrategy::Mis,
+            "veach-mis",
+            "Veach's scene, both under MIS (power heuristic): each sample weighted by how likely \
+             the other strategy was to make it, good everywhere.",
+        ),
+    ] {
+        let pt = PathTracer {
+            strategy,
+            max_depth: scene.settings.max_depth,
+            rr_depth: scene.settings.rr_depth,
+        };
+        let caption = format!("{caption} {}", plates_and_lights(&scene));
+        tour.picture(&mut s, &scene, &pt, &options, stem, &caption)?;
+    }
     Ok(s.section)
+}
+
+/// What Veach's scene is made of, read from the scene: the plates' Phong
+/// exponents, the lights' radii, and the depth.
+fn plates_and_lights(scene: &Scene) -> String {
+    let exponents: Vec<String> = scene
+        .objects
+        .iter()
+        .filter_map(|o| match &scene.brdfs[o.brdf as usize] {
+            Brdf::Phong(p) if o.light.is_none() => Some(p.exponent.to_string()),
+            _ => None,
+        })
+        .collect();
+    let radii: Vec<String> = scene
+        .lights
+        .iter()
+        .filter_map(|l| match l {
+            Light::Area(AreaLight {
+                shape: AreaShape::Sphere(s),
+                ..
+            }) => Some(format!("{}", s.radius)),
+            _ => None,
+        })
+        .collect();
+    format!(
+        "Plates (shiniest at the top) Phong n = {}; lights of radius {} (left to right), equal \
+         power; max depth {}; the same samples per pixel for all three.",
+        exponents.join(", "),
+        radii.join(", "),
+        scene
+            .settings
+            .max_depth
+            .map_or_else(|| "unlimited".into(), |d| d.to_string())
+    )
 }

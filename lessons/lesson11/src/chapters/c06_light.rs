@@ -18,11 +18,16 @@ fn render(tour: &Tour) -> Result<Section> {
     let mut c = tour.chapter(
         "06-light",
         "6 · Light tracing",
-        "Paths start on the lights and every vertex is connected to the camera lens, weighted by the \
-         camera's importance W_e, and splatted wherever it lands on the film. Under a point light, the \
-         caustic a glass ball focuses onto the floor is found by light tracing and by bidirectional \
-         tracing; a path tracer cannot find it (its paths would have to hit the point light through \
-         the glass), which is the lecture's remark about point lights and non-glossy refraction.",
+        "Light tracing starts its paths on the lights: a point and a direction on a lamp, then \
+         bounces as in path tracing. Every vertex is connected to the camera lens, weighted by the \
+         camera's importance W_e (which plays the role L_e plays for the lights), and splatted \
+         wherever it lands on the film. Under a point light, the caustic a glass ball focuses onto \
+         the floor is found by light tracing and by bidirectional path tracing; a path tracer \
+         cannot find it, since its paths would have to hit the point light after a refraction, \
+         with probability 0 — the lecture's remark that path tracing cannot produce caustics \
+         from non-glossy refraction and a point light. Light tracing has a blind spot of its \
+         own: the glass ball is black in its picture, because the camera sees the ball only \
+         through specular chains, and a pinhole camera cannot be reached along one.",
     )?;
     let (scene, options) = tour.scene("cornell", 64)?;
     let lt = LightTracer::default();
@@ -32,7 +37,8 @@ fn render(tour: &Tour) -> Result<Section> {
         &lt,
         &options,
         "cornell-light",
-        "Cornell box, light tracing.",
+        "Cornell box, light tracing (unlimited depth, roulette from depth 5): the same picture \
+         as path tracing, its noise spread differently, since each path lands where it may.",
     )?;
     let (scene, options) = tour.scene("caustic", 32)?;
     let max_depth = Some(8);
@@ -54,7 +60,8 @@ fn render(tour: &Tour) -> Result<Section> {
         &pt,
         &options,
         "caustic-path",
-        "Path tracing: no caustic under the ball.",
+        "Path tracing, max depth 8: no caustic under the ball, since its paths would have to \
+         hit the point light through the glass.",
     )?;
     tour.picture(
         &mut c,
@@ -62,7 +69,11 @@ fn render(tour: &Tour) -> Result<Section> {
         &lt,
         &options,
         "caustic-light",
-        "Light tracing: the caustic appears.",
+        "Light tracing, max depth 8: the caustic appears, but the glass ball is black. The \
+         camera sees the ball only through specular chains (refraction and mirror reflection), \
+         and a pinhole camera cannot be reached along one: a light path leaving the glass hits \
+         the pinhole with probability 0, and a connection from a point on the glass to the lens \
+         has f_r = 0 in every given direction.",
     )?;
     tour.picture(
         &mut c,
@@ -70,7 +81,8 @@ fn render(tour: &Tour) -> Result<Section> {
         &bd,
         &options,
         "caustic-bdpt",
-        "Bidirectional path tracing: caustic and the rest.",
+        "Bidirectional path tracing, max depth 8: the caustic comes from the light subpaths, \
+         the glass ball from the camera subpaths.",
     )?;
     Ok(c.section)
 }

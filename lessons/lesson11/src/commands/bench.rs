@@ -98,8 +98,9 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     door(16, &threads)?;
     if args.equal_time > 0.0 {
         println!(
-            "\nEqual time ({} s each, max depth 5, 128 pixels wide): RMSE against a bidirectional reference \
-             of 512 spp",
+            "\nEqual time ({} s each, 128 pixels wide): RMSE against an independent reference \
+             (Mitsuba's Cornell box at max depth 65, the stored door at max depth 5, else our \
+             bidirectional path tracer with another seed at 512 spp and max depth 5)",
             args.equal_time
         );
         for name in ["cornell", "door", "caustic"] {
@@ -111,12 +112,19 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 progress: false,
                 ..RenderOptions::default()
             };
+            let (reference, max_depth) =
+                crate::reference::independent(Some(name), &scene, &base, 5, 512);
+            println!(
+                "  {name}: max depth {max_depth}, reference {} (noise floor {:.5})",
+                reference.source,
+                reference.noise_floor()
+            );
             crate::equal_time::equal_time(
                 &scene,
                 &base,
                 args.equal_time,
-                512,
-                5,
+                &reference,
+                max_depth,
                 crate::equal_time::Also {
                     naive: name == "cornell",
                     metropolis: name == "door",

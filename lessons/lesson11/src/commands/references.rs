@@ -1,16 +1,25 @@
-//! `lesson11 references`: the instructor regenerates the grader's references.
+//! `lesson11 references`: the instructor regenerates the stored references,
+//! the grader's and the lesson's own.
 
 use anyhow::{Result, anyhow};
 use clap::Args;
 use grading::compare::{COMPARISONS, REFERENCE_SPP};
 
-/// Regenerate every reference the grader compares students' images against
-/// (mean and variance EXR in tests/references/), at many samples per pixel.
-/// Tables are insta snapshots: review their changes with `cargo insta review`.
-#[derive(Args, Debug)]
-pub struct ReferencesArgs {}
+use crate::reference::door_settings;
 
-pub fn run(_: &ReferencesArgs) -> Result<()> {
+/// Regenerate every stored reference at many samples per pixel (mean and variance EXR):
+/// the ones the grader compares students' images against (tests/references/), and the
+/// door scene's for the equal-time comparison of `lesson11 compare`
+/// (lessons/lesson11/references/; a few minutes). Tables are insta snapshots: review their
+/// changes with `cargo insta review`.
+#[derive(Args, Debug)]
+pub struct ReferencesArgs {
+    /// Only the grader's references (seconds), not the door scene's (minutes).
+    #[arg(long)]
+    pub grader_only: bool,
+}
+
+pub fn run(args: &ReferencesArgs) -> Result<()> {
     for c in COMPARISONS {
         println!(
             "{}: {} with the renderer's own integrator, {REFERENCE_SPP} spp",
@@ -19,6 +28,21 @@ pub fn run(_: &ReferencesArgs) -> Result<()> {
         let path = grading::compare::render_reference(c, true).map_err(|e| anyhow!(e))?;
         println!("  wrote {} and its -variance.exr", path.display());
     }
-    println!("Now run `cargo test -p grading --features solutions` and commit tests/references/.");
+    if !args.grader_only {
+        let door = door_settings();
+        println!(
+            "door: bidirectional path tracing, {}×{}, max depth {}, {} spp, seed {}",
+            door.width, door.height, door.max_depth, door.spp, door.seed
+        );
+        let path = door.render_and_store()?;
+        println!(
+            "  wrote {}, its -variance.exr and its settings",
+            path.display()
+        );
+    }
+    println!(
+        "Now run `cargo test -p grading --features solutions` and `cargo test -p lesson11`, and \
+         commit tests/references/ and lessons/lesson11/references/."
+    );
     Ok(())
 }

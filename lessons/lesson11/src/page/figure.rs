@@ -3,12 +3,18 @@
 
 use std::path::{Path, PathBuf};
 
-/// What a rendered picture left on disk.
+/// What a rendered picture left on disk, and what its caption must say of it.
 pub struct Picture {
     pub png: PathBuf,
     pub exr: PathBuf,
-    pub seconds: f64,
+    /// Samples per pixel of the estimate.
     pub spp: u32,
+    /// Exposure of the PNG in stops (+1 doubles the brightness); the EXR is linear, unscaled.
+    pub exposure: f32,
+    /// Wall-clock time of the render that made exactly this picture; `None`
+    /// for pictures computed from other renders (a difference, a strategy of
+    /// a bidirectional render), whose caption says where they come from.
+    pub seconds: Option<f64>,
 }
 
 /// A picture with its caption, linked relative to the page.
@@ -17,15 +23,29 @@ pub struct Figure {
     /// The linear image to measure, if the figure is a render.
     pub exr: Option<String>,
     pub caption: String,
+    /// Samples per pixel, for a render (written into the page beside the caption).
+    pub spp: Option<u32>,
+    /// Exposure of the PNG in stops, for a render.
+    pub exposure: Option<f32>,
 }
 
 impl Figure {
-    /// A render, its caption followed by its samples per pixel and seconds.
+    /// A render: its caption followed by its samples per pixel, exposure and
+    /// time, e.g. "(64 spp, exposure 0, 1.94 s)".
     pub fn new(root: &Path, picture: &Picture, caption: &str) -> Self {
+        let mut facts = vec![
+            format!("{} spp", picture.spp),
+            exposure_text(picture.exposure),
+        ];
+        if let Some(t) = picture.seconds {
+            facts.push(seconds_text(t));
+        }
         Figure {
             src: relative(&picture.png, root),
             exr: Some(relative(&picture.exr, root)),
-            caption: format!("{caption} ({} spp, {:.1} s)", picture.spp, picture.seconds),
+            caption: format!("{caption} ({})", facts.join(", ")),
+            spp: Some(picture.spp),
+            exposure: Some(picture.exposure),
         }
     }
 
@@ -35,6 +55,8 @@ impl Figure {
             src: relative(png, root),
             exr: Some(relative(exr, root)),
             caption,
+            spp: None,
+            exposure: None,
         }
     }
 
@@ -44,7 +66,50 @@ impl Figure {
             src: relative(svg, root),
             exr: None,
             caption: caption.into(),
+            spp: None,
+            exposure: None,
         }
+    }
+}
+
+/// A time as a caption states it: never `0.0 s` for a render that took a
+/// few milliseconds ("4.2 ms", "0.31 s", "2.5 s", "41 s").
+pub fn seconds_text(t: f64) -> String {
+    if t >= 100.0 {
+        format!("{t:.0} s")
+    } else if t >= 1.0 {
+        format!("{t:.1} s")
+    } else if t >= 0.01 {
+        format!("{t:.2} s")
+    } else if t * 1e3 >= 0.1 {
+        format!("{:.1} ms", t * 1e3)
+    } else {
+        "< 0.1 ms".into()
+    }
+}
+
+/// A time for a table or CSV: a number of seconds with three significant
+/// digits (0.000412, 0.970, 12.3), never rounded to zero.
+pub fn seconds_number(t: f64) -> String {
+    if t <= 0.0 {
+        return "0".into();
+    }
+    let decimals = (2 - t.log10().floor() as i32).max(0) as usize;
+    format!("{t:.decimals$}")
+}
+
+/// The exposure as a caption states it: "exposure 0" or "exposure +4 stops (×16)".
+pub fn exposure_text(stops: f32) -> String {
+    if stops == 0.0 {
+        "exposure 0".into()
+    } else {
+        let factor = stops.exp2();
+        let factor = if factor >= 1.0 {
+            format!("×{factor}")
+        } else {
+            format!("×{factor:.3}")
+        };
+        format!("exposure {stops:+} stops ({factor})")
     }
 }
 
@@ -54,4 +119,50 @@ fn relative(path: &Path, root: &Path) -> String {
         .unwrap_or(path)
         .to_string_lossy()
         .replace('\\', "/")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn times_are_never_shown_as_zero() {
+        assert_eq!(seconds_text(41.7), "41.7 s");
+        assert_eq!(seconds_text(2.54), "2.5 s");
+        assert_eq!(seconds_text(0.314), "0.31 s");
+        assert_eq!(seconds_text(0.0042), "4.2 ms");
+        assert_eq!(seconds_text(0.00001), "< 0.1 ms");
+        assert_eq!(seconds_text(123.4), "123 s");
+        assert_eq!(seconds_number(0.000412), "0.000412");
+        assert_eq!(seconds_number(0.97), "0.970");
+        assert_eq!(seconds_number(12.34), "12.3");
+        assert_eq!(seconds_number(1234.4), "1234");
+    }
+
+    #[test]
+    fn exposure_is_stated_in_stops_and_as_a_factor() {
+        assert_eq!(exposure_text(0.0), "exposure 0");
+        assert_eq!(exposure_text(4.0), "exposure +4 stops (×16)");
+        assert_eq!(exposure_text(-1.0), "exposure -1 stops (×0.500)");
+    }
+
+    #[test]
+    fn a_render_caption_says_spp_exposure_and_time() {
+        let picture = Picture {
+            png: "/o/a/x.png".into(),
+            exr: "/o/a/x.exr".into(),
+            spp: 64,
+            exposure: 4.0,
+            seconds: Some(0.004),
+        };
+        let f = Figure::new(Path::new("/o"), &picture, "Door.");
+        assert_eq!(f.src, "a/x.png");
+        assert_eq!(f.caption, "Door. (64 spp, exposure +4 stops (×16), 4.0 ms)");
+        let derived = Picture {
+            seconds: None,
+            ..picture
+        };
+        let f = Figure::new(Path::new("/o"), &derived, "Strategy.");
+        assert_eq!(f.caption, "Strategy. (64 spp, exposure +4 stops (×16))");
+    }
 }

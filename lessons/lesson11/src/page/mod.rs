@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
 
-pub use figure::{Figure, Picture};
+pub use figure::{Figure, Picture, seconds_number, seconds_text};
 pub use table::Table;
 
 /// One chapter of the page.
@@ -74,9 +74,17 @@ impl Page {
                 let exr = f.exr.as_ref().map_or(String::new(), |e| {
                     format!(" · <a href=\"{}\">EXR</a>", escape(e))
                 });
+                // What the caption states of a render, for tests and scripts to check it by.
+                let mut data = String::new();
+                if let Some(spp) = f.spp {
+                    let _ = write!(data, " data-spp=\"{spp}\"");
+                }
+                if let Some(stops) = f.exposure {
+                    let _ = write!(data, " data-exposure=\"{stops}\"");
+                }
                 let _ = writeln!(
                     h,
-                    "<figure><a href=\"{src}\"><img src=\"{src}\" alt=\"{cap}\"></a><figcaption>{cap}{exr}</figcaption></figure>",
+                    "<figure{data}><a href=\"{src}\"><img src=\"{src}\" alt=\"{cap}\"></a><figcaption>{cap}{exr}</figcaption></figure>",
                     src = escape(&f.src),
                     cap = escape(&f.caption)
                 );

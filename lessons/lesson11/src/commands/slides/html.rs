@@ -307,6 +307,8 @@ function shown(el,r){if(el.tagName.toLowerCase()!=='img'||!el.naturalWidth)retur
 function measure(sec){var b=sec.getBoundingClientRect(),h=sec.querySelector('h1').getBoundingClientRect(),f=sec.querySelector('footer').getBoundingClientRect(),bad=[],seen=[];
  function off(r){return r.right>b.right+1||r.left<b.left-1||r.bottom>b.bottom+1||r.top<b.top-1;}
  function add(el,why){for(var k=0;k<seen.length;k++)if(seen[k].contains(el))return;seen.push(el);bad.push(describe(el)+' '+why);}
+ var figs=[].map.call(sec.querySelectorAll('.content .figures'),function(e){return e.getBoundingClientRect();});
+ function onpicture(r){for(var q=0;q<figs.length;q++){var g=figs[q];if(r.left<g.right-1&&r.right>g.left+1&&r.top<g.bottom-1&&r.bottom>g.top+1)return true;}return false;}
  if(off(h))add(sec.querySelector('h1'),'runs off the slide');
  if(off(f))add(sec.querySelector('footer'),'runs off the slide');
  var all=sec.querySelectorAll('.content *, footer *');
@@ -317,6 +319,7 @@ function measure(sec){var b=sec.getBoundingClientRect(),h=sec.querySelector('h1'
    if(r.bottom>f.top+1){add(el,'overlaps the footer ('+Math.round(r.bottom-f.top)+' px)');continue;}
    if(r.top<h.bottom-1){add(el,'overlaps the title ('+Math.round(h.bottom-r.top)+' px)');continue;}}
   if(off(r)){add(el,'runs off the slide');continue;}
+  if(!el.closest('.figures,footer')&&!el.querySelector('.figures')&&onpicture(r)){add(el,'runs into the picture');continue;}
   if(/^(p|li|td|th|figcaption|h2|blockquote|code|span)$/.test(t)&&el.scrollWidth>el.clientWidth+1&&getComputedStyle(el).display!=='inline'){add(el,'is cut off');continue;}
   if((t==='img'||t==='svg')&&el.closest('.figures')){var d=shown(el,r);
    if(d.height<0.15*innerHeight||d.width<0.1*innerWidth)add(el,'is squeezed to '+Math.round(d.width)+'\u00d7'+Math.round(d.height)+' px');}}
