@@ -84,116 +84,26 @@
 
 pub mod bootstrap;
 pub mod chain;
+mod merger;
+mod parameters;
 
 pub use bootstrap::Bootstrap;
 pub use chain::{SplatWeights, acceptance, expected_value_splat};
+pub use parameters::{Metropolis, ParameterError};
 
 use super::{INTERRUPTED, RenderOptions, RenderStats, human, on_threads, progress_bar};
 use crate::film::Film;
 use crate::integrator::{Integrator, stop};
-use crate::math::{Color, UVec2};
+use crate::math::Color;
 use crate::sampling::Sampler;
 use crate::sampling::rng::mix64;
 use crate::scene::Scene;
 use chain::{ChainRun, ChainStreams, Moves, run_chain};
 use indicatif::ProgressBar;
-use std::collections::VecDeque;
+use merger::Merger;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::Instant;
-
-/// The parameters of Metropolis light transport (the samples per pixel of
-/// [`RenderOptions::spp`] count *mutations* per pixel: the chains make
-/// `spp · W · H` steps in all).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Metropolis {
-    /// Independent chains; each makes an equal share of the steps.
-    pub chains: u32,
-    /// Paths of the bootstrap; `None`: one per pixel, `W · H`.
-    pub bootstrap: Option<u32>,
-    /// Probability of a large step (a fresh, independent path).
-    pub large_step_probability: f32,
-    /// Standard deviation of a small step, a fraction of `[0, 1)`.
-    pub mutation_size: f32,
-}
-
-impl Default for Metropolis {
-    /// 64 chains, one bootstrap path per pixel, and pbrt-v4's defaults for
-    /// the steps: large with probability 0.3, small of deviation 0.01.
-    fn default() -> Self {
-        Metropolis {
-            chains: 64,
-            bootstrap: None,
-            large_step_probability: 0.3,
-            mutation_size: 0.01,
-        }
-    }
-}
-
-impl Metropolis {
-    /// The bootstrap's number of paths for a `width × height` image.
-    pub fn bootstrap_paths(&self, width: u32, height: u32) -> u64 {
-        self.bootstrap
-            .map_or(width as u64 * height as u64, u64::from)
-    }
-
-    /// Checks the parameters for `mutations` steps in all.
-    pub fn check(&self, mutations: u64) -> Result<(), ParameterError> {
-        let wrong = |field, reason: String| Err(ParameterError { field, reason });
-        let p = self.large_step_probability;
-        if !(0.0..=1.0).contains(&p) {
-            return wrong(
-                "large_step_probability",
-                format!("must be in [0, 1] (0: small steps only, 1: independent paths), got {p}"),
-            );
-        }
-        let s = self.mutation_size;
-        if !(s > 0.0 && s <= 1.0) {
-            return wrong(
-                "mutation_size",
-                format!(
-                    "must be in (0, 1] (the deviation of a small step, a fraction of the unit interval; 0.01 is usual), got {s}"
-                ),
-            );
-        }
-        if self.chains == 0 {
-            return wrong("chains", "must be at least 1, got 0".into());
-        }
-        if self.chains as u64 > mutations {
-            return wrong(
-                "chains",
-                format!(
-                    "is {} but there are only {mutations} mutations in all (mutations per pixel × pixels), and every chain needs one: use fewer chains or more mutations per pixel",
-                    self.chains
-                ),
-            );
-        }
-        if self.bootstrap == Some(0) {
-            return wrong(
-                "bootstrap",
-                "must be at least 1 path (the bootstrap estimates the brightness b), got 0".into(),
-            );
-        }
-        Ok(())
-    }
-}
-
-/// A parameter of [`Metropolis`] out of its range.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ParameterError {
-    /// The field of [`Metropolis`], e.g. `large_step_probability`.
-    pub field: &'static str,
-    /// What it must be and what it is, e.g. `must be in [0, 1] (…), got 1.5`.
-    pub reason: String,
-}
-
-impl std::fmt::Display for ParameterError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "Metropolis `{}` {}", self.field, self.reason)
-    }
-}
-
-impl std::error::Error for ParameterError {}
 
 /// A finished (or interrupted) Metropolis render.
 #[derive(Clone, Debug)]
@@ -401,94 +311,6 @@ impl ChainJob<'_> {
     }
 }
 
-/// Merges finished chains into the film in chain order.
-struct Merger {
-    film: Film,
-    tile: u32,
-    b: f64,
-    /// The next chain to merge, and finished chains `next, next+1, …`.
-    next: u64,
-    pending: VecDeque<Option<ChainRun>>,
-    spare: Vec<ChainRun>,
-    chains: u32,
-    steps: u64,
-    accepted: u64,
-    nonfinite: u64,
-    tile_means: Vec<Vec<Color>>,
-}
-
-impl Merger {
-    fn new(width: u32, height: u32, tile: u32, b: f64) -> Self {
-        Merger {
-            film: Film::new(width, height),
-            tile,
-            b,
-            next: 0,
-            pending: VecDeque::new(),
-            spare: Vec::new(),
-            chains: 0,
-            steps: 0,
-            accepted: 0,
-            nonfinite: 0,
-            tile_means: Vec::new(),
-        }
-    }
-
-    /// Takes finished chain `c`, merges every chain now next in line, and
-    /// hands back a run to reuse.
-    fn submit(&mut self, c: u64, run: ChainRun) -> ChainRun {
-        let slot = (c - self.next) as usize;
-        if self.pending.len() <= slot {
-            self.pending.resize_with(slot + 1, || None);
-        }
-        self.pending[slot] = Some(run);
-        while let Some(Some(_)) = self.pending.front() {
-            let run = self.pending.pop_front().flatten().expect("checked above");
-            self.merge(&run);
-            self.spare.push(run);
-            self.next += 1;
-        }
-        self.spare.pop().unwrap_or_default()
-    }
-
-    /// Adds a chain's estimate `W·H · b̂ / N · Σ` as one sample of every pixel.
-    fn merge(&mut self, run: &ChainRun) {
-        self.steps += run.steps;
-        self.accepted += run.accepted;
-        self.nonfinite += run.nonfinite;
-        if run.steps == 0 {
-            return;
-        }
-        let (w, h) = (self.film.width(), self.film.height());
-        let scale = w as f64 * h as f64 * self.b / run.steps as f64;
-        let tiles_x = w.div_ceil(self.tile);
-        let tiles = tiles_x as usize * h.div_ceil(self.tile) as usize;
-        let mut sums = vec![([0.0f64; 3], 0u32); tiles];
-        for y in 0..h {
-            for x in 0..w {
-                let s = run.sums[(y * w + x) as usize];
-                let v = [s[0] * scale, s[1] * scale, s[2] * scale];
-                let value = Color::new(v[0] as f32, v[1] as f32, v[2] as f32);
-                self.film.add_sample(UVec2::new(x, y), value);
-                let t = &mut sums[((y / self.tile) * tiles_x + x / self.tile) as usize];
-                for (acc, c) in t.0.iter_mut().zip(value.to_array()) {
-                    *acc += c as f64;
-                }
-                t.1 += 1;
-            }
-        }
-        self.tile_means.push(
-            sums.iter()
-                .map(|(s, n)| {
-                    let n = *n as f64;
-                    Color::new((s[0] / n) as f32, (s[1] / n) as f32, (s[2] / n) as f32)
-                })
-                .collect(),
-        );
-        self.chains += 1;
-    }
-}
-
 /// One line: what was rendered, the bootstrap's `b̂`, the acceptance rate,
 /// how fast.
 fn summary(
@@ -538,7 +360,7 @@ fn summary(
 mod tests {
     use super::*;
     use crate::film::Splat;
-    use crate::math::{Vec2, luminance};
+    use crate::math::{UVec2, Vec2, luminance};
     use std::sync::atomic::AtomicUsize;
 
     /// A toy integrator with a known image on a `W × 2` film: pixel `(x, y)`
@@ -762,55 +584,5 @@ mod tests {
             render_metropolis_with_stop(&scene, &Toy::new(), &options(8, 2), &metropolis, &stopped);
         assert!(r.bootstrap.is_none() && r.chains == 0 && r.stats.samples == 0);
         assert!(r.stats.interrupted);
-    }
-
-    #[test]
-    fn bad_parameters_are_named() {
-        let ok = Metropolis::default();
-        assert_eq!(ok.check(1000), Ok(()));
-        let with = |f: fn(&mut Metropolis)| {
-            let mut m = ok.clone();
-            f(&mut m);
-            m
-        };
-        let cases = [
-            (
-                with(|m| m.large_step_probability = 1.5),
-                "large_step_probability",
-                "must be in [0, 1]",
-            ),
-            (
-                with(|m| m.large_step_probability = f32::NAN),
-                "large_step_probability",
-                "got NaN",
-            ),
-            (
-                with(|m| m.large_step_probability = -0.1),
-                "large_step_probability",
-                "got -0.1",
-            ),
-            (
-                with(|m| m.mutation_size = -0.01),
-                "mutation_size",
-                "must be in (0, 1]",
-            ),
-            (with(|m| m.mutation_size = 0.0), "mutation_size", "got 0"),
-            (with(|m| m.chains = 0), "chains", "at least 1"),
-            (
-                with(|m| m.chains = 2000),
-                "chains",
-                "only 1000 mutations in all",
-            ),
-            (
-                with(|m| m.bootstrap = Some(0)),
-                "bootstrap",
-                "at least 1 path",
-            ),
-        ];
-        for (m, field, reason) in cases {
-            let e = m.check(1000).unwrap_err();
-            assert_eq!(e.field, field, "{m:?}");
-            assert!(e.reason.contains(reason), "{m:?}: {e}");
-        }
     }
 }
