@@ -220,16 +220,18 @@ fn metropolis_noise(
         ..base.clone()
     };
     let metropolis = Metropolis::default();
-    let mlt = render_metropolis(scene, &bdpt, &options(mutations, base.seed), &metropolis);
+    // Seeds of their own: the equal-time row may have taken the same number
+    // of mutations, and its picture is on the page already.
+    let mlt = render_metropolis(scene, &bdpt, &options(mutations, base.seed + 1), &metropolis);
     let seconds = mlt.stats.elapsed.as_secs_f64();
     // Bidirectional tracing at the same time, from the equal-time row's
-    // seconds per sample, with another seed than the row's.
+    // seconds per sample.
     let per_spp = rows
         .iter()
         .find(|r| r.algorithm == "bidirectional")
         .map_or(seconds, |r| r.seconds / r.spp as f64);
     let spp = ((seconds / per_spp).round() as u32).max(1);
-    let other = renderer::render(scene, &bdpt, &options(spp, base.seed + 1));
+    let other = renderer::render(scene, &bdpt, &options(spp, base.seed + 2));
     // The chains' prediction: the variance of each pixel's mean over the
     // chains, plus the bootstrap's b̂ error that scales the whole image.
     let (image, variance) = (mlt.film.image(), mlt.film.variance_image());
