@@ -15,10 +15,11 @@ use raytracer::integrator::{
     AmbientOcclusion, Bdpt, Direct, DirectStrategy, Integrator, LightTracer, NaiveRecursive,
     PathTracer,
 };
-use raytracer::render::{Metropolis, RenderOptions};
+use raytracer::render::{Metropolis, RenderOptions, memory_needed};
 use raytracer::scene::{Scene, max_depth_from};
 
 use crate::metropolis::MetropolisArgs;
+use crate::options::check_memory;
 
 /// The integrators this build offers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -272,8 +273,15 @@ impl IntegratorArgs {
 
     /// Metropolis light transport (`--integrator mlt`): the integrator its
     /// chains run over, bidirectional path tracing with the depth options,
-    /// and its parameters for `options.spp` mutations per pixel, all checked.
-    pub fn metropolis(&self, scene: &Scene, options: &RenderOptions) -> Result<(Bdpt, Metropolis)> {
+    /// and its parameters for `options.spp` mutations per pixel, all checked,
+    /// with the memory the chains and the bootstrap need (the cap doubles
+    /// with `force`).
+    pub fn metropolis(
+        &self,
+        scene: &Scene,
+        options: &RenderOptions,
+        force: bool,
+    ) -> Result<(Bdpt, Metropolis)> {
         let kind = IntegratorKind::Mlt;
         self.check(kind)?;
         let bdpt = Bdpt {
@@ -283,6 +291,22 @@ impl IntegratorArgs {
         };
         let pixels = scene.camera.width as u64 * scene.camera.height as u64;
         let metropolis = self.metropolis.metropolis(options.spp as u64 * pixels)?;
+        let (w, h) = (scene.camera.width, scene.camera.height);
+        let threads = options
+            .threads
+            .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+        let bytes = metropolis
+            .memory_needed(w, h, threads)
+            .and_then(|m| m.checked_add(memory_needed(w, h)?));
+        check_memory(
+            &format!(
+                "Metropolis light transport at {w}×{h} on {threads} threads with {} bootstrap paths",
+                metropolis.bootstrap_paths(w, h)
+            ),
+            bytes,
+            "--width and --height, --bootstrap or --threads",
+            force,
+        )?;
         Ok((bdpt, metropolis))
     }
 

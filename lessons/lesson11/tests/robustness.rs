@@ -669,6 +669,12 @@ fn metropolis_options_are_checked_before_rendering() {
     for (flag, value, expected) in cases {
         refused("mlt", &mlt(flag, value), expected);
     }
+    // 2³² − 1 bootstrap paths would keep 64 GiB of f and its distribution.
+    refused(
+        "mlt-memory",
+        &mlt("--bootstrap", "4294967295"),
+        "Metropolis light transport at 8×6 on",
+    );
     refused(
         "mlt-unused",
         &tiny(&["render", "--integrator", "bdpt", "--chains", "4"]),

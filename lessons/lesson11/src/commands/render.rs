@@ -40,7 +40,9 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     }
     let (scene, options) = args.scene.load("cornell")?;
     if args.integrator == IntegratorKind::Mlt {
-        let (bdpt, metropolis) = args.integrator_args.metropolis(&scene, &options)?;
+        let (bdpt, metropolis) =
+            args.integrator_args
+                .metropolis(&scene, &options, args.scene.force)?;
         crate::metropolis::render_to_files(
             &scene,
             &bdpt,

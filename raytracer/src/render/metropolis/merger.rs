@@ -17,7 +17,7 @@ pub(super) struct Merger {
     tile: u32,
     b: f64,
     /// The next chain to merge, and finished chains `next, next+1, …`.
-    next: u64,
+    pub(super) next: u64,
     pending: VecDeque<Option<ChainRun>>,
     pub(super) spare: Vec<ChainRun>,
     pub(super) chains: u32,

@@ -190,6 +190,9 @@ pub fn render_metropolis_with_stop(
             return;
         };
         bootstrap_seconds = start.elapsed().as_secs_f64();
+        let workers = rayon::current_num_threads()
+            .min(metropolis.chains as usize)
+            .max(1);
         let job = ChainJob {
             scene,
             integrator,
@@ -199,12 +202,12 @@ pub fn render_metropolis_with_stop(
             mutations,
             stop,
             next_chain: AtomicU64::new(0),
+            ahead: 2 * workers as u64,
             merger: Mutex::new(Merger::new(w, h, options.tile_size.max(1), b.b)),
             bar: &bar,
         };
-        let workers = rayon::current_num_threads().min(metropolis.chains as usize);
         rayon::scope(|s| {
-            for _ in 0..workers.max(1) {
+            for _ in 0..workers {
                 s.spawn(|_| job.work());
             }
         });
@@ -245,6 +248,8 @@ struct ChainJob<'a> {
     mutations: u64,
     stop: &'a AtomicBool,
     next_chain: AtomicU64,
+    /// How far ahead of the next chain to merge a worker may start one.
+    ahead: u64,
     merger: Mutex<Merger>,
     bar: &'a ProgressBar,
 }
@@ -266,6 +271,11 @@ impl ChainJob<'_> {
                 let c = self.next_chain.fetch_add(1, Ordering::Relaxed);
                 if c >= self.metropolis.chains as u64 {
                     break;
+                }
+                // At most `ahead` chains wait to be merged (each holds a
+                // W·H image): a worker far ahead of the slowest chain waits.
+                while c >= lock().next + self.ahead && !self.stop.load(Ordering::Relaxed) {
+                    std::thread::sleep(std::time::Duration::from_millis(1));
                 }
                 self.run(c, &mut run);
                 run = lock().submit(c, run);

@@ -41,6 +41,22 @@ impl Metropolis {
             .map_or(width as u64 * height as u64, u64::from)
     }
 
+    /// Bytes a render of `width × height` on `threads` threads needs beside
+    /// the film's ([`crate::render::memory_needed`]), at its peak (`None` if
+    /// the number does not fit in 64 bits): each chain in flight keeps an
+    /// `f64` sum per channel and pixel (24 bytes), and fewer than
+    /// `3·threads + 1` are in flight (one per worker, and the chains that
+    /// finished early and wait, at most `2·threads`, to be merged in chain
+    /// order); each bootstrap path keeps its `f` and its share of the
+    /// distribution that picks the chains' starts (16 bytes at the peak).
+    pub fn memory_needed(&self, width: u32, height: u32, threads: usize) -> Option<u64> {
+        let pixels = (width as u64).checked_mul(height as u64)?;
+        let runs = (threads as u64).checked_mul(3)?.checked_add(1)?;
+        let chains = pixels.checked_mul(24)?.checked_mul(runs)?;
+        let paths = self.bootstrap_paths(width, height).checked_mul(16)?;
+        chains.checked_add(paths)
+    }
+
     /// Checks the parameters for `mutations` steps in all.
     pub fn check(&self, mutations: u64) -> Result<(), ParameterError> {
         let wrong = |field, reason: String| Err(ParameterError { field, reason });
