@@ -69,6 +69,12 @@ pub mod ex14_light_tracing;
 #[cfg_attr(feature = "solutions", path = "../solutions/ex15_bdpt_connection.rs")]
 pub mod ex15_bdpt_connection;
 #[allow(unused_variables)]
+#[cfg_attr(feature = "solutions", path = "../solutions/ex16_photon_density.rs")]
+pub mod ex16_photon_density;
+#[allow(unused_variables)]
+#[cfg_attr(feature = "solutions", path = "../solutions/ex17_vpl_contribution.rs")]
+pub mod ex17_vpl_contribution;
+#[allow(unused_variables)]
 #[cfg_attr(feature = "solutions", path = "../solutions/ex18_metropolis_step.rs")]
 pub mod ex18_metropolis_step;
 
@@ -89,6 +95,8 @@ pub const MODULES: &[&str] = &[
     "ex13_mis",
     "ex14_light_tracing",
     "ex15_bdpt_connection",
+    "ex16_photon_density",
+    "ex17_vpl_contribution",
     "ex18_metropolis_step",
 ];
 

@@ -35,9 +35,11 @@
 //! an image that would not fit in memory before allocating it.
 
 pub mod metropolis;
+pub mod sppm;
 mod strategies;
 
 pub use metropolis::{Metropolis, MetropolisResult, render_metropolis};
+pub use sppm::{SppmResult, render_sppm};
 pub use strategies::render_strategies;
 
 use crate::film::{Film, FilmTile, Splat};
@@ -160,6 +162,12 @@ pub fn install_interrupt_handler() {
 /// True once Ctrl-C (or [`request_interrupt`]) asked renders to stop.
 pub fn interrupted() -> bool {
     INTERRUPTED.load(Ordering::SeqCst)
+}
+
+/// The flag Ctrl-C sets, for work outside the render loop that watches a
+/// stop flag of its own (photon tracing, the irradiance cache).
+pub fn interrupt_flag() -> &'static AtomicBool {
+    &INTERRUPTED
 }
 
 /// Clears the interrupt flag (e.g. to go on with the next image of a batch).

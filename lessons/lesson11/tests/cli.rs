@@ -457,6 +457,7 @@ fn every_chapter_is_a_subcommand_and_runs_alone() {
         "light",
         "bdpt",
         "compare",
+        "biased",
     ];
     for chapter in chapters {
         let o = lesson11(&[chapter, "--help"]);

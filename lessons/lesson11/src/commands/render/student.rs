@@ -36,13 +36,18 @@ pub fn run(
             branching: ia.branching()[0],
         },
         IntegratorKind::Direct | IntegratorKind::PathNee => StudentRender::Direct,
-        IntegratorKind::Ao | IntegratorKind::Light | IntegratorKind::Bdpt | IntegratorKind::Mlt => {
-            bail!(
-                "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
+        IntegratorKind::Ao
+        | IntegratorKind::Light
+        | IntegratorKind::Bdpt
+        | IntegratorKind::Mlt
+        | IntegratorKind::Photon
+        | IntegratorKind::Sppm
+        | IntegratorKind::Vpl
+        | IntegratorKind::IrradianceCache => bail!(
+            "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
              (light tracing, bidirectional tracing and Metropolis light transport are graded piece by piece: \
              exercises 14, 15 and 18)"
-            )
-        }
+        ),
     };
     let exercise = which.exercise();
     let (student, reference) = (which.student(), which.reference());
