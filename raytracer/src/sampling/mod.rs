@@ -11,10 +11,12 @@ pub mod chi2;
 pub mod distribution;
 pub mod draw;
 pub mod mis;
+pub mod primary;
 pub mod rng;
 pub mod warp;
 
 pub use distribution::{Distribution1D, Distribution2D};
 pub use draw::Draw;
 pub use mis::{balance_heuristic, power_heuristic};
+pub use primary::PrimarySample;
 pub use rng::Sampler;

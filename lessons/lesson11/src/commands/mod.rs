@@ -19,7 +19,7 @@ use clap::Subcommand;
 #[derive(Subcommand)]
 pub enum Command {
     /// Render one scene with one integrator to PNG (to look at) and EXR (to measure).
-    Render(render::RenderArgs),
+    Render(Box<render::RenderArgs>),
     /// The lecture live in the browser: a progressive render with its knobs, a live stereo pair, BRDF lobes and albedo, and a path inspector.
     Lab(lab::LabArgs),
     /// List the built-in scenes, or write one out as a file to edit.
