@@ -230,6 +230,7 @@ fn the_page_and_its_assets_load_and_unknown_paths_are_404() {
             "naive",
             "light",
             "bdpt",
+            "mlt",
             "photon",
             "sppm",
             "vpl",
