@@ -69,14 +69,14 @@ pub mod ex14_light_tracing;
 #[cfg_attr(feature = "solutions", path = "../solutions/ex15_bdpt_connection.rs")]
 pub mod ex15_bdpt_connection;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex16_photon_density.rs")]
-pub mod ex16_photon_density;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex16_metropolis_step.rs")]
+pub mod ex16_metropolis_step;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex17_vpl_contribution.rs")]
-pub mod ex17_vpl_contribution;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex17_photon_density.rs")]
+pub mod ex17_photon_density;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex18_metropolis_step.rs")]
-pub mod ex18_metropolis_step;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex18_vpl_contribution.rs")]
+pub mod ex18_vpl_contribution;
 
 /// The module names, in lecture order (they match `info.toml`).
 pub const MODULES: &[&str] = &[
@@ -95,9 +95,9 @@ pub const MODULES: &[&str] = &[
     "ex13_mis",
     "ex14_light_tracing",
     "ex15_bdpt_connection",
-    "ex16_photon_density",
-    "ex17_vpl_contribution",
-    "ex18_metropolis_step",
+    "ex16_metropolis_step",
+    "ex17_photon_density",
+    "ex18_vpl_contribution",
 ];
 
 /// Whether this build uses the reference solutions (feature `solutions`).

@@ -41,9 +41,9 @@ pub mod ex12_nee;
 pub mod ex13_mis;
 pub mod ex14_light_tracing;
 pub mod ex15_bdpt_connection;
-pub mod ex16_photon_density;
-pub mod ex17_vpl_contribution;
-pub mod ex18_metropolis_step;
+pub mod ex16_metropolis_step;
+pub mod ex17_photon_density;
+pub mod ex18_vpl_contribution;
 pub mod outcome;
 pub mod pictures;
 pub mod polygon;
@@ -120,17 +120,17 @@ pub const GRADERS: &[(&str, Check)] = &[
             ex::ex15_bdpt_connection::bdpt_mis_weight,
         )
     }),
-    ("ex16_photon_density", || {
-        ex16_photon_density::check(ex::ex16_photon_density::photon_radiance)
-    }),
-    ("ex17_vpl_contribution", || {
-        ex17_vpl_contribution::check(ex::ex17_vpl_contribution::vpl_contribution)
-    }),
-    ("ex18_metropolis_step", || {
-        ex18_metropolis_step::check(
-            ex::ex18_metropolis_step::acceptance,
-            ex::ex18_metropolis_step::expected_value_splat,
+    ("ex16_metropolis_step", || {
+        ex16_metropolis_step::check(
+            ex::ex16_metropolis_step::acceptance,
+            ex::ex16_metropolis_step::expected_value_splat,
         )
+    }),
+    ("ex17_photon_density", || {
+        ex17_photon_density::check(ex::ex17_photon_density::photon_radiance)
+    }),
+    ("ex18_vpl_contribution", || {
+        ex18_vpl_contribution::check(ex::ex18_vpl_contribution::vpl_contribution)
     }),
 ];
 

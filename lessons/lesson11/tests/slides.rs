@@ -694,7 +694,7 @@ fn rays_at_most(branching: &[u64], depth: u32) -> u64 {
 
 #[test]
 fn ray_counts_on_the_slides_follow_the_depth_convention_and_the_measured_table() {
-    // D counts rays: (N^D − 1)/(N − 1), as DECISIONS.md defines it.
+    // D counts rays: (N^D − 1)/(N − 1), as the slide "Depth D" defines it.
     assert_eq!(rays_at_most(&[8], 4), (8u64.pow(4) - 1) / 7);
     let csv = read_csv(&tiny_build().join("04-rendering-equation/naive-rays.csv"));
     for lang in ["bg", "en"] {

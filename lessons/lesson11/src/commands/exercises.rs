@@ -44,7 +44,7 @@ pub struct SolutionArgs {
 
 fn exercise(number: usize) -> Result<Exercise> {
     let reg = exercises::registry();
-    // Listed, not given as a range: a number may be skipped (18 before 16).
+    // Listed, not given as a range, in case a number is ever skipped.
     let numbers: Vec<String> = reg
         .iter()
         .filter_map(|e| e.number())

@@ -46,7 +46,7 @@ pub fn run(
         | IntegratorKind::IrradianceCache => bail!(
             "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
              (light tracing, bidirectional tracing and Metropolis light transport are graded piece by piece: \
-             exercises 14, 15 and 18)"
+             exercises 14, 15 and 16; photon mapping and instant radiosity: 17 and 18)"
         ),
     };
     let exercise = which.exercise();

@@ -1,4 +1,4 @@
-//! Exercise 16 — photon mapping: the radiance estimate from the nearest photons.
+//! Exercise 17 — photon mapping: the radiance estimate from the nearest photons.
 //!
 //! Slides: "Photon mapping" ("Photon mapping"),
 //! "Density estimation" ("Оценка на плътността").

@@ -1,4 +1,4 @@
-//! Reference solution of exercise 16 (see `src/ex16_photon_density.rs` for the task).
+//! Reference solution of exercise 17 (see `src/ex17_photon_density.rs` for the task).
 
 use raytracer::math::{Color, PI};
 

@@ -1,4 +1,4 @@
-//! Grader of exercise 18 (one step of Metropolis light transport): the
+//! Grader of exercise 16 (one step of Metropolis light transport): the
 //! acceptance probability and the expected-value splat exactly, over a grid
 //! of luminances with the edge cases the task specifies (the usual mistakes
 //! named), then a whole Metropolis chain built from the student's two
@@ -23,7 +23,7 @@ use raytracer::sampling::Sampler;
 
 use crate::stats::{Mistake, recognise};
 
-/// The signatures of exercise 18.
+/// The signatures of exercise 16.
 pub type AcceptanceFn = fn(f32, f32) -> f32;
 pub type SplatFn = fn(f32, f32) -> SplatWeights;
 

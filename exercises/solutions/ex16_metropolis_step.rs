@@ -1,4 +1,4 @@
-//! Reference solution of exercise 18 (see `src/ex18_metropolis_step.rs` for the task).
+//! Reference solution of exercise 16 (see `src/ex16_metropolis_step.rs` for the task).
 
 use raytracer::render::metropolis::SplatWeights;
 

@@ -1,4 +1,4 @@
-//! Exercise 18 — one step of Metropolis light transport: the acceptance
+//! Exercise 16 — one step of Metropolis light transport: the acceptance
 //! probability and the expected-value splat.
 //!
 //! Slides: "Metropolis light transport" ("Metropolis light transport"),

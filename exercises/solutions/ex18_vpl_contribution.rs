@@ -1,4 +1,4 @@
-//! Reference solution of exercise 17 (see `src/ex17_vpl_contribution.rs` for the task).
+//! Reference solution of exercise 18 (see `src/ex18_vpl_contribution.rs` for the task).
 
 use raytracer::math::{Color, Vec3A};
 

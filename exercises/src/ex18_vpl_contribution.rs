@@ -1,4 +1,4 @@
-//! Exercise 17 — instant radiosity: one virtual point light's contribution, clamped.
+//! Exercise 18 — instant radiosity: one virtual point light's contribution, clamped.
 //!
 //! Slides: "Instant radiosity" ("Instant radiosity"),
 //! "Clamping: smooth, but wrong" ("Отрязване: гладко, но грешно").

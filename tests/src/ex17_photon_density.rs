@@ -1,4 +1,4 @@
-//! Grader of exercise 16 (photon mapping's density estimate): the estimate
+//! Grader of exercise 17 (photon mapping's density estimate): the estimate
 //! exactly over hand-made sets of photons (the usual mistakes named by
 //! comparing all cases at once), and its lack of bias where the photon
 //! density is uniform: the k nearest of 400 photons spread uniformly over
@@ -16,7 +16,7 @@ use raytracer::sampling::warp::concentric_disk;
 
 use crate::stats::{MeanVar, Mistake, recognise};
 
-/// The signature of exercise 16.
+/// The signature of exercise 17.
 pub type DensityFn = fn(&[(f32, Color)], usize, f32) -> Color;
 
 /// Trials of the uniform-density estimate, photons per trial, k.

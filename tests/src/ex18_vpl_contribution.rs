@@ -1,4 +1,4 @@
-//! Grader of exercise 17 (one VPL's contribution, clamped): the value
+//! Grader of exercise 18 (one VPL's contribution, clamped): the value
 //! exactly over edges whose geometry term lies below, at and above the
 //! bound, with the bound 0 (no clamping), the usual mistakes named by
 //! comparing all cases at once; and clamping never adds light.
@@ -11,7 +11,7 @@ use raytracer::math::{Color, Vec3A};
 use crate::ex15_bdpt_connection::expected_g;
 use crate::stats::{Mistake, fmt3, recognise};
 
-/// The signature of exercise 17.
+/// The signature of exercise 18.
 pub type VplFn = fn(Vec3A, Vec3A, Vec3A, Vec3A, Color, f32) -> Color;
 
 /// A case: `(x, nx, y, ny, fff, clamp)`.
