@@ -166,6 +166,18 @@ impl Camera {
     /// Raster position of the world point `p` seen through the lens point
     /// `p_lens`, or `None` if it is behind the camera or off the film.
     pub fn raster_of(&self, p: Vec3A, p_lens: Vec3A) -> Option<Vec2> {
+        let raster = self.raster_beyond_film(p, p_lens)?;
+        let inside = raster.x >= 0.0
+            && raster.y >= 0.0
+            && raster.x < self.width as f32
+            && raster.y < self.height as f32;
+        inside.then_some(raster)
+    }
+
+    /// Raster position of `p` as [`Camera::raster_of`], also where it falls
+    /// off the film (outside `[0, W) × [0, H)`: drawings of paths clip it);
+    /// `None` only behind the camera.
+    pub fn raster_beyond_film(&self, p: Vec3A, p_lens: Vec3A) -> Option<Vec2> {
         let v = p - p_lens;
         let vz = v.dot(self.forward);
         if vz <= 0.0 {
@@ -180,15 +192,10 @@ impl Camera {
         } else {
             Vec2::new(v.dot(self.right_dir), v.dot(self.up_dir)) / vz
         } - self.params.shift;
-        let raster = Vec2::new(
+        Some(Vec2::new(
             (s.x / self.half.x + 1.0) * 0.5 * self.width as f32,
             (1.0 - s.y / self.half.y) * 0.5 * self.height as f32,
-        );
-        let inside = raster.x >= 0.0
-            && raster.y >= 0.0
-            && raster.x < self.width as f32
-            && raster.y < self.height as f32;
-        inside.then_some(raster)
+        ))
     }
 
     /// Importance `W_e` of a ray leaving the lens in direction `d`:

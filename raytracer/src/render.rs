@@ -18,6 +18,11 @@
 //! Passes make the image converge evenly: an interrupted render is a
 //! complete image with fewer samples, not a half-finished one.
 //!
+//! **Watching.** [`render_pixels_watched`] shows a watcher the film after
+//! every merged unit (a progressive front-end's snapshots). When a pass is
+//! complete the film is, bit for bit, the film of a render of `16·k` spp: its
+//! first units are the same units, merged in the same order.
+//!
 //! [`render_strategies`] renders the image of each strategy of bidirectional
 //! path tracing apart (the lesson's slides).
 //!
@@ -215,6 +220,39 @@ pub fn render_pixels_with_stop<F>(
 where
     F: Fn(UVec2, &mut Sampler, &mut Vec<Splat>) -> Color + Sync,
 {
+    render_pixels_watched(width, height, options, stop, sample, &mut |_| {})
+}
+
+/// How far a render has come, as [`render_pixels_watched`] shows it.
+pub struct Progress<'a> {
+    /// The film with every unit merged so far (pixels of the pass under way
+    /// may hold 16 samples more than the others).
+    pub film: &'a Film,
+    /// Samples per pixel of the passes merged so far: `16 ·` their number, or
+    /// the render's spp once its last (maybe partial) pass is merged.
+    pub complete_spp: u32,
+    /// True when this merge completed a pass (or the render): the film then
+    /// equals, bit for bit, the film of a render with `spp = complete_spp`
+    /// and the same seed and tile size.
+    pub pass_complete: bool,
+    /// Wall-clock time since the render started.
+    pub elapsed: Duration,
+}
+
+/// [`render_pixels_with_stop`] that shows `watch` the film after every unit
+/// it merges. `watch` runs while the workers wait to merge their next tiles:
+/// it should be quick (copy the image, not encode it).
+pub fn render_pixels_watched<F>(
+    width: u32,
+    height: u32,
+    options: &RenderOptions,
+    stop: &AtomicBool,
+    sample: F,
+    watch: &mut (dyn FnMut(&Progress) + Send),
+) -> RenderResult
+where
+    F: Fn(UVec2, &mut Sampler, &mut Vec<Splat>) -> Color + Sync,
+{
     let start = Instant::now();
     let layout = Layout::new(width, height, options.tile_size, options.spp);
     let expected = width as u64 * height as u64 * options.spp as u64;
@@ -230,6 +268,8 @@ where
             next: 0,
             pending: VecDeque::new(),
             spare: Vec::new(),
+            watch,
+            start,
         }),
         bar: &bar,
     };
@@ -411,7 +451,7 @@ impl Layout {
 }
 
 /// Merges finished tiles into the film in unit order.
-struct Merger {
+struct Merger<'w> {
     film: Film,
     /// The next unit to merge.
     next: usize,
@@ -419,12 +459,16 @@ struct Merger {
     pending: VecDeque<Option<FilmTile>>,
     /// Merged tiles, kept for reuse.
     spare: Vec<FilmTile>,
+    /// Shown the film after every merge.
+    watch: &'w mut (dyn FnMut(&Progress) + Send),
+    start: Instant,
 }
 
-impl Merger {
+impl Merger<'_> {
     /// Takes finished unit `u`, merges every unit that is now next in line,
-    /// and hands back an empty tile for the worker's next unit.
-    fn submit(&mut self, u: usize, tile: FilmTile) -> FilmTile {
+    /// showing the watcher the film after each, and hands back an empty tile for the
+    /// worker's next unit.
+    fn submit(&mut self, u: usize, tile: FilmTile, layout: &Layout) -> FilmTile {
         let slot = u - self.next;
         if self.pending.len() <= slot {
             self.pending.resize_with(slot + 1, || None);
@@ -435,8 +479,25 @@ impl Merger {
             self.film.merge_tile(&tile);
             self.spare.push(tile);
             self.next += 1;
+            self.show(layout);
         }
         self.spare.pop().unwrap_or_else(|| self.new_tile())
+    }
+
+    /// Calls the watcher. A pass counts as complete only if every pixel has
+    /// its samples (a unit cut short by a stop request is merged too).
+    fn show(&mut self, layout: &Layout) {
+        let passes = (self.next / layout.tiles.max(1)) as u32;
+        let complete_spp = passes.saturating_mul(SAMPLES_PER_PASS).min(layout.spp);
+        let pixels = layout.width as u64 * layout.height as u64;
+        let pass_complete = self.next % layout.tiles.max(1) == 0
+            && self.film.total_samples() == pixels * complete_spp as u64;
+        (self.watch)(&Progress {
+            film: &self.film,
+            complete_spp,
+            pass_complete,
+            elapsed: self.start.elapsed(),
+        });
     }
 
     fn new_tile(&self) -> FilmTile {
@@ -452,7 +513,7 @@ struct Job<'a, F> {
     sample: &'a F,
     stop: &'a AtomicBool,
     next_unit: AtomicUsize,
-    merger: Mutex<Merger>,
+    merger: Mutex<Merger<'a>>,
     bar: &'a ProgressBar,
 }
 
@@ -480,7 +541,7 @@ where
                 // the units merged are exactly 0..(last taken).
                 let done = self.render_unit(u, &mut tile);
                 self.bar.inc(done);
-                tile = lock().submit(u, tile);
+                tile = lock().submit(u, tile, &self.layout);
             }
         });
     }
@@ -640,6 +701,31 @@ mod tests {
         };
         let r = render_pixels_with_stop(23, 17, &other, &AtomicBool::new(false), toy);
         assert_ne!(bits(&r.film.image()), bits(&runs[0].film.image()));
+    }
+
+    /// A watcher sees the film grow; at every complete pass it is the film of
+    /// a render with that many samples per pixel, bit for bit (the lab's
+    /// progressive picture equals `lesson11 render --spp N`), and the last
+    /// one is the finished film.
+    #[test]
+    fn watched_passes_equal_shorter_renders() {
+        let stop = AtomicBool::new(false);
+        let mut complete = Vec::new();
+        let mut calls = 0;
+        let r = render_pixels_watched(23, 17, &options(40, 2, 8), &stop, toy, &mut |p| {
+            calls += 1;
+            if p.pass_complete {
+                complete.push((p.complete_spp, p.film.clone()));
+            }
+        });
+        assert_eq!(calls, 9 * 3, "one call per merged unit (9 tiles, 3 passes)");
+        let spps: Vec<u32> = complete.iter().map(|c| c.0).collect();
+        assert_eq!(spps, [16, 32, 40]);
+        for (spp, film) in &complete {
+            let alone = render_pixels_with_stop(23, 17, &options(*spp, 3, 8), &stop, toy);
+            assert!(*film == alone.film, "the film at {spp} spp differs");
+        }
+        assert!(complete.last().unwrap().1 == r.film);
     }
 
     /// Pixel `(x, y)`, sample `k` uses `Sampler::new(seed, y·width + x, k)`.

@@ -76,7 +76,7 @@ impl IntegratorKind {
         scene: &Scene,
         options: &RenderOptions,
         force: bool,
-    ) -> Result<Box<dyn Integrator>> {
+    ) -> Result<Box<dyn Integrator + Send>> {
         args.check(self)?;
         let max_depth = args.max_depth(self, scene)?;
         let rr_depth = args.rr_depth.unwrap_or(scene.settings.rr_depth);
@@ -371,7 +371,11 @@ impl IntegratorArgs {
 mod tests {
     use super::*;
 
-    fn build(kind: IntegratorKind, args: &IntegratorArgs, spp: u32) -> Result<Box<dyn Integrator>> {
+    fn build(
+        kind: IntegratorKind,
+        args: &IntegratorArgs,
+        spp: u32,
+    ) -> Result<Box<dyn Integrator + Send>> {
         let scene = Scene::builtin("cornell").unwrap();
         let options = RenderOptions {
             spp,

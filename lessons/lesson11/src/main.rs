@@ -168,6 +168,7 @@ mod tests {
             ]
         );
         assert!(names[chapters.len() + 1..].contains(&"render"));
+        assert!(names[chapters.len() + 1..].contains(&"lab"));
     }
 
     #[test]

@@ -10,14 +10,16 @@
 
 use std::path::PathBuf;
 
-use anyhow::Result;
+use anyhow::{Context, Result};
 use clap::{ArgMatches, Args, ValueEnum};
 use raytracer::integrator::Integrator;
+use raytracer::integrator::record::PathRecord;
 use raytracer::render::{RenderOptions, memory_needed};
 use raytracer::scene::Scene;
 
 use crate::options::{SceneArgs, check_memory, check_threads, create_dir, load_scene};
 use crate::page::{Figure, Picture, Section};
+use crate::plots::{Labels, path_figure_svg};
 use crate::render_files::render_to_files;
 
 /// How long the tour may take.
@@ -222,6 +224,34 @@ impl Tour {
             .figures
             .push(Figure::new(&self.out, &p, caption));
         Ok(p)
+    }
+
+    /// Draws the recorded sample `record` (projected by `scene`'s camera)
+    /// over `picture`, a render of the same scene and size, into
+    /// `<stem>.svg`, and adds it to the chapter with its caption.
+    pub fn path_figure(
+        &self,
+        chapter: &mut ChapterOutput,
+        record: &PathRecord,
+        (scene, picture): (&Scene, &Picture),
+        labels: Labels,
+        stem: &str,
+        caption: &str,
+    ) -> Result<()> {
+        let png = std::fs::read(&picture.png)
+            .with_context(|| format!("cannot read {}", picture.png.display()))?;
+        let size = (scene.camera.width, scene.camera.height);
+        let path = chapter.dir.join(format!("{stem}.svg"));
+        raytracer::film::output::write_file(&path, path_figure_svg(record, &png, size, labels))?;
+        println!(
+            "  {stem}: pixel {:?}, sample {} recorded",
+            record.pixel, record.sample
+        );
+        chapter
+            .section
+            .figures
+            .push(Figure::plot(&self.out, &path, caption));
+        Ok(())
     }
 }
 

@@ -124,6 +124,11 @@ fn tiny_tour() -> &'static Path {
 fn the_tour_writes_every_picture_its_page_shows() {
     let out = tiny_tour();
     assert_links_exist(&out.join("index.html"));
+    let index = std::fs::read_to_string(out.join("index.html")).unwrap();
+    assert!(
+        index.contains("cargo run --release -p lesson11 -- lab"),
+        "the tour page points to the lab"
+    );
     let csv = std::fs::read_to_string(out.join("04-rendering-equation/naive-rays.csv")).unwrap();
     assert!(csv.starts_with("N (branching),max depth D,"), "{csv}");
     assert_eq!(

@@ -202,20 +202,29 @@ impl Image {
 
     /// The PNG of [`Image::write_png`], written but not yet in place.
     pub fn stage_png(&self, path: impl AsRef<Path>, exposure_stops: f32) -> io::Result<StagedFile> {
+        StagedFile::write(path, "PNG", |w| self.encode_png(w, exposure_stops))
+    }
+
+    /// The bytes of the PNG file [`Image::write_png`] writes (a server's answer).
+    pub fn png_bytes(&self, exposure_stops: f32) -> io::Result<Vec<u8>> {
+        let mut bytes = Vec::new();
+        self.encode_png(&mut bytes, exposure_stops)?;
+        Ok(bytes)
+    }
+
+    fn encode_png(&self, w: impl Write, exposure_stops: f32) -> io::Result<()> {
         let bytes = self.to_srgb8(exposure_stops);
-        StagedFile::write(path, "PNG", |w| {
-            image::codecs::png::PngEncoder::new(w)
-                .write_image(
-                    &bytes,
-                    self.width,
-                    self.height,
-                    image::ExtendedColorType::Rgb8,
-                )
-                .map_err(|e| match e {
-                    image::ImageError::IoError(e) => e,
-                    e => io::Error::other(e),
-                })
-        })
+        image::codecs::png::PngEncoder::new(w)
+            .write_image(
+                &bytes,
+                self.width,
+                self.height,
+                image::ExtendedColorType::Rgb8,
+            )
+            .map_err(|e| match e {
+                image::ImageError::IoError(e) => e,
+                e => io::Error::other(e),
+            })
     }
 
     /// Writes the image as a linear, unclamped float32 RGB OpenEXR file,
@@ -228,6 +237,17 @@ impl Image {
     /// blocks are written in order on one thread (the `exr` crate's parallel
     /// writer puts them in the order they finish): same pixels, same bytes.
     pub fn stage_exr(&self, path: impl AsRef<Path>) -> io::Result<StagedFile> {
+        StagedFile::write(path, "EXR", |w| self.encode_exr(w))
+    }
+
+    /// The bytes of the EXR file [`Image::write_exr`] writes (a server's answer).
+    pub fn exr_bytes(&self) -> io::Result<Vec<u8>> {
+        let mut bytes = io::Cursor::new(Vec::new());
+        self.encode_exr(&mut bytes)?;
+        Ok(bytes.into_inner())
+    }
+
+    fn encode_exr(&self, w: impl Write + io::Seek) -> io::Result<()> {
         use exr::prelude::{Image as ExrImage, SpecificChannels, Vec2, WritableImage};
         let width = self.width as usize;
         let channels = SpecificChannels::rgb(|Vec2(x, y): Vec2<usize>| {
@@ -235,16 +255,14 @@ impl Image {
             (c.x, c.y, c.z)
         });
         let image = ExrImage::from_channels((width, self.height as usize), channels);
-        StagedFile::write(path, "EXR", |w| {
-            image
-                .write()
-                .non_parallel()
-                .to_buffered(w)
-                .map_err(|e| match e {
-                    exr::error::Error::Io(e) => e,
-                    e => io::Error::other(e),
-                })
-        })
+        image
+            .write()
+            .non_parallel()
+            .to_buffered(w)
+            .map_err(|e| match e {
+                exr::error::Error::Io(e) => e,
+                e => io::Error::other(e),
+            })
     }
 
     /// Reads the first RGB(A) layer of an OpenEXR file (alpha is ignored;
@@ -365,6 +383,10 @@ mod tests {
                 assert!(bytes(ext, i) == first, "{ext} write {i} differs");
             }
         }
+        // The bytes a server sends are the file's bytes.
+        assert!(img.exr_bytes().unwrap() == bytes("exr", 5));
+        assert!(img.png_bytes(0.0).unwrap() == bytes("png", 5));
+        assert!(img.png_bytes(1.0).unwrap() != bytes("png", 5));
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

@@ -36,10 +36,13 @@ use super::camera_connection::connect_to_camera;
 use super::dimensions::LENS;
 use super::mis_weight::mis_weight;
 use super::nee::{self, LightPoint};
+use super::record::{
+    NoRecorder, PathRecord, PathRole, PathVertex, Recorder, Segment, SegmentEnd, VertexRef,
+};
 use super::subpath::{EscapedRay, camera_subpath, light_subpath};
 use super::vertex::{Vertex, path_vertices, visible, with_subpaths};
 use crate::film::Splat;
-use crate::math::{Color, UVec2, Vec2};
+use crate::math::{Color, Ray, UVec2, Vec2};
 use crate::sampling::Sampler;
 use crate::scene::Scene;
 
@@ -172,25 +175,28 @@ fn connect(
 impl Bdpt {
     /// One pixel sample: builds both subpaths and sums every strategy (or the
     /// one selected by `strategy_images`).
-    fn estimate(
+    fn estimate<R: Recorder>(
         &self,
         scene: &Scene,
         pixel: UVec2,
         sampler: &mut Sampler,
         splats: &mut Vec<Splat>,
+        rec: &mut R,
     ) -> Color {
         let max_vertices = path_vertices(self.max_depth); // D + 1
         with_subpaths(|camera, light| {
             let escaped =
                 camera_subpath(scene, pixel, sampler, camera, max_vertices, self.rr_depth);
             light_subpath(scene, sampler, light, max_vertices - 1, self.rr_depth);
-            self.strategies(scene, light, camera, escaped, sampler, splats)
+            self.strategies(scene, light, camera, escaped, sampler, splats, rec)
         })
     }
 
     /// Sums the strategies of one pixel sample's two subpaths (or the one
-    /// selected by `strategy_images`).
-    fn strategies(
+    /// selected by `strategy_images`), handing the subpaths and every
+    /// contribution to `rec`.
+    #[allow(clippy::too_many_arguments)]
+    fn strategies<R: Recorder>(
         &self,
         scene: &Scene,
         light: &mut [Vertex],
@@ -198,7 +204,16 @@ impl Bdpt {
         escaped: Option<EscapedRay>,
         sampler: &mut Sampler,
         splats: &mut Vec<Splat>,
+        rec: &mut R,
     ) -> Color {
+        // The recorded camera and light subpaths (`None` when not recording).
+        let (z, y) = match rec.record() {
+            Some(r) => (
+                r.push_subpath(scene, PathRole::Camera, camera),
+                r.push_subpath(scene, PathRole::Light, light),
+            ),
+            None => (None, None),
+        };
         let max_vertices = path_vertices(self.max_depth);
         let (n_camera, n_light) = (camera.len(), light.len());
         let keep = |s: usize, t: usize| {
@@ -214,6 +229,15 @@ impl Bdpt {
             && keep(0, n_camera + 1)
         {
             l += beta * scene.escaped_radiance(d);
+            if let Some(r) = rec.record() {
+                let last = z.map(|path| VertexRef {
+                    path,
+                    vertex: n_camera - 1,
+                });
+                let ray = Ray::new(camera[n_camera - 1].p(), d);
+                let at = r.push_vertex(last, PathVertex::escaped(scene, &ray, None, beta));
+                r.contribute(at, beta * scene.escaped_radiance(d), Some(1.0));
+            }
         }
         for t in 1..=n_camera {
             // s = 1 with t ≥ 2 resamples its light point (next event
@@ -242,9 +266,54 @@ impl Bdpt {
                     Some(raster) => splats.push(Splat { raster, value }),
                     None => l += value,
                 }
+                if let Some(r) = rec.record() {
+                    record_connection(r, (z, y), &c, [s, t], w, value);
+                }
             }
         }
         l
+    }
+}
+
+/// Records strategy `(s, t)`'s weighted contribution `value` (weight `w`)
+/// between the recorded subpaths `(z, y)`: at the camera vertex that hit a
+/// light (`s = 0`), or as a connection from `z_{t−1}` (from `y_{s−1}` to the
+/// lens for `t = 1`).
+fn record_connection(
+    r: &mut PathRecord,
+    (z, y): (Option<usize>, Option<usize>),
+    c: &Connection,
+    [s, t]: [usize; 2],
+    w: f32,
+    value: Color,
+) {
+    let z_at = z.map(|path| VertexRef {
+        path,
+        vertex: t - 1,
+    });
+    let y_at = y.map(|path| VertexRef {
+        path,
+        vertex: s.max(1) - 1,
+    });
+    let sampled = c.sampled.map(|v| SegmentEnd::point(v.p()));
+    match (s, t) {
+        (0, _) => r.contribute(z_at, value, Some(w)),
+        (_, 1) => r.push_segment(y_at, |from| {
+            let lens = sampled.expect("t = 1 samples a lens point");
+            Segment::connection(from, lens, [s, t], Some(w), value, c.raster)
+        }),
+        (1, _) => r.push_segment(z_at, |from| {
+            let light = sampled.expect("s = 1 resamples the light point");
+            Segment::connection(from, light, [s, t], Some(w), value, None)
+        }),
+        _ => {
+            if let Some(to) = y_at {
+                r.push_segment(z_at, |from| {
+                    let to = SegmentEnd::Vertex(to);
+                    Segment::connection(from, to, [s, t], Some(w), value, None)
+                });
+            }
+        }
     }
 }
 
@@ -260,6 +329,17 @@ impl Integrator for Bdpt {
         sampler: &mut Sampler,
         splats: &mut Vec<Splat>,
     ) -> Color {
-        self.estimate(scene, pixel, sampler, splats)
+        self.estimate(scene, pixel, sampler, splats, &mut NoRecorder)
+    }
+
+    fn sample_recorded(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        splats: &mut Vec<Splat>,
+        record: &mut PathRecord,
+    ) -> Color {
+        self.estimate(scene, pixel, sampler, splats, record)
     }
 }

@@ -9,6 +9,7 @@
 //! BRDF (best for large lights and glossy or mirror surfaces).
 
 use super::continuation::sample_continuation;
+use super::record::{NoRecorder, PathRecord, PathRole, PathVertex, Pdf, Recorder};
 use super::{Integrator, camera_ray, nee};
 use crate::brdf::TransportMode;
 use crate::film::Splat;
@@ -32,22 +33,74 @@ impl Integrator for Direct {
         sampler: &mut Sampler,
         _splats: &mut Vec<Splat>,
     ) -> Color {
+        self.trace(scene, pixel, sampler, &mut NoRecorder)
+    }
+
+    fn sample_recorded(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _splats: &mut Vec<Splat>,
+        record: &mut PathRecord,
+    ) -> Color {
+        self.trace(scene, pixel, sampler, record)
+    }
+}
+
+impl Direct {
+    /// One sample, its hit, shadow ray and BRDF ray handed to `rec`.
+    fn trace<R: Recorder>(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        rec: &mut R,
+    ) -> Color {
         let ray = camera_ray(scene, pixel, sampler);
-        let Some(it) = scene.intersect(&ray) else {
-            return scene.escaped_radiance(ray.d);
+        let hit = scene.intersect(&ray);
+        let at = rec.record().and_then(|r| {
+            let lens = r.start_path(
+                PathRole::Camera,
+                None,
+                PathVertex::camera(ray.o, Color::ONE),
+            );
+            let pdf = Pdf::direction(scene.camera.pdf_we(&ray).pdf_w, false);
+            r.push_vertex(
+                lens,
+                PathVertex::hit(scene, &ray, hit.as_ref(), pdf, Color::ONE),
+            )
+        });
+        let Some(it) = hit else {
+            let le = scene.escaped_radiance(ray.d);
+            if let Some(r) = rec.record() {
+                r.contribute(at, le, None);
+            }
+            return le;
         };
         // L_e seen directly (depth 1).
         let mut l = scene.emitted(&it);
+        if let Some(r) = rec.record() {
+            r.contribute(at, l, None);
+        }
         let brdf = scene.brdf(&it);
 
         // Light sampling.
-        l += nee::sample_light(scene, &it, brdf, sampler, true);
+        let at_beta = at.map(|v| (v, Color::ONE));
+        l += nee::sample_light_recorded(scene, &it, brdf, sampler, true, rec, at_beta);
 
         // BRDF sampling: follow one direction and see whether it reaches a light.
         let Some(c) = sample_continuation(&it, brdf, TransportMode::Radiance, sampler) else {
             return l;
         };
         let next = scene.intersect(&c.ray);
+        let next_at = rec.record().and_then(|r| {
+            let pdf = Pdf::direction(c.sample.pdf_w, c.sample.is_delta);
+            r.push_vertex(
+                at,
+                PathVertex::hit(scene, &c.ray, next.as_ref(), pdf, c.weight),
+            )
+        });
         if let Some(e) = scene.emitter_hit(&c.ray, next.as_ref()) {
             let w = if c.sample.is_delta {
                 1.0
@@ -55,6 +108,9 @@ impl Integrator for Direct {
                 nee::brdf_sample_weight(scene, it.p, c.sample.pdf_w, &e, c.wi)
             };
             l += c.weight * e.le * w;
+            if let Some(r) = rec.record() {
+                r.contribute(next_at, c.weight * e.le * w, Some(w));
+            }
         }
         l
     }

@@ -36,6 +36,7 @@
 use super::Integrator;
 use super::camera_connection::connect_to_camera;
 use super::dimensions::LENS;
+use super::record::{NoRecorder, PathRecord, PathRole, Recorder, Segment, VertexRef};
 use super::subpath::light_subpath;
 use super::vertex::{path_vertices, with_subpaths};
 use crate::film::Splat;
@@ -73,17 +74,48 @@ impl Integrator for LightTracer {
         sampler: &mut Sampler,
         splats: &mut Vec<Splat>,
     ) -> Color {
+        self.trace(scene, sampler, splats, &mut NoRecorder)
+    }
+
+    fn sample_recorded(
+        &self,
+        scene: &Scene,
+        _pixel: UVec2,
+        sampler: &mut Sampler,
+        splats: &mut Vec<Splat>,
+        record: &mut PathRecord,
+    ) -> Color {
+        self.trace(scene, sampler, splats, record)
+    }
+}
+
+impl LightTracer {
+    /// One light path and its connections to the lens, handed to `rec`.
+    fn trace<R: Recorder>(
+        &self,
+        scene: &Scene,
+        sampler: &mut Sampler,
+        splats: &mut Vec<Splat>,
+        rec: &mut R,
+    ) -> Color {
         // s vertices joined to the lens give s + 1 vertices: s ≤ D.
         let max_vertices = path_vertices(self.max_depth) - 1;
         with_subpaths(|path, _| {
             light_subpath(scene, sampler, path, max_vertices, self.rr_depth);
-            for q in path.iter() {
+            let recorded = rec
+                .record()
+                .and_then(|r| r.push_subpath(scene, PathRole::Light, path));
+            for (i, q) in path.iter().enumerate() {
                 let u_lens = LENS.draw(sampler);
                 if let Some(c) = connect_to_camera(scene, q, u_lens) {
                     splats.push(Splat {
                         raster: c.camera.raster,
                         value: c.value,
                     });
+                    if let Some(r) = rec.record() {
+                        let from = recorded.map(|p| VertexRef { path: p, vertex: i });
+                        r.push_segment(from, |from| Segment::lens_connection(from, &c, i + 1));
+                    }
                 }
             }
         });

@@ -10,12 +10,14 @@
 //! bidirectional tracing [`vertex`], [`subpath`], [`camera_connection`],
 //! [`mis_weight`] and [`shading_normals`] (the adjoint correction of
 //! importance transport). [`dimensions`] names every random number they draw and
-//! gives each integrator's layout.
+//! gives each integrator's layout. [`record`] is the path recorder: what one
+//! sample traced, for the lab's inspector and the slides' path figures.
 
 use crate::film::Splat;
 use crate::math::{Color, UVec2};
 use crate::sampling::Sampler;
 use crate::scene::Scene;
+use record::PathRecord;
 
 /// An algorithm that estimates pixel values.
 pub trait Integrator: Sync {
@@ -32,6 +34,25 @@ pub trait Integrator: Sync {
         sampler: &mut Sampler,
         splats: &mut Vec<Splat>,
     ) -> Color;
+
+    /// The same sample as [`Integrator::sample`] (the same random numbers,
+    /// the same result bit for bit), with what it traced handed to `record`
+    /// ([`record`]). An integrator that does not record says so in the
+    /// record and computes the sample as usual.
+    fn sample_recorded(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        splats: &mut Vec<Splat>,
+        record: &mut PathRecord,
+    ) -> Color {
+        record.truncated = Some(format!(
+            "the {} integrator does not record its paths",
+            self.name()
+        ));
+        self.sample(scene, pixel, sampler, splats)
+    }
 }
 
 mod ao;
@@ -50,6 +71,7 @@ mod path;
 pub mod photon;
 pub mod photon_map;
 mod photon_mapping;
+pub mod record;
 pub mod roulette;
 pub mod shading_normals;
 pub mod sppm;

@@ -20,6 +20,7 @@
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use super::continuation::sample_continuation;
+use super::record::{NoRecorder, PathRecord, PathRole, PathVertex, Pdf, Recorder, VertexRef};
 use super::roulette::russian_roulette;
 use super::stop::stop_requested;
 use super::{Integrator, camera_ray};
@@ -159,8 +160,11 @@ impl NaiveRecursive {
     /// product of the BRDF weights `Π f_r |cos θ| / p` down to here, without
     /// the levels' `1/N`, and `product` the same with them (each branch's
     /// share of the pixel's estimate).
+    /// `rec` receives the ray's hit (a new path of the tree hanging from
+    /// `from.parent`, or the camera path's next vertex at depth 0) and
+    /// what it adds to the estimate, `product · L_e`.
     #[allow(clippy::too_many_arguments)]
-    fn radiance(
+    fn radiance<R: Recorder>(
         &self,
         scene: &Scene,
         ray: &Ray,
@@ -169,16 +173,32 @@ impl NaiveRecursive {
         product: Color,
         sampler: &mut Sampler,
         rays: &mut u64,
+        (rec, from): (&mut R, RecordedRay),
     ) -> Color {
         // N^D rays can take minutes: a stop request ends the sample at once.
         if stop_requested() {
             return Color::ZERO;
         }
         *rays += 1;
-        let Some(it) = scene.intersect(ray) else {
-            return scene.escaped_radiance(ray.d);
+        let hit = scene.intersect(ray);
+        let at = rec.record().and_then(|r| {
+            let v = PathVertex::hit(scene, ray, hit.as_ref(), from.pdf, product);
+            match depth {
+                0 => r.push_vertex(from.parent, v),
+                _ => r.start_path(PathRole::Branch, from.parent, v),
+            }
+        });
+        let Some(it) = hit else {
+            let le = scene.escaped_radiance(ray.d);
+            if let Some(r) = rec.record() {
+                r.contribute(at, product * le, None);
+            }
+            return le;
         };
         let mut l = scene.emitted(&it);
+        if let Some(r) = rec.record() {
+            r.contribute(at, product * l, None);
+        }
         if depth + 1 >= self.max_depth.unwrap_or(u32::MAX) {
             return l;
         }
@@ -204,6 +224,10 @@ impl NaiveRecursive {
                 };
                 weight /= q;
             }
+            let child = RecordedRay {
+                parent: at,
+                pdf: Pdf::direction(c.sample.pdf_w, c.sample.is_delta),
+            };
             sum += weight
                 * self.radiance(
                     scene,
@@ -213,6 +237,7 @@ impl NaiveRecursive {
                     product * weight / n as f32,
                     sampler,
                     rays,
+                    (&mut *rec, child),
                 );
         }
         l += sum / n as f32;
@@ -232,9 +257,56 @@ impl Integrator for NaiveRecursive {
         sampler: &mut Sampler,
         _splats: &mut Vec<Splat>,
     ) -> Color {
+        self.trace(scene, pixel, sampler, &mut NoRecorder)
+    }
+
+    fn sample_recorded(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _splats: &mut Vec<Splat>,
+        record: &mut PathRecord,
+    ) -> Color {
+        self.trace(scene, pixel, sampler, record)
+    }
+}
+
+/// Where a ray of the recursion is recorded: the recorded vertex it leaves
+/// and the density of its direction.
+#[derive(Clone, Copy, Debug)]
+struct RecordedRay {
+    parent: Option<VertexRef>,
+    pdf: Pdf,
+}
+
+impl NaiveRecursive {
+    /// One pixel sample's recursion, its tree handed to `rec`.
+    fn trace<R: Recorder>(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        rec: &mut R,
+    ) -> Color {
         let ray = camera_ray(scene, pixel, sampler);
         let mut rays = 0u64;
-        let l = self.radiance(scene, &ray, 0, Color::ONE, Color::ONE, sampler, &mut rays);
+        let from = match rec.record() {
+            Some(r) => RecordedRay {
+                parent: r.start_path(
+                    PathRole::Camera,
+                    None,
+                    PathVertex::camera(ray.o, Color::ONE),
+                ),
+                pdf: Pdf::direction(scene.camera.pdf_we(&ray).pdf_w, false),
+            },
+            None => RecordedRay {
+                parent: None,
+                pdf: Pdf::direction(0.0, false),
+            },
+        };
+        let (one, rec) = (Color::ONE, (rec, from));
+        let l = self.radiance(scene, &ray, 0, one, one, sampler, &mut rays, rec);
         self.rays.fetch_add(rays, Ordering::Relaxed);
         l
     }

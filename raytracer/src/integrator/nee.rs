@@ -9,6 +9,7 @@
 //! every integrator that connects a surface point to a light.
 
 use super::dimensions::{LIGHT_CHOICE, LIGHT_POINT};
+use super::record::{NoRecorder, Recorder, Segment, SegmentEnd, SegmentKind, VertexRef};
 use crate::brdf::Brdf;
 use crate::geometry::Interaction;
 use crate::light::LightSample;
@@ -61,6 +62,22 @@ pub fn sample_light(
     sampler: &mut Sampler,
     mis: bool,
 ) -> Color {
+    sample_light_recorded(scene, it, brdf, sampler, mis, &mut NoRecorder, None)
+}
+
+/// [`sample_light`], with its shadow ray (blocked or not) recorded as
+/// leaving the recorded vertex of `at`, its contribution scaled by the
+/// throughput `β` of `at` by which the caller scales the result.
+#[inline]
+pub fn sample_light_recorded<R: Recorder>(
+    scene: &Scene,
+    it: &Interaction,
+    brdf: &Brdf,
+    sampler: &mut Sampler,
+    mis: bool,
+    rec: &mut R,
+    at: Option<(VertexRef, Color)>,
+) -> Color {
     let Some(LightPoint { choice, sample: ls }) = sample_light_point(scene, it.p, sampler) else {
         return Color::ZERO;
     };
@@ -75,7 +92,18 @@ pub fn sample_light(
     } else {
         it.spawn_ray(ls.wi)
     };
-    if !scene.unoccluded(&shadow) {
+    let occluded = !scene.unoccluded(&shadow);
+    let record = |rec: &mut R, weight: Option<f32>, c: Color| {
+        if let Some(r) = rec.record() {
+            if let Some((from, beta)) = at {
+                r.push_segment(Some(from), |from| {
+                    shadow_ray(from, ls.p, occluded, weight, beta * c)
+                });
+            }
+        }
+    };
+    if occluded {
+        record(rec, None, Color::ZERO);
         return Color::ZERO;
     }
     let pdf_light_w = choice.pmf * ls.pdf_w;
@@ -85,7 +113,23 @@ pub fn sample_light(
     } else {
         power_heuristic(1.0, pdf_light_w, 1.0, brdf.pdf(wo, wi, it.uv))
     };
-    f * ls.li * (wi.z.abs() * weight / pdf_light_w)
+    let c = f * ls.li * (wi.z.abs() * weight / pdf_light_w);
+    record(rec, Some(weight), c);
+    c
+}
+
+/// The recorded shadow ray from `from` to the light point `p`.
+fn shadow_ray(from: VertexRef, p: Vec3A, occluded: bool, w: Option<f32>, c: Color) -> Segment {
+    Segment {
+        kind: SegmentKind::ShadowRay,
+        from,
+        to: SegmentEnd::point(p),
+        occluded,
+        strategy: None,
+        mis_weight: w,
+        contribution: c.to_array(),
+        splat: None,
+    }
 }
 
 /// The MIS weight of a (non-delta) BRDF sample that left the point `from` in

@@ -17,6 +17,7 @@
 //! scattering vertices (D = 1: only emitters seen directly).
 
 use super::continuation::sample_continuation;
+use super::record::{NoRecorder, PathRecord, PathRole, PathVertex, Pdf, Recorder};
 use super::roulette::russian_roulette;
 use super::{Integrator, camera_ray, nee};
 use crate::brdf::TransportMode;
@@ -88,9 +89,41 @@ impl Integrator for PathTracer {
         sampler: &mut Sampler,
         _splats: &mut Vec<Splat>,
     ) -> Color {
+        self.trace(scene, pixel, sampler, &mut NoRecorder)
+    }
+
+    fn sample_recorded(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _splats: &mut Vec<Splat>,
+        record: &mut PathRecord,
+    ) -> Color {
+        self.trace(scene, pixel, sampler, record)
+    }
+}
+
+impl PathTracer {
+    /// One path, its vertices, emitter hits and shadow rays handed to `rec`.
+    fn trace<R: Recorder>(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        rec: &mut R,
+    ) -> Color {
         let max_depth = self.max_depth.unwrap_or(u32::MAX);
         let use_nee = self.strategy != DirectStrategy::BrdfOnly;
         let mut ray = camera_ray(scene, pixel, sampler);
+        // The recorded vertex the path is at (always `None` when not recording).
+        let mut at = rec.record().and_then(|r| {
+            r.start_path(
+                PathRole::Camera,
+                None,
+                PathVertex::camera(ray.o, Color::ONE),
+            )
+        });
         let mut l = Color::ZERO;
         let mut beta = Color::ONE;
         // Relative IOR accumulated along the path (radiance is scaled by 1/η²
@@ -109,6 +142,13 @@ impl Integrator for PathTracer {
                 break;
             }
             let hit = scene.intersect(&ray);
+            if let Some(r) = rec.record() {
+                let pdf = match prev {
+                    Some(b) => Pdf::direction(b.pdf_w, b.is_delta),
+                    None => Pdf::direction(scene.camera.pdf_we(&ray).pdf_w, false),
+                };
+                at = r.push_vertex(at, PathVertex::hit(scene, &ray, hit.as_ref(), pdf, beta));
+            }
             // Emitted light reached by the ray (counted while depth < max_depth).
             if let Some(e) = scene.emitter_hit(&ray, hit.as_ref()) {
                 let weight = match (&prev, self.strategy) {
@@ -121,6 +161,9 @@ impl Integrator for PathTracer {
                     }
                 };
                 l += beta * e.le * weight;
+                if let Some(r) = rec.record() {
+                    r.contribute(at, beta * e.le * weight, Some(weight));
+                }
             }
             let Some(it) = hit else { break };
             if depth + 1 >= max_depth {
@@ -129,7 +172,16 @@ impl Integrator for PathTracer {
             let brdf = scene.brdf(&it);
             if use_nee {
                 let mis = self.strategy == DirectStrategy::Mis;
-                l += beta * nee::sample_light(scene, &it, brdf, sampler, mis);
+                l += beta
+                    * nee::sample_light_recorded(
+                        scene,
+                        &it,
+                        brdf,
+                        sampler,
+                        mis,
+                        rec,
+                        at.map(|v| (v, beta)),
+                    );
             }
             // Continue the path in one direction sampled from the BRDF.
             let Some(c) = sample_continuation(&it, brdf, TransportMode::Radiance, sampler) else {

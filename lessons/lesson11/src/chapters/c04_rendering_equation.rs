@@ -6,12 +6,15 @@
 
 use anyhow::{Context, Result};
 use raytracer::film::Image;
+use raytracer::integrator::record::VertexKind;
 use raytracer::integrator::{DirectStrategy, NaiveRecursive, PathTracer};
+use raytracer::math::UVec2;
 use raytracer::metrics::mean;
 use raytracer::render::RenderOptions;
 use raytracer::scene::Scene;
 
-use crate::page::{Figure, Section, Table, seconds_number};
+use crate::page::{Figure, Picture, Section, Table, seconds_number};
+use crate::plots::{Labels, pick_sample};
 use crate::render_files::render_to_files;
 use crate::tour::{Chapter, ChapterOutput, Quality, Tour};
 
@@ -216,7 +219,61 @@ fn render(tour: &Tour) -> Result<Section> {
             equal.spp
         ),
     )?;
+    // The trees are drawn over a clean picture of the same size (light
+    // sampling under MIS, 16 spp: a fraction of a second), not on the page.
+    let clean = RenderOptions {
+        spp: tour.overrides.spp.unwrap_or(16),
+        ..options.clone()
+    };
+    let picture = render_to_files(
+        &scene,
+        &PathTracer::default(),
+        &clean,
+        &s.dir,
+        "naive-tree-background",
+        0.0,
+    )?;
+    for (branching, depth, stem, caption) in [
+        (
+            vec![3],
+            3,
+            "naive-tree",
+            "The recursion of one pixel sample, recorded by the renderer and drawn over the \
+             picture: N = 3 rays from every hit, D = 3 (at most 1 + 3 + 9 rays); hits on the lamp \
+             are ringed.",
+        ),
+        (
+            vec![4, 2, 1],
+            4,
+            "naive-tree-4-2-1",
+            "The same pixel with 4, 2, 1 rays by level (many at the top, few below), D = 4: at \
+             most 1 + 4 + 8 + 8 rays.",
+        ),
+    ] {
+        let naive = NaiveRecursive::new(branching, Some(depth));
+        naive_tree(tour, &mut s, (&scene, &picture), &naive, equal.seed, stem, caption)?;
+    }
     Ok(s.section)
+}
+
+/// One recorded pixel sample of `naive` over `picture`: of a pixel on the
+/// back wall, the sample with the most rays that reach the lamp.
+fn naive_tree(
+    tour: &Tour,
+    s: &mut ChapterOutput,
+    (scene, picture): (&Scene, &Picture),
+    naive: &NaiveRecursive,
+    seed: u64,
+    stem: &str,
+    caption: &str,
+) -> Result<()> {
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    let pixel = UVec2::new(w / 2, h * 2 / 5);
+    let record = pick_sample(naive, scene, pixel, seed, |r| {
+        let lamp = r.paths.iter().flat_map(|p| &p.vertices);
+        lamp.filter(|v| v.kind == VertexKind::Light).count() as u32
+    });
+    tour.path_figure(s, &record, (scene, picture), Labels::None, stem, caption)
 }
 
 /// What a naive render measured: rays per pixel sample and seconds.

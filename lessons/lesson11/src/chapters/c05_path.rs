@@ -7,10 +7,12 @@ use anyhow::Result;
 use raytracer::brdf::Brdf;
 use raytracer::integrator::{DirectStrategy, PathTracer};
 use raytracer::light::{AreaLight, AreaShape, Light};
+use raytracer::math::UVec2;
 use raytracer::scene::Scene;
 
-use crate::page::Section;
-use crate::tour::{Chapter, Tour};
+use crate::page::{Picture, Section};
+use crate::plots::{Labels, pick_sample};
+use crate::tour::{Chapter, ChapterOutput, Tour};
 
 pub const CHAPTER: Chapter = Chapter::new(
     "path",
@@ -42,6 +44,7 @@ fn render(tour: &Tour) -> Result<Section> {
     )?;
     let pt = PathTracer::default();
     let mut done = Vec::new();
+    let mut last = None;
     for nominal in LADDER {
         let (scene, mut options) = tour.scene("cornell", nominal)?;
         options.spp = tour.overrides.spp.unwrap_or(nominal);
@@ -49,7 +52,7 @@ fn render(tour: &Tour) -> Result<Section> {
             continue;
         }
         done.push(options.spp);
-        tour.picture(
+        let picture = tour.picture(
             &mut s,
             &scene,
             &pt,
@@ -57,6 +60,10 @@ fn render(tour: &Tour) -> Result<Section> {
             &format!("cornell-path-{:03}spp", options.spp),
             "Path tracing (light and BRDF sampling under MIS, unlimited depth, roulette from depth 5).",
         )?;
+        last = Some((scene, options.seed, picture));
+    }
+    if let Some((scene, seed, picture)) = last {
+        path_sample(tour, &mut s, &scene, seed, &picture)?;
     }
     let (scene, options) = tour.scene("cornell", 16)?;
     for (strategy, stem, caption) in [
@@ -115,6 +122,40 @@ fn render(tour: &Tour) -> Result<Section> {
         tour.picture(&mut s, &scene, &pt, &options, stem, &caption)?;
     }
     Ok(s.section)
+}
+
+/// One recorded path-tracing sample over the picture: a sample of a pixel
+/// on the floor that makes all its bounces (D = 5: four hits), preferring
+/// shadow rays that reach the lamp.
+fn path_sample(
+    tour: &Tour,
+    s: &mut ChapterOutput,
+    scene: &Scene,
+    seed: u64,
+    picture: &Picture,
+) -> Result<()> {
+    let pt = PathTracer {
+        max_depth: Some(5),
+        ..PathTracer::default()
+    };
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    let pixel = UVec2::new(w / 2, h * 3 / 4);
+    let record = pick_sample(&pt, scene, pixel, seed, |r| {
+        let hits = r.paths[0].vertices.len() as u32;
+        let lit = r.segments.iter().filter(|s| !s.occluded).count() as u32;
+        10 * hits + lit
+    });
+    tour.path_figure(
+        s,
+        &record,
+        (scene, picture),
+        Labels::Subpaths,
+        "path-sample",
+        &format!(
+            "One path-tracing sample of pixel ({}, {}), recorded by the renderer and drawn over              the picture: the camera ray from the lens x₀, the bounces x₁ … (D = 5), and from              every vertex a shadow ray to a point on the lamp (green; red where blocked).",
+            pixel.x, pixel.y
+        ),
+    )
 }
 
 /// What Veach's scene is made of, read from the scene: the plates' Phong

@@ -3,9 +3,12 @@
 
 use anyhow::Result;
 use raytracer::integrator::{Bdpt, LightTracer, PathTracer};
+use raytracer::math::UVec2;
+use raytracer::scene::Scene;
 
-use crate::page::Section;
-use crate::tour::{Chapter, Tour};
+use crate::page::{Picture, Section};
+use crate::plots::{Labels, pick_sample};
+use crate::tour::{Chapter, ChapterOutput, Tour};
 
 pub const CHAPTER: Chapter = Chapter::new(
     "light",
@@ -31,7 +34,7 @@ fn render(tour: &Tour) -> Result<Section> {
     )?;
     let (scene, options) = tour.scene("cornell", 64)?;
     let lt = LightTracer::default();
-    tour.picture(
+    let picture = tour.picture(
         &mut c,
         &scene,
         &lt,
@@ -40,6 +43,7 @@ fn render(tour: &Tour) -> Result<Section> {
         "Cornell box, light tracing (unlimited depth, roulette from depth 5): the same picture \
          as path tracing, its noise spread differently, since each path lands where it may.",
     )?;
+    light_sample(tour, &mut c, &scene, options.seed, &picture)?;
     let (scene, options) = tour.scene("caustic", 32)?;
     let max_depth = Some(8);
     let pt = PathTracer {
@@ -85,4 +89,34 @@ fn render(tour: &Tour) -> Result<Section> {
          the glass ball from the camera subpaths.",
     )?;
     Ok(c.section)
+}
+
+/// One recorded light-tracing sample over the picture: a light path that
+/// bounces (D = 5), preferring one with many vertices seen by the camera.
+fn light_sample(
+    tour: &Tour,
+    c: &mut ChapterOutput,
+    scene: &Scene,
+    seed: u64,
+    picture: &Picture,
+) -> Result<()> {
+    let lt = LightTracer {
+        max_depth: Some(5),
+        ..LightTracer::default()
+    };
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    let record = pick_sample(&lt, scene, UVec2::new(w / 2, h / 2), seed, |r| {
+        let vertices = r.paths.first().map_or(0, |p| p.vertices.len()) as u32;
+        10 * r.segments.len() as u32 + vertices
+    });
+    tour.path_figure(
+        c,
+        &record,
+        (scene, picture),
+        Labels::Subpaths,
+        "light-sample",
+        "One light-tracing sample, recorded by the renderer and drawn over the picture: a light \
+         path y₀ y₁ … from a point on the lamp, each vertex joined to the camera (dashed), its \
+         contribution splatted where the camera sees it.",
+    )
 }

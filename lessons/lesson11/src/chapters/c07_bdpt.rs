@@ -6,11 +6,15 @@ use std::time::Instant;
 
 use anyhow::Result;
 use raytracer::integrator::Bdpt;
+use raytracer::integrator::record::{PathRecord, SegmentEnd, VertexRef};
+use raytracer::math::UVec2;
 use raytracer::render::render_strategies;
+use raytracer::scene::Scene;
 
-use crate::page::{Figure, Section, seconds_text};
+use crate::page::{Figure, Picture, Section, seconds_text};
+use crate::plots::{Labels, in_picture, pick_sample};
 use crate::render_files::write_image;
-use crate::tour::{Chapter, Quality, Tour};
+use crate::tour::{Chapter, ChapterOutput, Quality, Tour};
 
 pub const CHAPTER: Chapter = Chapter::new(
     "bdpt",
@@ -40,7 +44,7 @@ fn render(tour: &Tour) -> Result<Section> {
     )?;
     let (scene, options) = tour.scene("cornell", 32)?;
     let bd = Bdpt::default();
-    tour.picture(
+    let picture = tour.picture(
         &mut c,
         &scene,
         &bd,
@@ -48,6 +52,7 @@ fn render(tour: &Tour) -> Result<Section> {
         "cornell-bdpt",
         "Cornell box, bidirectional path tracing, unlimited depth (roulette from depth 5).",
     )?;
+    bdpt_sample(tour, &mut c, &scene, options.seed, &picture)?;
     let (mut scene, mut options) = tour.scene("cornell", 16)?;
     if tour.quality != Quality::Tiny {
         scene.set_resolution(96, 96);
@@ -92,4 +97,67 @@ fn render(tour: &Tour) -> Result<Section> {
         seconds_text(seconds)
     );
     Ok(c.section)
+}
+
+/// One recorded bidirectional sample over the picture: its camera subpath
+/// x₀ x₁ …, its light subpath y₀ y₁ …, and one connection between them
+/// (s ≥ 2 light and t ≥ 2 camera vertices: neither next event estimation
+/// nor light tracing), the one that contributed most (D = 5).
+fn bdpt_sample(
+    tour: &Tour,
+    c: &mut ChapterOutput,
+    scene: &Scene,
+    seed: u64,
+    picture: &Picture,
+) -> Result<()> {
+    let bd = Bdpt {
+        max_depth: Some(5),
+        ..Bdpt::default()
+    };
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    let mut record = pick_sample(&bd, scene, UVec2::new(w / 2, h * 3 / 4), seed, |r| {
+        let Some(i) = strongest_connection(r) else {
+            return 0;
+        };
+        // Every vertex of the path it makes is in the picture.
+        let [s, t] = r.segments[i].strategy.unwrap_or_default().map(|n| n as usize);
+        let seen = |path, n| (0..n).all(|vertex| in_picture(r, VertexRef { path, vertex }, (w, h)));
+        100 + 50 * u32::from(seen(0, t) && seen(1, s))
+            + r.paths.iter().map(|p| p.vertices.len().min(4) as u32).sum::<u32>()
+    });
+    let keep = strongest_connection(&record);
+    record.segments = keep
+        .map(|i| vec![record.segments[i].clone()])
+        .unwrap_or_default();
+    let st = record
+        .segments
+        .first()
+        .and_then(|s| s.strategy)
+        .map_or_else(String::new, |[s, t]| format!(" (here s = {s}, t = {t})"));
+    tour.path_figure(
+        c,
+        &record,
+        (scene, picture),
+        Labels::Subpaths,
+        "bdpt-sample",
+        &format!(
+            "One bidirectional sample, recorded by the renderer and drawn over the picture: the \
+             camera subpath x₀ x₁ …, the light subpath y₀ y₁ … from the lamp, and the connection \
+             of y_(s−1) to x_(t−1) that makes the strategy (s, t){st}."
+        ),
+    )
+}
+
+/// The index of the recorded connection between two subpath vertices
+/// (s ≥ 2, t ≥ 2) with the largest contribution.
+fn strongest_connection(r: &PathRecord) -> Option<usize> {
+    let brightness = |i: &usize| r.segments[*i].contribution.iter().sum::<f32>();
+    (0..r.segments.len())
+        .filter(|&i| {
+            let s = &r.segments[i];
+            matches!(s.to, SegmentEnd::Vertex(_))
+                && s.strategy.is_some_and(|[s, t]| s >= 2 && t >= 2)
+                && brightness(&i) > 0.0
+        })
+        .max_by(|a, b| brightness(a).total_cmp(&brightness(b)))
 }

@@ -62,6 +62,10 @@ pub fn run_chapters(args: &TourArgs, only: Option<&str>) -> Result<()> {
     let tour = Tour::new(args)?;
     let start = Instant::now();
     let mut page = Page::new("Lecture 11: stereoscopy and global illumination, rendered");
+    page.intro = "To watch these pictures converge and turn the lecture's knobs yourself \
+                  (integrator, max depth, samples, stereo separation, BRDF parameters), run \
+                  `cargo run --release -p lesson11 -- lab` and open the address it prints."
+        .into();
     for chapter in CHAPTERS {
         let name = chapter.name;
         if only.is_some_and(|o| o != name) {

@@ -1,10 +1,11 @@
 //! The subcommands that are not chapters of the lecture: rendering one scene,
-//! the scenes, the benchmark, the student's exercises, the instructor's
-//! references and slides. One file each; a new command is one more file and
+//! the lab in the browser, the scenes, the benchmark, the student's
+//! exercises, the instructor's references and slides. One file each; a new command is one more file and
 //! one more variant below.
 
 mod bench;
 mod exercises;
+mod lab;
 mod references;
 mod render;
 mod scenes;
@@ -19,6 +20,8 @@ use clap::Subcommand;
 pub enum Command {
     /// Render one scene with one integrator to PNG (to look at) and EXR (to measure).
     Render(Box<render::RenderArgs>),
+    /// The lecture live in the browser: a progressive render with its knobs, a live stereo pair, BRDF lobes and albedo, and a path inspector.
+    Lab(lab::LabArgs),
     /// List the built-in scenes, or write one out as a file to edit.
     Scenes(scenes::ScenesArgs),
     /// Measure the renderer: rays per second on big meshes, samples per second on the Cornell box.
@@ -39,6 +42,7 @@ impl Command {
     pub fn run(self) -> Result<()> {
         match self {
             Command::Render(args) => render::run(&args),
+            Command::Lab(args) => lab::run(&args),
             Command::Scenes(args) => scenes::run(&args),
             Command::Bench(args) => bench::run(&args),
             Command::Exercises(args) => self::exercises::run_exercises(&args),

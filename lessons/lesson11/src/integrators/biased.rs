@@ -201,10 +201,10 @@ pub fn build(
     max_depth: Option<u32>,
     rr_depth: u32,
     force: bool,
-) -> Result<Box<dyn Integrator>> {
+) -> Result<Box<dyn Integrator + Send>> {
     let seed = options.seed;
     let stop = interrupt_flag();
-    let (integrator, summary): (Box<dyn Integrator>, String) = match kind {
+    let (integrator, summary): (Box<dyn Integrator + Send>, String) = match kind {
         BiasedKind::Photon => {
             let s = args.photon(max_depth, rr_depth, seed)?;
             check_memory(

@@ -34,6 +34,8 @@ impl Section {
 /// The whole page.
 pub struct Page {
     pub title: String,
+    /// A paragraph under the title (may be empty).
+    pub intro: String,
     pub sections: Vec<Section>,
 }
 
@@ -48,6 +50,7 @@ impl Page {
     pub fn new(title: &str) -> Self {
         Page {
             title: title.into(),
+            intro: String::new(),
             sections: Vec::new(),
         }
     }
@@ -63,6 +66,9 @@ impl Page {
              figcaption{{font-size:0.9rem;color:#bbb}} table{{border-collapse:collapse;margin:1rem 0}} td,th{{border:1px solid #444;padding:0.2rem 0.6rem;text-align:right}} caption{{text-align:left;color:#bbb}} a{{color:#8cf}}</style></head><body>\n<h1>{t}</h1>\n",
             t = escape(&self.title)
         );
+        if !self.intro.is_empty() {
+            let _ = writeln!(h, "<p>{}</p>", escape(&self.intro));
+        }
         for s in &self.sections {
             let _ = writeln!(
                 h,

@@ -2,16 +2,20 @@
 //! polar plots of BRDF lobes. SVG needs no fonts or libraries at build time and every browser
 //! shows it, so the lesson's page stays self-contained. One plot is an image
 //! instead, because it lies over a rendered picture pixel for pixel: the tile
-//! z-map of two renders.
+//! z-map of two renders. Path figures are SVG drawn over a render, which they
+//! embed.
 
 mod bars;
 mod chart;
+mod data_uri;
+mod path_figure;
 mod polar;
 mod series;
 mod zmap;
 
 pub use bars::Bars;
 pub use chart::{Chart, Scale};
+pub use path_figure::{Labels, in_picture, path_figure_svg, pick_sample};
 pub use polar::polar_svg;
 pub use series::Series;
 pub use zmap::zmap_image;

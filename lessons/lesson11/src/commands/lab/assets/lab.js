@@ -1,0 +1,589 @@
+// The lab's page: controls that start renders on the local server, one
+// long-polling loop that shows each new snapshot, the BRDF plots and the
+// path inspector. No library, no network beyond the lab's own server.
+// `#selftest` in the address runs a check of the page and writes its
+// findings into <pre id="selftest"> (the lab's browser test reads them).
+'use strict';
+
+const $ = (id) => document.getElementById(id);
+const page = Array.from(crypto.getRandomValues(new Uint8Array(8)), (b) => b.toString(16).padStart(2, '0')).join('');
+const state = {
+  tab: 'render',
+  job: null,        // the status of the page's render
+  shown: -1,        // the snapshot version on screen
+  loading: false,   // an image is loading
+  again: false,     // load again once it is done (a newer snapshot or exposure)
+  closed: false,    // stop polling (self-test done)
+  kick: null,       // wakes the poll loop when a render starts
+  onImage: [],      // self-test hooks
+};
+
+// ---- talking to the server ----
+
+function query(params, withPage = true) {
+  const q = new URLSearchParams(withPage ? { page } : {});
+  for (const [k, v] of Object.entries(params)) {
+    if (v !== undefined && v !== null && v !== '') q.set(k, v);
+  }
+  return q.toString();
+}
+
+async function call(method, path, params, withPage = true) {
+  const response = await fetch(`${path}?${query(params, withPage)}`, { method, cache: 'no-store' });
+  const type = response.headers.get('Content-Type') || '';
+  const body = type.startsWith('application/json') ? await response.json() : (await response.text()).trim();
+  return { status: response.status, body };
+}
+
+function showError(id, message) {
+  const el = $(id);
+  el.textContent = message || '';
+  el.hidden = !message;
+}
+
+// ---- starting renders ----
+
+function formParams(form) {
+  const params = {};
+  for (const el of form.elements) {
+    if (!el.name || el.disabled || el.dataset.display) continue;
+    if (el.type === 'checkbox') { if (el.checked) params[el.name] = '1'; continue; }
+    if (el.value !== '') params[el.name] = el.value;
+  }
+  return params;
+}
+
+function renderParams() {
+  const params = formParams($('render-form'));
+  delete params.exposure;
+  const integrator = params.integrator;
+  if (integrator === 'direct' || integrator === 'ao') delete params['max-depth'];
+  if (integrator !== 'naive') delete params.branching;
+  return params;
+}
+
+async function start(kind, path, params, errorId) {
+  const r = await call('POST', path, params);
+  if (r.status !== 200) {
+    showError(errorId, typeof r.body === 'string' ? r.body : `error ${r.status}`);
+    return null;
+  }
+  showError(errorId, '');
+  state.job = r.body;
+  state.shown = -1;
+  if (state.kick) state.kick();
+  updateStats();
+  return r.body;
+}
+
+function startRender() {
+  clearInspector();
+  return start('render', '/api/render', renderParams(), 'r-error');
+}
+
+function stereoParams() {
+  const params = formParams($('stereo-form'));
+  if ($('s-focus').checked) delete params.convergence;
+  return params;
+}
+
+function startStereo() {
+  return start('stereo', '/api/stereo', stereoParams(), 's-error');
+}
+
+function brdfParams() {
+  const params = formParams($('brdf-form'));
+  const model = params.model;
+  if (model === 'phong') params.exponent = exponent().toString();
+  else delete params.phong;
+  if (model !== 'glass') delete params.ior;
+  return params;
+}
+
+function startSphere() {
+  const params = brdfParams();
+  delete params.theta;
+  params.spp = '256';
+  return start('brdf', '/api/brdf-sphere', params, 'b-error');
+}
+
+// ---- the poll loop: one long poll at a time, a new picture when there is one ----
+
+const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+
+async function pollLoop() {
+  while (!state.closed) {
+    let status = null;
+    try {
+      const after = state.job ? state.job.version : 0;
+      const r = await call('GET', '/api/status', state.job ? { after } : {});
+      status = r.status === 200 ? r.body : null;
+    } catch (e) {
+      await sleep(1000);
+      continue;
+    }
+    const job = status && status.job;
+    if (job && (!state.job || job.id >= state.job.id)) {
+      state.job = job;
+      updateStats();
+      if (job.version !== state.shown) loadPicture();
+    }
+    if (!job || job.done) {
+      // Nothing will change until a new render starts.
+      await Promise.race([sleep(1000), new Promise((resolve) => { state.kick = resolve; })]);
+      state.kick = null;
+    }
+  }
+}
+
+function pictureUrl(job) {
+  const v = job.version;
+  const id = job.id;
+  if (job.kind === 'stereo') {
+    return `/api/stereo.png?${query({ job: id, mode: $('s-mode').value, desaturate: $('s-desaturate').value, exposure: $('s-exposure').value, v })}`;
+  }
+  const exposure = job.kind === 'render' ? $('r-exposure').value : 0;
+  return `/api/image.png?${query({ job: id, exposure, v })}`;
+}
+
+const imageOf = { render: 'r-image', stereo: 's-image', brdf: 'b-image' };
+
+// Loads the newest snapshot into a hidden image and swaps it in when whole
+// (no flicker); one load at a time.
+function loadPicture() {
+  const job = state.job;
+  if (!job || job.version === 0) return;
+  if (state.loading) { state.again = true; return; }
+  state.loading = true;
+  const img = new Image();
+  const done = () => {
+    state.loading = false;
+    if (state.again) { state.again = false; loadPicture(); }
+  };
+  img.onload = () => {
+    const target = $(imageOf[job.kind]);
+    target.src = img.src;
+    target.dataset.version = job.version;
+    state.shown = job.version;
+    sizeOverlay(job);
+    for (const hook of state.onImage) hook(job, target);
+    done();
+  };
+  img.onerror = done;
+  img.src = pictureUrl(job);
+}
+
+function fmt(x) {
+  if (x >= 1e9) return `${(x / 1e9).toFixed(2)} G`;
+  if (x >= 1e6) return `${(x / 1e6).toFixed(2)} M`;
+  if (x >= 1e3) return `${(x / 1e3).toFixed(1)} k`;
+  return x.toFixed(0);
+}
+
+function updateStats() {
+  const job = state.job;
+  if (!job) return;
+  const spp = job.spp >= 10 ? job.spp.toFixed(0) : job.spp.toFixed(1);
+  let text = `<strong>${spp}</strong> of ${job.target_spp} spp · ${fmt(job.samples_per_second)} samples/s · ${job.elapsed.toFixed(1)} s · ${job.width}×${job.height}`;
+  if (job.done) text += job.interrupted ? ' · stopped' : ' · done';
+  if (job.nonfinite > 0) text += ` · ${job.nonfinite} NaN/negative samples dropped`;
+  const ids = { render: ['r-stats', 'r-command'], stereo: ['s-stats', 's-command'], brdf: ['b-stats', null] };
+  const [stats, command] = ids[job.kind];
+  $(stats).innerHTML = text;
+  if (command) {
+    let line = job.command;
+    if (job.kind === 'render' && Number($('r-exposure').value) !== 0) line += ` --exposure ${$('r-exposure').value}`;
+    if (job.kind === 'stereo') line += ` --mode ${$('s-mode').value} --desaturate ${$('s-desaturate').value}`;
+    $(command).textContent = line;
+  }
+  if (job.kind === 'render') $('r-exr').href = `/api/image.exr?${query({ job: job.id, v: job.version })}`;
+}
+
+// ---- the path inspector ----
+
+function sizeOverlay(job) {
+  if (job.kind !== 'render') return;
+  $('r-overlay').setAttribute('viewBox', `0 0 ${job.width} ${job.height}`);
+}
+
+function clearInspector() {
+  $('r-overlay').replaceChildren();
+  $('inspector-table').hidden = true;
+  $('inspector-note').textContent = '';
+}
+
+const SVG = 'http://www.w3.org/2000/svg';
+function svg(name, attrs, parent) {
+  const el = document.createElementNS(SVG, name);
+  for (const [k, v] of Object.entries(attrs)) el.setAttribute(k, v);
+  if (parent) parent.appendChild(el);
+  return el;
+}
+
+async function inspect(event) {
+  const job = state.job;
+  if (!job || job.kind !== 'render') return;
+  const img = $('r-image');
+  const box = img.getBoundingClientRect();
+  const x = Math.floor(((event.clientX - box.left) / box.width) * job.width);
+  const y = Math.floor(((event.clientY - box.top) / box.height) * job.height);
+  if (x < 0 || y < 0 || x >= job.width || y >= job.height) return;
+  clearInspector();
+  const overlay = $('r-overlay');
+  svg('rect', { x, y, width: 1, height: 1, class: 'clicked', fill: 'none', stroke: '#fff', 'stroke-width': 0.5 }, overlay);
+  const r = await call('GET', '/api/paths', { x, y, sample: $('i-sample').value });
+  const note = $('inspector-note');
+  note.className = 'note';
+  state.record = r.status === 200 ? r.body : null;
+  if (r.status === 200) {
+    drawPaths(r.body);
+    note.textContent = `pixel (${x}, ${y}), sample ${r.body.sample}: estimate ${rgb(r.body.estimate)}` +
+      (r.body.truncated ? ` (${r.body.truncated})` : '');
+  } else {
+    note.textContent = `pixel (${x}, ${y}): ${r.body}`;
+  }
+  note.dataset.status = r.status;
+}
+
+const ROLE_COLOUR = { camera: '#ffcc33', light: '#66ccff', branch: '#cc88ff' };
+
+function rgb(c) { return c ? `(${c.map((v) => Number(v).toPrecision(3)).join(', ')})` : '—'; }
+
+// Draws a path record (see paths.rs for its shape) over the picture and
+// lists its vertices and segments.
+function drawPaths(record) {
+  const overlay = $('r-overlay');
+  const centre = [record.pixel[0] + 0.5, record.pixel[1] + 0.5];
+  const at = (v, i) => v.raster || (v.kind === 'camera' || i === 0 ? centre : null);
+  const vertexAt = (ref) => record.paths[ref.path] && record.paths[ref.path].vertices[ref.vertex];
+  const point = (ref) => { const v = vertexAt(ref); return v ? at(v, ref.vertex) : null; };
+  record.paths.forEach((path, p) => {
+    const pts = [];
+    if (path.parent) { const q = point(path.parent); if (q) pts.push(q); }
+    path.vertices.forEach((v, i) => { const q = at(v, i); if (q) pts.push(q); });
+    const colour = ROLE_COLOUR[path.role] || '#fff';
+    svg('polyline', { points: pts.map((q) => q.join(',')).join(' '), fill: 'none', stroke: colour, 'stroke-width': 0.6, class: `path ${path.role}`, 'data-path': p }, overlay);
+    for (const q of pts) svg('circle', { cx: q[0], cy: q[1], r: 0.9, fill: colour, class: 'vertex' }, overlay);
+  });
+  for (const s of record.segments) {
+    const a = point(s.from);
+    const b = s.to.vertex ? point(s.to.vertex) : s.to.point && s.to.point.raster;
+    if (!a || !b) continue;
+    const colour = s.occluded ? '#f66' : s.kind === 'shadow-ray' ? '#6f6' : '#6ff';
+    svg('line', { x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: colour, 'stroke-width': 0.4, 'stroke-dasharray': '1.5 1', class: `segment ${s.kind}` }, overlay);
+  }
+  // Connections to the lens (t = 1) land on other pixels: a ring where each was splatted.
+  for (const s of record.segments) {
+    if (s.splat) svg('circle', { cx: s.splat[0], cy: s.splat[1], r: 1.4, fill: 'none', stroke: '#6ff', 'stroke-width': 0.4, class: 'splat' }, overlay);
+  }
+  const table = $('inspector-table');
+  const head = ['path', 'vertex', 'kind', 'position', 'BRDF', 'pdf', 'throughput', 'MIS weight', 'contribution'];
+  const rows = [head];
+  record.paths.forEach((path, p) => path.vertices.forEach((v, i) => rows.push([
+    `${p} (${path.role})`, i, v.kind, rgb(v.position), v.brdf || '—',
+    v.pdf ? `${Number(v.pdf.value).toPrecision(4)} per ${v.pdf.measure}` : '—',
+    rgb(v.throughput), v.mis_weight == null ? '—' : Number(v.mis_weight).toFixed(3), rgb(v.contribution),
+  ])));
+  record.segments.forEach((s) => rows.push([
+    s.kind, `${s.from.path}.${s.from.vertex} → ${s.to.vertex ? `${s.to.vertex.path}.${s.to.vertex.vertex}` : rgb(s.to.point.position)}`,
+    s.occluded ? 'occluded' : 'visible',
+    s.strategy ? `s=${s.strategy[0]}, t=${s.strategy[1]}` : '', s.splat ? `splat at ${rgb(s.splat)}` : '', '', '',
+    s.mis_weight == null ? '—' : Number(s.mis_weight).toFixed(3), rgb(s.contribution),
+  ]));
+  table.replaceChildren(...rows.map((row, r) => {
+    const tr = document.createElement('tr');
+    for (const cell of row) {
+      const td = document.createElement(r === 0 ? 'th' : 'td');
+      td.textContent = cell;
+      tr.appendChild(td);
+    }
+    return tr;
+  }));
+  table.hidden = false;
+}
+
+// ---- the BRDF tab ----
+
+const exponent = () => Math.round(Math.pow(10, Number($('b-exponent-slider').value)) - 1);
+let brdfBusy = false, brdfAgain = false;
+
+async function updateBrdf() {
+  if (brdfBusy) { brdfAgain = true; return; }
+  brdfBusy = true;
+  const r = await call('GET', '/api/brdf', brdfParams(), false);
+  brdfBusy = false;
+  if (r.status !== 200) showError('b-error', r.body);
+  else { showError('b-error', ''); plotBrdf(r.body); }
+  if (brdfAgain) { brdfAgain = false; updateBrdf(); }
+}
+
+function plotBrdf(a) {
+  $('b-formula').textContent = a.formula;
+  const verdict = $('b-verdict');
+  verdict.textContent = `Directional albedo at θ = ${a.theta}°: ${a.albedo_at_theta.toFixed(3)}. The BRDF ${a.verdict}.`;
+  verdict.className = `verdict ${a.conserves_energy ? 'good' : 'bad'}`;
+  verdict.dataset.conserves = a.conserves_energy;
+  // Lobe: polar, the normal up, θ measured from it (+ to the right).
+  const lobe = $('b-lobe');
+  lobe.replaceChildren();
+  // Below the surface only glass sends light.
+  const refracts = a.deltas.some(([d]) => Math.abs(d) > 90);
+  lobe.setAttribute('viewBox', refracts ? '-110 -110 220 220' : '-110 -110 220 120');
+  svg('line', { x1: -105, y1: 0, x2: 105, y2: 0, stroke: '#666', 'stroke-width': 0.8 }, lobe);
+  svg('line', { x1: 0, y1: 0, x2: 0, y2: -100, stroke: '#444', 'stroke-dasharray': '2 2', 'stroke-width': 0.6 }, lobe);
+  const polar = (deg, r) => [r * Math.sin(deg * Math.PI / 180), -r * Math.cos(deg * Math.PI / 180)];
+  const [lx, ly] = polar(-a.theta, 100);
+  svg('line', { x1: lx, y1: ly, x2: 0, y2: 0, stroke: '#fc3', 'stroke-width': 1.5 }, lobe);
+  const [mx, my] = polar(a.theta, 100);
+  svg('line', { x1: 0, y1: 0, x2: mx, y2: my, stroke: '#666', 'stroke-dasharray': '3 3', 'stroke-width': 0.8 }, lobe);
+  const peak = Math.max(...a.lobe.map((p) => p[1]));
+  if (peak > 0) {
+    const pts = a.lobe.map(([d, f]) => polar(d, 95 * f / peak).join(',')).join(' ');
+    svg('polyline', { points: `0,0 ${pts} 0,0`, fill: 'rgba(136,204,255,0.25)', stroke: '#8cf', 'stroke-width': 1.2 }, lobe);
+  }
+  for (const [d, w] of a.deltas) {
+    const [x, y] = polar(d, 95 * Math.min(1, w));
+    svg('line', { x1: 0, y1: 0, x2: x, y2: y, stroke: '#8cf', 'stroke-width': 2 }, lobe);
+  }
+  $('b-peak').textContent = peak > 0 ? `(peak f_r = ${peak.toPrecision(4)} sr⁻¹)` : a.deltas.length ? '(delta lobes: arrows show each lobe’s share)' : '';
+  // Albedo against θ_o, y up to max(1.2, the largest value).
+  const plot = $('b-albedo-plot');
+  plot.replaceChildren();
+  const top = Math.max(1.2, a.max_albedo * 1.1);
+  const X = (d) => 30 + d * 260 / 90, Y = (v) => 180 - v * 170 / top;
+  svg('line', { x1: 30, y1: 180, x2: 290, y2: 180, stroke: '#666' }, plot);
+  svg('line', { x1: 30, y1: 10, x2: 30, y2: 180, stroke: '#666' }, plot);
+  svg('line', { x1: 30, y1: Y(1), x2: 290, y2: Y(1), stroke: '#f77', 'stroke-dasharray': '4 3' }, plot);
+  for (const [v, label] of [[0, '0'], [1, '1']]) {
+    const t = svg('text', { x: 24, y: Y(v) + 4, 'text-anchor': 'end', fill: '#aaa', 'font-size': 10 }, plot);
+    t.textContent = label;
+  }
+  for (const d of [0, 30, 60, 90]) {
+    const t = svg('text', { x: X(d), y: 195, 'text-anchor': 'middle', fill: '#aaa', 'font-size': 10 }, plot);
+    t.textContent = `${d}°`;
+  }
+  svg('polyline', { points: a.albedo.map(([d, v]) => `${X(d)},${Y(v)}`).join(' '), fill: 'none', stroke: a.conserves_energy ? '#7d7' : '#f77', 'stroke-width': 1.5 }, plot);
+  svg('circle', { cx: X(a.theta), cy: Y(a.albedo_at_theta), r: 3, fill: '#fc3' }, plot);
+}
+
+// ---- controls ----
+
+function showFor(integrator) {
+  const uses = (cls, yes) => document.querySelectorAll(`#render-form .${cls}`).forEach((el) => { el.hidden = !yes; });
+  uses('depth', integrator !== 'direct' && integrator !== 'ao');
+  uses('naive', integrator === 'naive');
+  const entry = (window.catalogue.integrators || []).find((i) => i[0] === integrator);
+  $('r-integrator-help').textContent = entry ? entry[1] : '';
+}
+
+function showBrdfControls() {
+  const model = $('b-model').value;
+  document.querySelectorAll('#brdf-form .phong').forEach((el) => { el.hidden = model !== 'phong'; });
+  document.querySelectorAll('#brdf-form .glass').forEach((el) => { el.hidden = model !== 'glass'; });
+}
+
+function fill(select, items, chosen) {
+  select.replaceChildren(...items.map(([value, label]) => {
+    const o = document.createElement('option');
+    o.value = value;
+    o.textContent = label;
+    o.selected = value === chosen;
+    return o;
+  }));
+}
+
+// Calls `f` at most once per animation frame, with the latest state.
+function perFrame(f) {
+  let queued = false;
+  return () => {
+    if (queued) return;
+    queued = true;
+    requestAnimationFrame(() => { queued = false; f(); });
+  };
+}
+
+function selectTab(tab) {
+  state.tab = tab;
+  for (const name of ['render', 'stereo', 'brdf']) {
+    $(`tab-${name}`).setAttribute('aria-selected', String(name === tab));
+    $(`panel-${name}`).hidden = name !== tab;
+  }
+  if (location.hash !== '#selftest') history.replaceState(null, '', tab === 'render' ? location.pathname : `#${tab}`);
+  // One render at a time per page: the tab shown is the one rendering.
+  if (tab === 'render') return startRender();
+  if (tab === 'stereo') return startStereo();
+  updateBrdf();
+  return startSphere();
+}
+
+function echo(id, text) { $(`${id}-out`).textContent = text; }
+
+async function setup() {
+  const r = await call('GET', '/api/scenes', {}, false);
+  window.catalogue = r.body;
+  const scenes = r.body.scenes.map((s) => [s.name, s.builtin ? s.name : `${s.name} (file)`]);
+  fill($('r-scene'), scenes, 'cornell');
+  fill($('s-scene'), scenes, 'stereo');
+  const integrators = r.body.integrators.map((i) => [i[0], i[0]]);
+  fill($('r-integrator'), integrators, 'path');
+  fill($('s-integrator'), integrators, 'path');
+  fill($('s-mode'), r.body.composites.map((c) => [c, c]), 'red-cyan');
+  for (const el of document.querySelectorAll('select, input')) {
+    const title = (r.body.scenes.find((s) => s.name === el.value) || {}).description;
+    if (el.tagName === 'SELECT' && title) el.title = title;
+  }
+  showFor('path');
+  showBrdfControls();
+
+  const restartRender = perFrame(startRender);
+  $('render-form').addEventListener('input', (e) => {
+    if (e.target.id === 'r-exposure') { echo('r-exposure', e.target.value); updateStats(); loadPicture(); return; }
+    if (e.target.name === 'integrator') showFor(e.target.value);
+    if (e.target.type === 'number' || e.target.type === 'text') return; // on change
+    restartRender();
+  });
+  $('render-form').addEventListener('change', (e) => {
+    if (e.target.type === 'number' || e.target.type === 'text') restartRender();
+  });
+  $('render-form').addEventListener('submit', (e) => { e.preventDefault(); restartRender(); });
+  $('r-stop').addEventListener('click', () => call('POST', '/api/stop', {}));
+  $('r-picture').addEventListener('click', inspect);
+
+  const restartStereo = perFrame(startStereo);
+  $('stereo-form').addEventListener('input', (e) => {
+    const id = e.target.id;
+    if (id === 's-separation') echo('s-separation', e.target.value);
+    if (id === 's-convergence') echo('s-convergence', e.target.value);
+    if (id === 's-desaturate') echo('s-desaturate', e.target.value);
+    if (id === 's-exposure') echo('s-exposure', e.target.value);
+    if (id === 's-focus') {
+      $('s-convergence').disabled = e.target.checked;
+      echo('s-convergence', e.target.checked ? 'focus' : $('s-convergence').value);
+    }
+    // The composite, desaturation and exposure only show the same pair anew.
+    if (e.target.dataset.display && id !== 's-focus') { updateStats(); loadPicture(); return; }
+    if (e.target.type === 'number') return; // on change
+    restartStereo();
+  });
+  $('stereo-form').addEventListener('change', (e) => { if (e.target.type === 'number') restartStereo(); });
+  $('stereo-form').addEventListener('submit', (e) => { e.preventDefault(); restartStereo(); });
+
+  const restartSphere = perFrame(startSphere);
+  $('brdf-form').addEventListener('input', (e) => {
+    const id = e.target.id;
+    if (id === 'b-albedo') echo('b-albedo', e.target.value);
+    if (id === 'b-exponent-slider') echo('b-exponent', exponent());
+    if (id === 'b-ior') echo('b-ior', e.target.value);
+    if (id === 'b-theta') echo('b-theta', e.target.value);
+    if (id === 'b-model') showBrdfControls();
+    updateBrdf();
+    if (!e.target.dataset.plotOnly) restartSphere();
+  });
+  $('brdf-form').addEventListener('submit', (e) => e.preventDefault());
+
+  for (const name of ['render', 'stereo', 'brdf']) {
+    $(`tab-${name}`).addEventListener('click', () => selectTab(name));
+  }
+  pollLoop();
+  // `#stereo` or `#brdf` opens that tab (links from the tour page and the slides).
+  const tab = location.hash.slice(1);
+  if (tab === 'selftest') selftest();
+  else selectTab(['stereo', 'brdf'].includes(tab) ? tab : 'render');
+}
+
+// ---- the self-test (#selftest) ----
+
+function checksum(img) {
+  const canvas = document.createElement('canvas');
+  canvas.width = img.naturalWidth;
+  canvas.height = img.naturalHeight;
+  const ctx = canvas.getContext('2d');
+  ctx.drawImage(img, 0, 0);
+  const data = ctx.getImageData(0, 0, canvas.width, canvas.height).data;
+  let sum = 0;
+  for (let i = 0; i < data.length; i += 4) sum += data[i] + data[i + 1] + data[i + 2];
+  return sum;
+}
+
+async function until(check, ms) {
+  const end = performance.now() + ms;
+  while (performance.now() < end) {
+    const value = check();
+    if (value) return value;
+    await sleep(50);
+  }
+  return null;
+}
+
+async function selftest() {
+  const out = { errors: [], step: 'start' };
+  const step = (name) => { out.step = name; $('selftest').textContent = JSON.stringify(out); };
+  try {
+    const form = $('render-form');
+    form.elements.scene.value = 'cornell';
+    form.elements.integrator.value = 'path';
+    form.elements.width.value = '64';
+    form.elements.height.value = '64';
+    form.elements.spp.value = '4096';
+    const seen = [];
+    state.onImage.push((job, img) => {
+      if (job.kind === 'render') seen.push({ version: job.version, spp: job.spp, sum: checksum(img), width: img.naturalWidth });
+    });
+    step('render');
+    await selectTab('render');
+    await until(() => seen.length >= 4, 60000);
+    step('inspector');
+    out.render = seen;
+    out.stats = $('r-stats').textContent;
+    out.command = $('r-command').textContent;
+    // The inspector: a click in the middle of the picture.
+    const box = $('r-image').getBoundingClientRect();
+    inspect({ clientX: box.left + box.width / 2, clientY: box.top + box.height / 2 });
+    out.inspector = await until(() => {
+      const note = $('inspector-note');
+      const table = $('inspector-table');
+      return note.dataset.status ? {
+        status: Number(note.dataset.status), text: note.textContent, marks: $('r-overlay').childElementCount,
+        polylines: $('r-overlay').querySelectorAll('polyline.path').length,
+        circles: $('r-overlay').querySelectorAll('circle.vertex').length,
+        lines: $('r-overlay').querySelectorAll('line.segment').length,
+        rows: table.hidden ? 0 : table.rows.length - 1,
+        record: state.record && {
+          paths: state.record.paths.length,
+          vertices: state.record.paths.reduce((n, p) => n + p.vertices.length, 0),
+          segments: state.record.segments.length,
+        },
+      } : null;
+    }, 20000);
+    step('stereo');
+    // The Stereo tab: a pair appears.
+    const pair = [];
+    state.onImage.push((job, img) => { if (job.kind === 'stereo') pair.push({ width: img.naturalWidth, height: img.naturalHeight, sum: checksum(img) }); });
+    $('stereo-form').elements.spp.value = '16';
+    $('stereo-form').elements.width.value = '80';
+    $('stereo-form').elements.height.value = '60';
+    $('s-mode').value = 'side-by-side';
+    $('s-mode').dispatchEvent(new Event('input', { bubbles: true }));
+    await selectTab('stereo');
+    await until(() => pair.length >= 1 && state.job && state.job.kind === 'stereo' && state.job.done, 60000);
+    out.stereo = { images: pair, job: state.job && { width: state.job.width, height: state.job.height, done: state.job.done } };
+    step('brdf');
+    // The BRDF tab: original Phong with n = 1 creates energy.
+    $('b-phong').value = 'original';
+    $('b-exponent-slider').value = String(Math.log10(2));
+    await selectTab('brdf');
+    out.brdf = await until(() => $('b-verdict').dataset.conserves ? { conserves: $('b-verdict').dataset.conserves, verdict: $('b-verdict').textContent, lobe: $('b-lobe').childElementCount } : null, 20000);
+    await call('POST', '/api/stop', {});
+  } catch (e) {
+    out.errors.push(String(e && e.stack || e));
+  }
+  out.step = 'done';
+  state.closed = true;
+  if (state.kick) state.kick();
+  const pre = $('selftest');
+  pre.textContent = JSON.stringify(out);
+  pre.hidden = false;
+  document.title = 'selftest done';
+}
+
+setup().catch((e) => { document.body.insertAdjacentHTML('afterbegin', '<p class="error" role="alert"></p>'); document.querySelector('.error').textContent = `the lab cannot start: ${e}`; });

@@ -1,0 +1,298 @@
+//! A render's settings as the lab receives them, read exactly as
+//! `lesson11 render` reads its command line: the query's parameters become
+//! that command's options (`spp=64` is `--spp 64`) and go through the same
+//! parser and the same checks ([`RenderArgs`], `SceneArgs::load`,
+//! `IntegratorKind::build`). So the lab refuses what the command refuses,
+//! with the same reason, and renders what it renders: the lab's picture at
+//! N spp is `lesson11 render`'s picture with the same options, bit for bit.
+//!
+//! The lab adds caps of its own (it serves a page, not a batch job): at most
+//! [`MAX_PIXELS`] pixels and [`MAX_SPP`] samples per pixel, so that a few
+//! pages' films always fit in memory.
+
+use std::path::{Path, PathBuf};
+
+use clap::{Args, FromArgMatches};
+use raytracer::integrator::Integrator;
+use raytracer::render::RenderOptions;
+use raytracer::scene::{BUILTIN_SCENES, Scene};
+use serde::Serialize;
+
+use super::query::Query;
+use crate::commands::render::RenderArgs;
+
+/// The most pixels of one picture (one eye of a stereo pair): 0.48
+/// megapixels, 800×600 (a film takes about 100 bytes a pixel).
+pub const MAX_PIXELS: u64 = 800 * 600;
+
+/// The most samples per pixel the lab renders towards.
+pub const MAX_SPP: u32 = 65_536;
+
+/// The query parameters that are options of `lesson11 render`.
+pub const RENDER_PARAMS: &[&str] = &[
+    "scene",
+    "integrator",
+    "width",
+    "height",
+    "spp",
+    "seed",
+    "max-depth",
+    "rr-depth",
+    "branching",
+    "roulette",
+    "cutoff",
+    "ao-distance",
+];
+
+/// A checked render: what to render, how, and the command line that
+/// renders the same picture.
+pub struct RenderSetup {
+    pub scene: Scene,
+    pub integrator: Box<dyn Integrator + Send>,
+    pub options: RenderOptions,
+    /// The options of `lesson11 render` (and of `lesson11 stereo`) that give
+    /// the same picture, e.g. `--scene cornell --integrator path --spp 64`.
+    pub options_line: String,
+}
+
+/// The scenes a page may choose: the built-in ones, and the `.toml` files of
+/// the folder given with `--scenes` (read again at every request).
+#[derive(Clone, Debug, Default)]
+pub struct SceneFolder(pub Option<PathBuf>);
+
+/// One scene of the list the page shows.
+#[derive(Serialize)]
+pub struct SceneEntry {
+    /// What `scene=` takes: a built-in name or a file name (`room.toml`).
+    pub name: String,
+    pub description: String,
+    pub builtin: bool,
+}
+
+impl SceneFolder {
+    /// Every scene, built-in ones first, then the folder's files by name.
+    pub fn list(&self) -> Vec<SceneEntry> {
+        let mut list: Vec<SceneEntry> = BUILTIN_SCENES
+            .iter()
+            .map(|s| SceneEntry {
+                name: s.name.to_string(),
+                description: s.description.to_string(),
+                builtin: true,
+            })
+            .collect();
+        if let Some(dir) = &self.0 {
+            let mut files: Vec<String> = std::fs::read_dir(dir)
+                .into_iter()
+                .flatten()
+                .flatten()
+                .filter(|e| e.path().is_file())
+                .filter_map(|e| e.file_name().into_string().ok())
+                .filter(|name| is_scene_file_name(name))
+                .collect();
+            files.sort();
+            list.extend(files.into_iter().map(|name| SceneEntry {
+                description: format!("{}", dir.join(&name).display()),
+                name,
+                builtin: false,
+            }));
+        }
+        list
+    }
+
+    /// The `--scene` value for `name`: a built-in name as it is, a file of
+    /// the folder as its path. Nothing else: no other file can be named.
+    pub fn resolve(&self, name: &str) -> Result<String, String> {
+        if BUILTIN_SCENES.iter().any(|s| s.name == name) {
+            return Ok(name.to_string());
+        }
+        if let Some(dir) = &self.0
+            && is_scene_file_name(name)
+        {
+            let path = dir.join(name);
+            if path.is_file() {
+                return Ok(path.to_string_lossy().into_owned());
+            }
+        }
+        let names: Vec<String> = self.list().into_iter().map(|s| s.name).collect();
+        Err(format!(
+            "unknown scene {name:?}: choose one of {}",
+            names.join(", ")
+        ))
+    }
+}
+
+/// A plain file name ending in `.toml` (no folder, not hidden).
+fn is_scene_file_name(name: &str) -> bool {
+    name.ends_with(".toml")
+        && !name.starts_with('.')
+        && !name.contains(['/', '\\'])
+        && Path::new(name).file_name().is_some_and(|f| f == name)
+}
+
+/// The render that the query's [`RENDER_PARAMS`] describe (`default_scene`
+/// if it names none); other parameters are the caller's.
+pub fn render_setup(
+    q: &Query,
+    folder: &SceneFolder,
+    default_scene: &str,
+    default_integrator: &str,
+) -> Result<RenderSetup, String> {
+    let mut words: Vec<String> = Vec::new();
+    let scene = folder.resolve(q.get("scene").unwrap_or(default_scene))?;
+    words.push(format!("--scene={scene}"));
+    words.push(format!(
+        "--integrator={}",
+        q.get("integrator").unwrap_or(default_integrator)
+    ));
+    if q.flag("roulette")? {
+        words.push("--roulette".into());
+    }
+    for (name, value) in q.iter() {
+        match name {
+            "scene" | "integrator" | "roulette" => {}
+            _ if RENDER_PARAMS.contains(&name) => words.push(format!("--{name}={value}")),
+            _ => {}
+        }
+    }
+    let command = RenderArgs::augment_args(clap::Command::new("render").no_binary_name(true));
+    let matches = command
+        .try_get_matches_from(&words)
+        .map_err(|e| clap_reason(&e))?;
+    let args = RenderArgs::from_arg_matches(&matches).map_err(|e| clap_reason(&e))?;
+    let (scene, mut options) = args.scene.load("cornell").map_err(|e| one_line(&e))?;
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    if w as u64 * h as u64 > MAX_PIXELS {
+        return Err(format!(
+            "the picture would be {w}×{h} pixels, more than the lab's {MAX_PIXELS} (800×600): \
+             lower width and height (lesson11 render takes any size)"
+        ));
+    }
+    if options.spp > MAX_SPP {
+        return Err(format!(
+            "spp must be at most {MAX_SPP} in the lab, got {}",
+            options.spp
+        ));
+    }
+    options.progress = false;
+    // The checks of `lesson11 render`; naive recursion's ray budget is for
+    // batch renders (a lab render can be stopped at any time), hence `force`.
+    let integrator = args
+        .integrator
+        .build(&args.integrator_args, &scene, &options, true)
+        .map_err(|e| one_line(&e))?;
+    let options_line = words
+        .iter()
+        .map(|w| match w.split_once('=') {
+            Some((flag, value)) => format!("{flag} {}", shell_word(value)),
+            None => w.clone(),
+        })
+        .collect::<Vec<_>>()
+        .join(" ");
+    Ok(RenderSetup {
+        scene,
+        integrator,
+        options,
+        options_line,
+    })
+}
+
+/// A word as a shell reads it: quoted if it holds anything but plain characters.
+fn shell_word(s: &str) -> String {
+    let plain = !s.is_empty()
+        && s.chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_./,:+".contains(c));
+    if plain {
+        s.to_string()
+    } else {
+        format!("'{}'", s.replace('\'', r"'\''"))
+    }
+}
+
+/// A clap error in one line, without its `error:` and its advice to try `--help`.
+fn clap_reason(e: &clap::Error) -> String {
+    let text = e.render().to_string();
+    let first = text.lines().next().unwrap_or("invalid parameters");
+    first.trim_start_matches("error: ").to_string()
+}
+
+/// An error and its causes in one line.
+pub fn one_line(e: &anyhow::Error) -> String {
+    format!("{e:#}")
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect::<Vec<_>>()
+        .join(" — ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn setup(query: &str) -> Result<RenderSetup, String> {
+        let mut allowed = RENDER_PARAMS.to_vec();
+        allowed.push("page");
+        let q = Query::parse(query, &allowed)?;
+        render_setup(&q, &SceneFolder::default(), "cornell", "path")
+    }
+
+    #[test]
+    fn the_query_is_read_as_lesson11_render_reads_its_options() {
+        let s = setup("spp=8&seed=3&max-depth=-1&width=32&height=24").unwrap();
+        assert_eq!((s.options.spp, s.options.seed), (8, 3));
+        assert_eq!((s.scene.camera.width, s.scene.camera.height), (32, 24));
+        assert_eq!(s.integrator.name(), "path");
+        assert_eq!(
+            s.options_line,
+            "--scene cornell --integrator path --height 24 --max-depth -1 --seed 3 --spp 8 --width 32"
+        );
+        assert_eq!(s.options.tile_size, RenderOptions::default().tile_size);
+    }
+
+    #[test]
+    fn bad_settings_get_the_commands_reasons_in_one_line() {
+        for (query, reason) in [
+            ("spp=abc", "invalid value 'abc' for '--spp"),
+            ("spp=0", "--spp must be at least 1"),
+            ("spp=100000", "at most 65536"),
+            (
+                "integrator=magic",
+                "invalid value 'magic' for '--integrator",
+            ),
+            ("integrator=direct&max-depth=5", "D = 2 by definition"),
+            ("max-depth=0", "--max-depth must be -1"),
+            ("width=1000&height=1000", "more than the lab's"),
+            ("width=100000&height=100000", "more than the cap"),
+            ("scene=../../etc/passwd", "unknown scene"),
+            ("scene=/etc/passwd.toml", "unknown scene"),
+            ("roulette=maybe", "`roulette` must be 1 or 0"),
+        ] {
+            let e = setup(query)
+                .err()
+                .unwrap_or_else(|| panic!("{query} accepted"));
+            assert!(e.contains(reason), "{query}: {e}");
+            assert!(!e.contains('\n'), "{query}: {e}");
+        }
+    }
+
+    #[test]
+    fn a_folder_offers_its_toml_files_and_nothing_else() {
+        let dir = std::env::temp_dir().join(format!("lab-scenes-{}", std::process::id()));
+        std::fs::create_dir_all(dir.join("sub.toml")).unwrap();
+        std::fs::write(
+            dir.join("mine.toml"),
+            raytracer::scene::builtin("furnace").unwrap().toml,
+        )
+        .unwrap();
+        std::fs::write(dir.join("notes.txt"), "").unwrap();
+        let folder = SceneFolder(Some(dir.clone()));
+        let names: Vec<String> = folder.list().into_iter().map(|s| s.name).collect();
+        assert!(names.ends_with(&["mine.toml".to_string()]), "{names:?}");
+        assert!(names.contains(&"cornell".to_string()));
+        assert!(folder.resolve("mine.toml").unwrap().ends_with("mine.toml"));
+        for bad in ["notes.txt", "sub.toml", "../mine.toml", ".hidden.toml"] {
+            assert!(folder.resolve(bad).is_err(), "{bad}");
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

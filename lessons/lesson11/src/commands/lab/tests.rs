@@ -1,0 +1,103 @@
+//! The lab in process: the path inspector's endpoint answers the recorded
+//! sample with every vertex projected into the picture, and a page that
+//! stops asking has its render stopped.
+
+use std::io::{Read, Write};
+use std::net::{SocketAddr, TcpStream};
+use std::time::Duration;
+
+use serde_json::Value;
+
+use super::{Lab, LabConfig};
+
+fn start() -> Lab {
+    Lab::start(SocketAddr::from(([127, 0, 0, 1], 0)), LabConfig::default()).unwrap()
+}
+
+fn request(lab: &Lab, method: &str, path: &str) -> (u16, String) {
+    let address = lab
+        .url()
+        .trim_start_matches("http://")
+        .trim_end_matches('/')
+        .to_string();
+    let mut s = TcpStream::connect(&address).unwrap();
+    write!(
+        s,
+        "{method} {path} HTTP/1.1\r\nHost: {address}\r\nConnection: close\r\n\r\n"
+    )
+    .unwrap();
+    let mut text = String::new();
+    s.read_to_string(&mut text).unwrap();
+    let status = text.split_whitespace().nth(1).unwrap().parse().unwrap();
+    let body = text.split_once("\r\n\r\n").unwrap().1.to_string();
+    (status, body)
+}
+
+/// The path tracer's record of a pixel: the camera ray leaves the lens and
+/// its first hit projects into the clicked pixel; shadow rays end on the
+/// lamp, which the picture shows.
+#[test]
+fn the_inspector_serves_a_record_projected_into_the_picture() {
+    let lab = start();
+    let render = "/api/render?page=t&width=64&height=64&spp=1&integrator=path&max-depth=4";
+    let (status, _) = request(&lab, "POST", render);
+    assert_eq!(status, 200);
+    let (status, body) = request(&lab, "GET", "/api/paths?page=t&x=20&y=40&sample=0");
+    assert_eq!(status, 200, "{body}");
+    let r: Value = serde_json::from_str(&body).unwrap();
+    assert_eq!(r["pixel"], serde_json::json!([20, 40]));
+    assert_eq!(r["integrator"], "path");
+    let camera = &r["paths"][0];
+    assert_eq!(camera["role"], "camera");
+    assert_eq!(camera["vertices"][0]["kind"], "camera");
+    assert_eq!(camera["vertices"][1]["pdf"]["measure"], "solid-angle");
+    assert!(camera["vertices"][1]["brdf"].is_string(), "{r}");
+    let raster = &camera["vertices"][1]["raster"];
+    let (x, y) = (raster[0].as_f64().unwrap(), raster[1].as_f64().unwrap());
+    assert!(
+        (20.0..21.0).contains(&x) && (40.0..41.0).contains(&y),
+        "{raster}"
+    );
+    let shadow = r["segments"].as_array().unwrap();
+    assert!(!shadow.is_empty(), "{r}");
+    for s in shadow {
+        assert_eq!(s["kind"], "shadow-ray");
+        assert!(
+            s["to"]["point"]["raster"].is_array(),
+            "the lamp is in the picture: {s}"
+        );
+    }
+    // Out of the picture, or past the render's samples: 400 with a reason.
+    for bad in ["x=64&y=0&sample=0", "x=1&y=1&sample=1"] {
+        let (status, body) = request(&lab, "GET", &format!("/api/paths?page=t&{bad}"));
+        assert_eq!(status, 400, "{bad}: {body}");
+    }
+    lab.stop();
+}
+
+/// A page that stops asking (a closed tab) has its render stopped; one
+/// that asks keeps it.
+#[test]
+fn the_render_of_a_closed_page_stops() {
+    let lab = start();
+    for page in ["gone", "here"] {
+        let (status, _) = request(
+            &lab,
+            "POST",
+            &format!("/api/render?page={page}&width=32&height=32&spp=65536"),
+        );
+        assert_eq!(status, 200);
+    }
+    std::thread::sleep(Duration::from_millis(300));
+    request(&lab, "GET", "/api/status?page=here");
+    lab.pages().stop_idle(Duration::from_millis(200));
+    std::thread::sleep(Duration::from_millis(300));
+    let done = |page: &str| {
+        let (_, body) = request(&lab, "GET", &format!("/api/status?page={page}"));
+        let s: Value = serde_json::from_str(&body).unwrap();
+        s["job"]["done"] == true && s["job"]["interrupted"] == true
+    };
+    assert!(done("gone"), "the render of the page that went away stops");
+    assert!(!done("here"), "the render of the page that asks goes on");
+    lab.stop();
+}

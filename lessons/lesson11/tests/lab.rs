@@ -1,0 +1,862 @@
+//! `lesson11 lab` over HTTP, as a browser and a student meet it: the real
+//! program on a free port of 127.0.0.1, asked with plain HTTP/1.1 requests;
+//! and the page itself in headless Chromium (skipped with a note where no
+//! Chromium is installed).
+
+#[path = "support/chromium.rs"]
+mod chromium;
+
+use std::io::{BufRead, BufReader, Read, Write};
+use std::net::{SocketAddr, TcpStream};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Output, Stdio};
+use std::sync::mpsc;
+use std::time::{Duration, Instant};
+
+use serde_json::Value;
+
+/// A running `lesson11 lab --port 0`, stopped when dropped.
+struct Lab {
+    child: Child,
+    address: SocketAddr,
+    url: String,
+}
+
+impl Lab {
+    fn start(extra: &[&str]) -> Lab {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_lesson11"))
+            .args(["lab", "--port", "0"])
+            .args(extra)
+            .stdin(Stdio::null())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("lesson11 lab starts");
+        let stdout = child.stdout.take().unwrap();
+        let (send, receive) = mpsc::channel();
+        std::thread::spawn(move || {
+            for line in BufReader::new(stdout).lines().map_while(Result::ok) {
+                let _ = send.send(line);
+            }
+        });
+        let line = receive
+            .recv_timeout(Duration::from_secs(60))
+            .expect("lesson11 lab prints its address");
+        let url = line
+            .split_whitespace()
+            .find(|w| w.starts_with("http://"))
+            .unwrap_or_else(|| panic!("no address in {line:?}"))
+            .to_string();
+        let address = url
+            .trim_start_matches("http://")
+            .trim_end_matches('/')
+            .parse()
+            .unwrap();
+        Lab {
+            child,
+            address,
+            url,
+        }
+    }
+
+    fn get(&self, path: &str) -> Reply {
+        request(self.address, "GET", path)
+    }
+
+    fn post(&self, path: &str) -> Reply {
+        request(self.address, "POST", path)
+    }
+
+    fn json(&self, method: &str, path: &str) -> Value {
+        let r = request(self.address, method, path);
+        assert_eq!(r.status, 200, "{method} {path}: {}", r.text());
+        serde_json::from_slice(&r.body).unwrap()
+    }
+
+    /// The page's status once its render is done (at most `limit`).
+    fn wait_done(&self, page: &str, limit: Duration) -> Value {
+        let end = Instant::now() + limit;
+        loop {
+            let s = self.json("GET", &format!("/api/status?page={page}"));
+            if s["job"]["done"] == true {
+                return s;
+            }
+            assert!(Instant::now() < end, "not done after {limit:?}: {s}");
+            std::thread::sleep(Duration::from_millis(50));
+        }
+    }
+}
+
+impl Drop for Lab {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+struct Reply {
+    status: u16,
+    headers: Vec<(String, String)>,
+    body: Vec<u8>,
+}
+
+impl Reply {
+    fn text(&self) -> String {
+        String::from_utf8_lossy(&self.body).into_owned()
+    }
+
+    fn header(&self, name: &str) -> Option<&str> {
+        self.headers
+            .iter()
+            .find(|(k, _)| k.eq_ignore_ascii_case(name))
+            .map(|(_, v)| v.as_str())
+    }
+
+    /// Width and height from a PNG's IHDR chunk.
+    fn png_size(&self) -> (u32, u32) {
+        assert!(
+            self.body.starts_with(b"\x89PNG\r\n\x1a\n"),
+            "not a PNG: {}",
+            self.text()
+        );
+        let be = |i: usize| u32::from_be_bytes(self.body[i..i + 4].try_into().unwrap());
+        (be(16), be(20))
+    }
+}
+
+/// One HTTP/1.1 request on a fresh connection, read to its end.
+fn request(address: SocketAddr, method: &str, path: &str) -> Reply {
+    let mut stream = TcpStream::connect(address).expect("the lab accepts connections");
+    stream
+        .set_read_timeout(Some(Duration::from_secs(60)))
+        .unwrap();
+    write!(
+        stream,
+        "{method} {path} HTTP/1.1\r\nHost: {address}\r\nConnection: close\r\n\r\n"
+    )
+    .unwrap();
+    let mut raw = Vec::new();
+    stream.read_to_end(&mut raw).expect("an answer");
+    let split = raw
+        .windows(4)
+        .position(|w| w == b"\r\n\r\n")
+        .unwrap_or_else(|| panic!("no header end in {:?}", String::from_utf8_lossy(&raw)));
+    let head = String::from_utf8_lossy(&raw[..split]).into_owned();
+    let mut lines = head.lines();
+    let status = lines
+        .next()
+        .and_then(|l| l.split_whitespace().nth(1))
+        .and_then(|s| s.parse().ok())
+        .expect("a status line");
+    let headers = lines
+        .filter_map(|l| l.split_once(':'))
+        .map(|(k, v)| (k.trim().to_string(), v.trim().to_string()))
+        .collect();
+    Reply {
+        status,
+        headers,
+        body: raw[split + 4..].to_vec(),
+    }
+}
+
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("lesson11-lab-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn the_page_and_its_assets_load_and_unknown_paths_are_404() {
+    let lab = Lab::start(&[]);
+    let page = lab.get("/");
+    assert_eq!(page.status, 200);
+    assert!(
+        page.header("Content-Type")
+            .unwrap()
+            .starts_with("text/html")
+    );
+    let html = page.text();
+    let mut links = 0;
+    for attr in ["src=\"", "href=\""] {
+        for part in html.split(attr).skip(1) {
+            let link = &part[..part.find('"').unwrap()];
+            if link.starts_with('#') {
+                continue;
+            }
+            assert!(
+                link.starts_with('/'),
+                "{link}: the page loads only from the lab"
+            );
+            let r = lab.get(link);
+            assert_eq!(r.status, 200, "{link}");
+            assert!(!r.body.is_empty(), "{link}");
+            links += 1;
+        }
+    }
+    assert!(links >= 2, "the page links its script and style sheet");
+    assert!(
+        !html.contains("http://") && !html.contains("https://"),
+        "no network beyond the lab"
+    );
+    assert!(
+        lab.get("/lab.js")
+            .header("Content-Type")
+            .unwrap()
+            .starts_with("text/javascript")
+    );
+    let r = lab.get("/no/such/page");
+    assert_eq!(r.status, 404);
+    assert_eq!(r.text(), "no such page: /no/such/page\n");
+    let r = lab.post("/");
+    assert_eq!(r.status, 405);
+    let r = lab.get("/api/render?page=a");
+    assert_eq!((r.status, r.header("Allow")), (405, Some("POST")));
+    let scenes = lab.json("GET", "/api/scenes");
+    let integrators: Vec<&str> = scenes["integrators"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|i| i[0].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        integrators,
+        [
+            "direct",
+            "ao",
+            "path",
+            "path-brdf",
+            "path-nee",
+            "naive",
+            "light",
+            "bdpt",
+            "mlt",
+            "photon",
+            "sppm",
+            "vpl",
+            "irradiance-cache"
+        ],
+        "every --integrator of lesson11 render"
+    );
+    assert!(scenes["composites"].as_array().unwrap().len() >= 13);
+}
+
+/// Snapshots come about 4 times a second, each with more samples.
+#[test]
+fn the_image_endpoint_returns_a_png_whose_spp_grows() {
+    let lab = Lab::start(&[]);
+    let r = lab.post(
+        "/api/render?page=p&scene=cornell&integrator=path&width=96&height=64&spp=65536&seed=2",
+    );
+    assert_eq!(r.status, 200, "{}", r.text());
+    let mut spps = Vec::new();
+    let mut version = 0;
+    let end = Instant::now() + Duration::from_secs(60);
+    while spps.len() < 4 {
+        assert!(Instant::now() < end, "only {spps:?} after a minute");
+        let s = lab.json("GET", &format!("/api/status?page=p&after={version}"));
+        let v = s["job"]["version"].as_u64().unwrap();
+        if v == version {
+            continue;
+        }
+        version = v;
+        let png = lab.get("/api/image.png?page=p");
+        assert_eq!(png.status, 200, "{}", png.text());
+        assert_eq!(png.png_size(), (96, 64));
+        let spp: f64 = png.header("X-Lab-Spp").unwrap().parse().unwrap();
+        if spps.last().is_none_or(|&last| spp > last) {
+            spps.push(spp);
+        }
+    }
+    assert!(spps.windows(2).all(|w| w[1] > w[0]), "{spps:?}");
+    let s = lab.json("GET", "/api/status?page=p");
+    assert!(s["job"]["samples_per_second"].as_f64().unwrap() > 0.0);
+    assert!(s["job"]["elapsed"].as_f64().unwrap() > 0.0);
+    assert_eq!(s["job"]["done"], false);
+    assert_eq!(lab.post("/api/stop?page=p").status, 200);
+    let s = lab.wait_done("p", Duration::from_secs(10));
+    assert_eq!(s["job"]["interrupted"], true);
+}
+
+/// Every bad request gets 400 and one line saying what is wrong; the lab
+/// goes on answering.
+#[test]
+fn bad_parameters_get_400_with_a_one_line_reason() {
+    let lab = Lab::start(&[]);
+    assert_eq!(
+        lab.post("/api/render?page=ok&width=16&height=16&spp=1")
+            .status,
+        200
+    );
+    let long = format!("/api/render?page=x&seed={}", "9".repeat(5000));
+    let cases: Vec<(&str, String, &str)> = vec![
+        ("POST", "/api/render?spp=4".into(), "`page` is missing"),
+        ("POST", "/api/render?page=a/b".into(), "`page` must be"),
+        (
+            "POST",
+            "/api/render?page=x&spp=abc".into(),
+            "invalid value 'abc' for '--spp",
+        ),
+        (
+            "POST",
+            "/api/render?page=x&spp=0".into(),
+            "--spp must be at least 1",
+        ),
+        (
+            "POST",
+            "/api/render?page=x&spp=70000".into(),
+            "at most 65536",
+        ),
+        ("POST", "/api/render?page=x&seed=-1".into(), "--seed"),
+        (
+            "POST",
+            "/api/render?page=x&integrator=magic".into(),
+            "'magic' for '--integrator",
+        ),
+        (
+            "POST",
+            "/api/render?page=x&integrator=direct&max-depth=4".into(),
+            "D = 2 by definition",
+        ),
+        (
+            "POST",
+            "/api/render?page=x&integrator=path&max-depth=0".into(),
+            "--max-depth must be -1",
+        ),
+        (
+            "POST",
+            "/api/render?page=x&integrator=path&branching=4".into(),
+            "--branching does not apply",
+        ),
+        (
+            "POST",
+            "/api/render?page=x&width=4000&height=4000".into(),
+            "more than the lab's",
+        ),
+        (
+            "POST",
+            "/api/render?page=x&width=0".into(),
+            "must be positive",
+        ),
+        (
+            "POST",
+            "/api/render?page=x&scene=../../etc/passwd".into(),
+            "unknown scene",
+        ),
+        (
+            "POST",
+            "/api/render?page=x&scene=nowhere.toml".into(),
+            "unknown scene",
+        ),
+        (
+            "POST",
+            "/api/render?page=x&threads=1000".into(),
+            "unknown parameter `threads`",
+        ),
+        (
+            "POST",
+            "/api/render?page=x&out=/tmp".into(),
+            "unknown parameter `out`",
+        ),
+        (
+            "POST",
+            "/api/render?page=x&spp=1&spp=2".into(),
+            "given twice",
+        ),
+        ("POST", "/api/render?page=x&scene=%zz".into(), "%-escape"),
+        ("POST", long, "more than the 4096"),
+        (
+            "POST",
+            "/api/stereo?page=x&separation=-1".into(),
+            "`separation` must be in",
+        ),
+        (
+            "POST",
+            "/api/stereo?page=x&convergence=0".into(),
+            "`convergence` must be in",
+        ),
+        (
+            "POST",
+            "/api/brdf-sphere?page=x&model=velvet".into(),
+            "`model` must be",
+        ),
+        (
+            "GET",
+            "/api/brdf?albedo=2".into(),
+            "`albedo` must be in [0, 1]",
+        ),
+        (
+            "GET",
+            "/api/brdf?theta=90".into(),
+            "`theta` must be in [0, 89]",
+        ),
+        ("GET", "/api/image.png?page=nobody".into(), "no render yet"),
+        (
+            "GET",
+            "/api/image.png?page=ok&exposure=nan".into(),
+            "`exposure` must be in",
+        ),
+        (
+            "GET",
+            "/api/image.png?page=ok&eye=1".into(),
+            "`eye` must be below 1",
+        ),
+        ("GET", "/api/stereo.png?page=ok".into(), "not a stereo pair"),
+        (
+            "GET",
+            "/api/status?page=ok&after=soon".into(),
+            "`after` must be",
+        ),
+        (
+            "GET",
+            "/api/paths?page=ok&x=16&y=0".into(),
+            "outside the 16×16 picture",
+        ),
+        (
+            "GET",
+            "/api/paths?page=ok&x=1&y=1&sample=1".into(),
+            "below the render's 1 spp",
+        ),
+    ];
+    for (method, path, reason) in cases {
+        let r = request(lab.address, method, &path);
+        let text = r.text();
+        assert_eq!(r.status, 400, "{method} {path}: {text}");
+        assert!(text.contains(reason), "{method} {path}: {text}");
+        assert_eq!(text.lines().count(), 1, "{method} {path}: {text}");
+    }
+    // Garbage on the wire does not take the lab down either.
+    for junk in ["BREW /pot HTTP/1.1\r\n\r\n", "\r\n\r\n", "GET\r\n\r\n"] {
+        if let Ok(mut s) = TcpStream::connect(lab.address) {
+            let _ = s.write_all(junk.as_bytes());
+            let _ = s.set_read_timeout(Some(Duration::from_secs(5)));
+            let _ = s.read(&mut [0; 256]);
+        }
+    }
+    assert_eq!(lab.get("/").status, 200, "the lab still answers");
+}
+
+/// A settings change stops the previous render within moments, also a
+/// naive recursion whose single samples would take ages.
+#[test]
+fn a_settings_change_cancels_the_previous_render() {
+    let lab = Lab::start(&[]);
+    for first in [
+        "integrator=path&spp=65536",
+        "integrator=naive&branching=1000&max-depth=6&spp=4",
+    ] {
+        let a = lab.json(
+            "POST",
+            &format!("/api/render?page=c&width=64&height=64&{first}"),
+        );
+        std::thread::sleep(Duration::from_millis(300));
+        let b = lab.json(
+            "POST",
+            "/api/render?page=c&integrator=path&width=64&height=64&spp=65536&seed=1",
+        );
+        let end = Instant::now() + Duration::from_secs(20);
+        let previous = loop {
+            let s = lab.json("GET", "/api/status?page=c");
+            assert_eq!(s["job"]["id"], b["id"]);
+            let p = s["previous"].clone();
+            assert_eq!(p["id"], a["id"]);
+            if p["done"] == true {
+                assert_eq!(s["running_renders"], 1, "only the new render runs: {s}");
+                break p;
+            }
+            assert!(Instant::now() < end, "{first}: not stopped: {s}");
+            std::thread::sleep(Duration::from_millis(20));
+        };
+        assert_eq!(previous["interrupted"], true);
+        let ms = previous["stopped_after_ms"].as_f64().unwrap();
+        println!("{first}: stopped {ms:.1} ms after the request");
+        let samples = previous["samples"].clone();
+        std::thread::sleep(Duration::from_millis(300));
+        let again = lab.json("GET", "/api/status?page=c");
+        assert_eq!(again["previous"]["samples"], samples, "it stays stopped");
+    }
+    assert_eq!(lab.post("/api/stop?page=c").status, 200);
+}
+
+/// Runs `lesson11 render` with `args` into `dir`.
+fn render(dir: &Path, args: &[&str]) -> Output {
+    let out = Command::new(env!("CARGO_BIN_EXE_lesson11"))
+        .arg("render")
+        .args(args)
+        .arg("--out")
+        .arg(dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out
+}
+
+/// The lab's picture at N spp is `lesson11 render`'s with the same options:
+/// the same EXR and PNG bytes (40 spp: two full passes and a partial one;
+/// light tracing splats into other pixels).
+#[test]
+fn the_labs_picture_equals_lesson11_render_bit_for_bit() {
+    let lab = Lab::start(&[]);
+    let dir = temp_dir("same");
+    for integrator in ["path", "light"] {
+        let options = [
+            ("scene", "cornell"),
+            ("integrator", integrator),
+            ("width", "40"),
+            ("height", "32"),
+            ("spp", "40"),
+            ("seed", "7"),
+            ("max-depth", "5"),
+        ];
+        let query: Vec<String> = options.iter().map(|(k, v)| format!("{k}={v}")).collect();
+        let status = lab.json("POST", &format!("/api/render?page=d&{}", query.join("&")));
+        let command = status["command"].as_str().unwrap().to_string();
+        let done = lab.wait_done("d", Duration::from_secs(120));
+        assert_eq!(done["job"]["interrupted"], false);
+        assert_eq!(done["job"]["complete_spp"], 40);
+        let exr = lab.get("/api/image.exr?page=d");
+        let png = lab.get("/api/image.png?page=d&exposure=1.5");
+        assert_eq!((exr.status, png.status), (200, 200));
+        // The command the page shows is the one that renders the same picture.
+        let args: Vec<&str> = command
+            .split(" -- render ")
+            .nth(1)
+            .unwrap()
+            .split_whitespace()
+            .collect();
+        let mut args = args.clone();
+        args.extend(["--exposure", "1.5"]);
+        render(&dir, &args);
+        let file =
+            |ext: &str| std::fs::read(dir.join(format!("cornell-{integrator}.{ext}"))).unwrap();
+        assert!(exr.body == file("exr"), "{integrator}: the EXR differs");
+        assert!(png.body == file("png"), "{integrator}: the PNG differs");
+        // The test can fail: another seed gives another picture.
+        let other: Vec<&str> = args
+            .iter()
+            .map(|a| if *a == "7" { "8" } else { a })
+            .collect();
+        render(&dir, &other);
+        assert!(exr.body != file("exr"), "{integrator}: the seed is ignored");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The inspector's record is the integrator's sample: at 1 spp the path
+/// tracer's picture holds each pixel's only sample, so the recorded
+/// estimate equals the EXR's pixel bit for bit, and the recorded
+/// contributions (emitter hits and shadow rays) add up to it, as direct
+/// lighting's do; bidirectional
+/// tracing's weighted strategies and naive recursion's tree add up to their
+/// estimates, and light tracing's record is its connections to the lens,
+/// each splatted somewhere in the picture. Deterministic (fixed seed); the
+/// only tolerance is float rounding (the record sums in another order).
+#[test]
+fn the_inspectors_paths_are_the_integrators_sample() {
+    let lab = Lab::start(&[]);
+    let dir = temp_dir("paths");
+    let sum = |r: &Value| -> [f64; 3] {
+        let mut total = [0.0f64; 3];
+        let mut add = |c: &Value| {
+            for (t, v) in total.iter_mut().zip(c.as_array().unwrap()) {
+                *t += v.as_f64().unwrap();
+            }
+        };
+        for p in r["paths"].as_array().unwrap() {
+            for v in p["vertices"].as_array().unwrap() {
+                add(&v["contribution"]);
+            }
+        }
+        for s in r["segments"].as_array().unwrap() {
+            if s["splat"].is_null() {
+                add(&s["contribution"]);
+            }
+        }
+        total
+    };
+    let estimate = |r: &Value| -> [f64; 3] {
+        let e = r["estimate"].as_array().unwrap();
+        [0, 1, 2].map(|i| e[i].as_f64().unwrap())
+    };
+    let close = |a: [f64; 3], b: [f64; 3]| {
+        (0..3).all(|i| (a[i] - b[i]).abs() <= 1e-5 * a[i].abs().max(b[i].abs()) + 1e-9)
+    };
+    let pixels = [(8, 8), (3, 12), (12, 2), (15, 15), (0, 7)];
+    for integrator in ["path", "direct", "bdpt", "naive", "light"] {
+        // Direct lighting is D = 2 by definition: it takes no max depth.
+        let depth = if integrator == "direct" {
+            ""
+        } else {
+            "&max-depth=4"
+        };
+        let render = format!(
+            "/api/render?page=p&scene=cornell&integrator={integrator}&width=16&height=16&spp=1&seed=5{depth}"
+        );
+        lab.json("POST", &render);
+        lab.wait_done("p", Duration::from_secs(120));
+        let exr = lab.get("/api/image.exr?page=p");
+        assert_eq!(exr.status, 200);
+        let file = dir.join(format!("{integrator}.exr"));
+        std::fs::write(&file, &exr.body).unwrap();
+        let image = raytracer::film::Image::read_exr(&file).unwrap();
+        let mut lit = 0;
+        for (x, y) in pixels {
+            let r = lab.json("GET", &format!("/api/paths?page=p&x={x}&y={y}&sample=0"));
+            assert_eq!(r["integrator"], integrator, "{r}");
+            assert!(r["truncated"].is_null(), "{r}");
+            let e = estimate(&r);
+            assert!(
+                close(sum(&r), e),
+                "{integrator} ({x}, {y}): sums to {:?}, estimate {e:?}",
+                sum(&r)
+            );
+            if integrator == "path" {
+                // JSON writes the f32 in its shortest form: read back as f32, it is exact.
+                let pixel = image.get(x, y).to_array();
+                assert_eq!(
+                    e.map(|v| v as f32),
+                    pixel,
+                    "({x}, {y}): the record is the picture's sample"
+                );
+            }
+            if integrator == "light" {
+                assert_eq!(e, [0.0; 3], "light tracing splats everything");
+                for s in r["segments"].as_array().unwrap() {
+                    let splat = s["splat"].as_array().unwrap();
+                    assert!(
+                        splat
+                            .iter()
+                            .all(|v| (0.0..16.0).contains(&v.as_f64().unwrap())),
+                        "{s}"
+                    );
+                    assert_eq!(s["strategy"][1], 1, "{s}");
+                }
+            }
+            lit += usize::from(e != [0.0; 3] || !r["segments"].as_array().unwrap().is_empty());
+        }
+        assert!(
+            lit >= 3,
+            "{integrator}: the test can fail only if samples carry light ({lit})"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Both eyes render; every composite comes from the same pair, in the size
+/// its layout gives; the BRDF tab's verdict tells normalized from original Phong.
+#[test]
+fn stereo_pairs_compose_and_brdfs_get_their_verdict() {
+    let lab = Lab::start(&[]);
+    let s = lab.json(
+        "POST",
+        "/api/stereo?page=s&width=40&height=30&spp=4&separation=0.2&convergence=6",
+    );
+    assert!(
+        s["command"]
+            .as_str()
+            .unwrap()
+            .contains("-- stereo --scene stereo --integrator path"),
+        "{s}"
+    );
+    lab.wait_done("s", Duration::from_secs(60));
+    let size = |mode: &str| {
+        let r = lab.get(&format!(
+            "/api/stereo.png?page=s&mode={mode}&desaturate=0.5"
+        ));
+        assert_eq!(r.status, 200, "{mode}: {}", r.text());
+        r.png_size()
+    };
+    assert_eq!(size("red-cyan"), (40, 30));
+    assert_eq!(size("dubois"), (40, 30));
+    assert_eq!(size("side-by-side"), (80, 30));
+    assert_eq!(size("cross-eyed"), (80, 30));
+    assert_eq!(size("over-under"), (40, 60));
+    assert_eq!(size("left"), (40, 30));
+    let left = lab.get("/api/image.exr?page=s&eye=0");
+    let right = lab.get("/api/image.exr?page=s&eye=1");
+    assert!(left.body != right.body, "the eyes see different pictures");
+    let r = lab.get("/api/stereo.png?page=s&mode=purple");
+    assert_eq!(r.status, 400);
+    assert!(r.text().contains("unknown stereo mode"), "{}", r.text());
+
+    let good = lab.json("GET", "/api/brdf?model=phong&exponent=1&albedo=1");
+    let bad = lab.json(
+        "GET",
+        "/api/brdf?model=phong&exponent=1&albedo=1&phong=original",
+    );
+    assert_eq!(
+        (
+            good["conserves_energy"].clone(),
+            bad["conserves_energy"].clone()
+        ),
+        (true.into(), false.into())
+    );
+    let sphere = lab.json("POST", "/api/brdf-sphere?page=s&model=glass&ior=1.5&spp=2");
+    assert_eq!(sphere["kind"], "brdf");
+    lab.wait_done("s", Duration::from_secs(60));
+    assert_eq!(lab.get("/api/image.png?page=s").png_size(), (200, 150));
+}
+
+#[test]
+fn scene_files_come_only_from_the_folder_given() {
+    let dir = temp_dir("scenes");
+    let furnace = Command::new(env!("CARGO_BIN_EXE_lesson11"))
+        .args(["scenes", "--write", "furnace", "--to"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(furnace.status.success());
+    let lab = Lab::start(&["--scenes", dir.to_str().unwrap()]);
+    let scenes = lab.json("GET", "/api/scenes");
+    assert!(
+        scenes["scenes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|s| s["name"] == "furnace.toml"),
+        "{scenes}"
+    );
+    let r = lab.post("/api/render?page=f&scene=furnace.toml&width=8&height=8&spp=1");
+    assert_eq!(r.status, 200, "{}", r.text());
+    let r = lab.post("/api/render?page=f&scene=..%2Ffurnace.toml");
+    assert_eq!(r.status, 400);
+    drop(lab);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_port_in_use_and_a_missing_folder_are_one_line_errors() {
+    let lab = Lab::start(&[]);
+    let port = lab.address.port().to_string();
+    let out = Command::new(env!("CARGO_BIN_EXE_lesson11"))
+        .args(["lab", "--port", &port])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success());
+    assert!(
+        err.contains("cannot listen on") && err.contains("--port"),
+        "{err}"
+    );
+    let out = Command::new(env!("CARGO_BIN_EXE_lesson11"))
+        .args(["lab", "--port", "0", "--scenes", "/no/such/folder"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        !out.status.success() && err.contains("no such folder"),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1, "{err}");
+}
+
+/// The page in headless Chromium (its `#selftest` mode drives it and writes
+/// what it saw into the DOM): the picture appears and changes as samples
+/// accumulate, a click on a pixel draws its recorded paths over it, the
+/// stereo pair and the BRDF verdict appear.
+#[test]
+fn the_page_works_in_a_real_browser() {
+    let Some(chromium) = chromium::chromium() else {
+        eprintln!(
+            "skipped: no chromium on PATH or at /usr/bin/chromium, so the lab's page was not \
+             tried in a browser (install Debian's `chromium` package to run this test)"
+        );
+        return;
+    };
+    let lab = Lab::start(&[]);
+    let dom = chromium::run(
+        &chromium,
+        &format!("{}#selftest", lab.url),
+        &[
+            "--window-size=1300,900".into(),
+            "--virtual-time-budget=120000".into(),
+            "--dump-dom".into(),
+        ],
+        Duration::from_secs(240),
+    )
+    .unwrap();
+    let report = chromium::selftest_report(&dom).expect("the page has its #selftest report");
+    let r: Value = serde_json::from_str(&report).unwrap_or_else(|e| panic!("{e}: {report}"));
+    assert_eq!(r["step"], "done", "{r}");
+    assert_eq!(r["errors"], serde_json::json!([]), "{r}");
+    let snapshots = r["render"].as_array().unwrap();
+    assert!(snapshots.len() >= 3, "{r}");
+    let spp: Vec<f64> = snapshots
+        .iter()
+        .map(|s| s["spp"].as_f64().unwrap())
+        .collect();
+    assert!(
+        spp.windows(2).all(|w| w[1] >= w[0]) && spp.last() > spp.first(),
+        "{spp:?}"
+    );
+    let sums: Vec<u64> = snapshots
+        .iter()
+        .map(|s| s["sum"].as_u64().unwrap())
+        .collect();
+    assert!(sums.iter().all(|&s| s > 0), "the picture appears: {sums:?}");
+    assert!(
+        sums.windows(2).any(|w| w[0] != w[1]),
+        "the picture changes: {sums:?}"
+    );
+    assert_eq!(snapshots[0]["width"], 64);
+    assert!(r["stats"].as_str().unwrap().contains("samples/s"), "{r}");
+    assert!(
+        r["command"]
+            .as_str()
+            .unwrap()
+            .contains("-- render --scene cornell"),
+        "{r}"
+    );
+    // A click on the picture draws the recorded sample: one polyline per
+    // recorded path, a mark per vertex in view, a line per shadow ray in
+    // view, a table row per vertex and shadow ray.
+    let i = &r["inspector"];
+    assert_eq!(i["status"], 200, "{r}");
+    assert!(i["text"].as_str().unwrap().contains("estimate ("), "{r}");
+    assert_eq!(i["polylines"], i["record"]["paths"], "{r}");
+    assert!(i["record"]["vertices"].as_u64().unwrap() >= 2, "{r}");
+    assert!(i["circles"].as_u64().unwrap() >= 2, "{r}");
+    assert_eq!(i["lines"], i["record"]["segments"], "{r}");
+    assert_eq!(
+        i["rows"].as_u64().unwrap(),
+        i["record"]["vertices"].as_u64().unwrap() + i["record"]["segments"].as_u64().unwrap(),
+        "{r}"
+    );
+    let pair = &r["stereo"]["images"][0];
+    assert_eq!(
+        (pair["width"].clone(), pair["height"].clone()),
+        (160.into(), 60.into()),
+        "{r}"
+    );
+    assert_eq!(r["brdf"]["conserves"], "false", "{r}");
+    assert!(
+        r["brdf"]["verdict"].as_str().unwrap().contains("violates"),
+        "{r}"
+    );
+}
+
+/// The README presents the lab, and its first screen still gives exactly
+/// the two set-up commands.
+#[test]
+fn the_readme_presents_the_lab_and_keeps_its_two_commands() {
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../../README.md"))
+            .unwrap();
+    let first_screen = readme.split("\n---\n").next().unwrap();
+    let block = first_screen
+        .split("```sh\n")
+        .nth(1)
+        .and_then(|b| b.split("```").next())
+        .expect("a command block on the first screen");
+    assert_eq!(
+        block.lines().collect::<Vec<_>>(),
+        ["cargo run --release -p lesson11", "cargo test --workspace"]
+    );
+    assert_eq!(first_screen.matches("```sh").count(), 1);
+    assert!(readme.contains("cargo run --release -p lesson11 -- lab"));
+    assert!(readme.contains("### The lab"));
+}

@@ -1,0 +1,199 @@
+//! The path recorder holds to DESIGN.md's contract "Paths can be recorded":
+//! recording never changes the estimate (the recorded sample equals the
+//! rendered one bit for bit, splats included), and the record adds up to
+//! it — for direct lighting and the path tracer the vertices' emitter hits
+//! and shadow rays, for
+//! light tracing the connections to the lens (its splats, bit for bit), for
+//! bidirectional tracing the weighted strategies, for naive recursion every
+//! ray of its tree. Deterministic (fixed seeds, no tolerance on chance): the
+//! only tolerance is float rounding, because the record sums in another
+//! order than the integrator.
+
+use raytracer::film::Splat;
+use raytracer::integrator::record::{
+    MAX_RECORDED_VERTICES, PathRecord, PathRole, SegmentKind, VertexKind, record_sample,
+};
+use raytracer::integrator::{Bdpt, Direct, Integrator, LightTracer, NaiveRecursive, PathTracer};
+use raytracer::math::{Color, UVec2};
+use raytracer::sampling::Sampler;
+use raytracer::scene::Scene;
+
+fn cornell(size: u32) -> Scene {
+    let mut scene = Scene::builtin("cornell").unwrap();
+    scene.set_resolution(size, size);
+    scene
+}
+
+/// The sample as the render computes it (the same sampler).
+fn rendered(
+    integrator: &dyn Integrator,
+    scene: &Scene,
+    pixel: UVec2,
+    seed: u64,
+    k: u32,
+) -> (Color, Vec<Splat>) {
+    let index = pixel.y as u64 * scene.camera.width as u64 + pixel.x as u64;
+    let mut sampler = Sampler::new(seed, index, k as u64);
+    let mut splats = Vec::new();
+    let c = integrator.sample(scene, pixel, &mut sampler, &mut splats);
+    (c, splats)
+}
+
+fn bits(c: Color) -> [u32; 3] {
+    c.to_array().map(f32::to_bits)
+}
+
+fn close(a: Color, b: Color) -> bool {
+    (a - b).abs().max_element() <= 1e-5 * a.abs().max(b.abs()).max_element() + 1e-9
+}
+
+/// Every pixel sample of a small Cornell box (16×16, 2 samples each):
+/// recorded = rendered, bit for bit, and the record's sum = the estimate.
+fn check(integrator: &dyn Integrator, mut each: impl FnMut(&PathRecord)) -> usize {
+    let scene = cornell(16);
+    let mut contributing = 0;
+    for y in 0..16 {
+        for x in 0..16 {
+            for k in 0..2 {
+                let pixel = UVec2::new(x, y);
+                let (record, splats) = record_sample(integrator, &scene, pixel, 7, k);
+                let (c, rendered_splats) = rendered(integrator, &scene, pixel, 7, k);
+                let estimate = Color::from_array(record.estimate);
+                let what = format!("{} pixel ({x}, {y}) sample {k}", integrator.name());
+                assert_eq!(
+                    bits(estimate),
+                    bits(c),
+                    "{what}: recording changed the estimate"
+                );
+                assert_eq!(splats.len(), rendered_splats.len(), "{what}");
+                for (a, b) in splats.iter().zip(&rendered_splats) {
+                    assert_eq!(bits(a.value), bits(b.value), "{what}: a splat changed");
+                }
+                let sum = record.pixel_sum();
+                assert!(
+                    close(sum, estimate),
+                    "{what}: record sums to {sum}, estimate {estimate}"
+                );
+                let recorded = record.splats();
+                assert_eq!(recorded.len(), splats.len(), "{what}: every splat recorded");
+                for (a, b) in recorded.iter().zip(&splats) {
+                    assert_eq!(a.raster, b.raster, "{what}");
+                    assert_eq!(bits(a.value), bits(b.value), "{what}: recorded splat");
+                }
+                assert!(record.truncated.is_none(), "{what}: {:?}", record.truncated);
+                if estimate != Color::ZERO || !splats.is_empty() {
+                    contributing += 1;
+                }
+                each(&record);
+            }
+        }
+    }
+    contributing
+}
+
+#[test]
+fn the_path_tracers_record_sums_to_its_estimate() {
+    let mut shadow_rays = 0;
+    let pt = PathTracer {
+        max_depth: Some(5),
+        ..PathTracer::default()
+    };
+    let n = check(&pt, |r| {
+        assert_eq!(r.paths.len(), 1);
+        assert_eq!(r.paths[0].role, PathRole::Camera);
+        assert_eq!(r.paths[0].vertices[0].kind, VertexKind::Camera);
+        for s in &r.segments {
+            assert_eq!(s.kind, SegmentKind::ShadowRay);
+            assert!(s.from.vertex >= 1, "a shadow ray leaves a hit");
+            shadow_rays += 1;
+        }
+    });
+    assert!(
+        n > 400 && shadow_rays > 400,
+        "{n} contributing samples, {shadow_rays} shadow rays"
+    );
+}
+
+#[test]
+fn direct_lightings_record_sums_to_its_estimate() {
+    let n = check(&Direct, |r| {
+        assert!(
+            r.paths[0].vertices.len() <= 3,
+            "the lens, the hit, the BRDF ray's end"
+        );
+        assert!(r.segments.len() <= 1, "one shadow ray");
+    });
+    // 312 of the 512 samples carry light; the test can fail only if some do.
+    assert!(n > 250, "{n}");
+}
+
+#[test]
+fn light_tracings_record_is_its_splats() {
+    let lt = LightTracer {
+        max_depth: Some(5),
+        ..LightTracer::default()
+    };
+    let n = check(&lt, |r| {
+        assert_eq!(r.estimate, [0.0; 3]);
+        assert_eq!(r.paths[0].role, PathRole::Light);
+        assert_eq!(r.paths[0].vertices[0].kind, VertexKind::Light);
+        for s in &r.segments {
+            assert_eq!(
+                s.strategy.unwrap()[1],
+                1,
+                "light tracing joins the lens: t = 1"
+            );
+            assert_eq!(s.from.vertex as u32 + 1, s.strategy.unwrap()[0]);
+        }
+    });
+    assert!(n > 100, "{n} samples splatted");
+}
+
+#[test]
+fn bdpts_record_is_its_weighted_strategies() {
+    let bdpt = Bdpt {
+        max_depth: Some(5),
+        ..Bdpt::default()
+    };
+    let mut strategies = std::collections::BTreeSet::new();
+    let n = check(&bdpt, |r| {
+        for s in &r.segments {
+            let [s_, t] = s.strategy.unwrap();
+            strategies.insert((s_, t));
+            let w = s.mis_weight.unwrap();
+            assert!((0.0..=1.0).contains(&w), "MIS weight {w}");
+        }
+    });
+    assert!(n > 400, "{n}");
+    for st in [(1, 2), (2, 2), (1, 3), (2, 1), (3, 1)] {
+        assert!(
+            strategies.contains(&st),
+            "strategy {st:?} recorded: {strategies:?}"
+        );
+    }
+}
+
+#[test]
+fn naive_recursions_record_is_its_tree() {
+    let naive = NaiveRecursive::new(vec![3], Some(3));
+    let scene = cornell(16);
+    let before = naive.rays_traced();
+    let (record, _) = record_sample(&naive, &scene, UVec2::new(8, 8), 1, 0);
+    let rays = naive.rays_traced() - before;
+    let vertices: usize = record.paths.iter().map(|p| p.vertices.len()).sum();
+    assert_eq!(vertices as u64, rays + 1, "the lens and one vertex per ray");
+    assert_eq!(rays, 1 + 3 + 9, "every ray of the middle pixel hits a wall");
+    assert!(
+        record.paths[1..]
+            .iter()
+            .all(|p| p.role == PathRole::Branch && p.parent.is_some())
+    );
+    check(&naive, |_| {});
+    // A tree past the cap is cut, and says so.
+    let big = NaiveRecursive::new(vec![8], Some(5));
+    let (record, _) = record_sample(&big, &scene, UVec2::new(8, 8), 1, 0);
+    let vertices: usize = record.paths.iter().map(|p| p.vertices.len()).sum();
+    assert_eq!(vertices, MAX_RECORDED_VERTICES);
+    let note = record.truncated.expect("a truncated tree says so");
+    assert!(note.contains("left out"), "{note}");
+}
