@@ -12,6 +12,7 @@ pub mod distribution;
 pub mod draw;
 pub mod mis;
 pub mod rng;
+pub mod sincos;
 pub mod warp;
 
 pub use distribution::{Distribution1D, Distribution2D};
