@@ -12,6 +12,11 @@
 //! plain scalar code elsewhere through glam's fallback). Boxes are stored
 //! structure-of-arrays: `bounds[2k]` holds the four children's minima along
 //! axis `k`, `bounds[2k + 1]` their maxima.
+//!
+//! Two walks share the four-box slab test: [`Bvh4::traverse`] visits the
+//! children a ray enters nearest first and skips those that start beyond the
+//! closest hit so far (closest hit); [`Bvh4::traverse_any`] visits them in
+//! any order and stops at the first blocker (shadow rays).
 
 use std::mem::MaybeUninit;
 
