@@ -68,6 +68,12 @@ pub mod ex14_light_tracing;
 #[allow(unused_variables)]
 #[cfg_attr(feature = "solutions", path = "../solutions/ex15_bdpt_connection.rs")]
 pub mod ex15_bdpt_connection;
+#[allow(unused_variables)]
+#[cfg_attr(feature = "solutions", path = "../solutions/ex16_photon_density.rs")]
+pub mod ex16_photon_density;
+#[allow(unused_variables)]
+#[cfg_attr(feature = "solutions", path = "../solutions/ex17_vpl_contribution.rs")]
+pub mod ex17_vpl_contribution;
 
 /// The module names, in lecture order (they match `info.toml`).
 pub const MODULES: &[&str] = &[
@@ -86,6 +92,8 @@ pub const MODULES: &[&str] = &[
     "ex13_mis",
     "ex14_light_tracing",
     "ex15_bdpt_connection",
+    "ex16_photon_density",
+    "ex17_vpl_contribution",
 ];
 
 /// Whether this build uses the reference solutions (feature `solutions`).

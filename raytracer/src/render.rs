@@ -34,8 +34,10 @@
 //! ask for, and [`memory_needed`] with [`MemoryCap`] lets a front-end refuse
 //! an image that would not fit in memory before allocating it.
 
+pub mod sppm;
 mod strategies;
 
+pub use sppm::{SppmResult, render_sppm};
 pub use strategies::render_strategies;
 
 use crate::film::{Film, FilmTile, Splat};
@@ -158,6 +160,12 @@ pub fn install_interrupt_handler() {
 /// True once Ctrl-C (or [`request_interrupt`]) asked renders to stop.
 pub fn interrupted() -> bool {
     INTERRUPTED.load(Ordering::SeqCst)
+}
+
+/// The flag Ctrl-C sets, for work outside the render loop that watches a
+/// stop flag of its own (photon tracing, the irradiance cache).
+pub fn interrupt_flag() -> &'static AtomicBool {
+    &INTERRUPTED
 }
 
 /// Clears the interrupt flag (e.g. to go on with the next image of a batch).

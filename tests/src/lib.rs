@@ -11,7 +11,8 @@
 //!    (exercise 7), with histograms of the student's samples on failure;
 //! 2. estimators: integrals with known answers (furnaces, the albedo of a
 //!    lobe by quadrature, the irradiance of a polygon light by Lambert's
-//!    formula), z-tests that use the student's own variance (exercises 9–15);
+//!    formula, the density of photons spread uniformly), z-tests that use the
+//!    student's own variance (exercises 9–16);
 //! 3. whole integrators: the Cornell box tile by tile against the renderer
 //!    ([`compare`]; exercises 11, 12).
 //!
@@ -40,6 +41,8 @@ pub mod ex12_nee;
 pub mod ex13_mis;
 pub mod ex14_light_tracing;
 pub mod ex15_bdpt_connection;
+pub mod ex16_photon_density;
+pub mod ex17_vpl_contribution;
 pub mod outcome;
 pub mod pictures;
 pub mod polygon;
@@ -115,6 +118,12 @@ pub const GRADERS: &[(&str, Check)] = &[
             ex::ex15_bdpt_connection::geometry_term,
             ex::ex15_bdpt_connection::bdpt_mis_weight,
         )
+    }),
+    ("ex16_photon_density", || {
+        ex16_photon_density::check(ex::ex16_photon_density::photon_radiance)
+    }),
+    ("ex17_vpl_contribution", || {
+        ex17_vpl_contribution::check(ex::ex17_vpl_contribution::vpl_contribution)
     }),
 ];
 

@@ -472,6 +472,57 @@ fn ex15_bdpt_connection() {
     );
 }
 
+#[test]
+fn ex16_photon_density() {
+    passes(
+        "full sort, f64 kernel",
+        ex16_photon_density::check(correct::photon_radiance_sorted),
+    );
+    fails(
+        "box kernel",
+        ex16_photon_density::check(wrong::density_box),
+        "box kernel",
+    );
+    fails(
+        "kernel normalized by 1/(π r²)",
+        ex16_photon_density::check(wrong::density_half),
+        "not normalized",
+    );
+    fails(
+        "every photon",
+        ex16_photon_density::check(wrong::density_all),
+        "only the k nearest",
+    );
+    fails(
+        "π (r²)²",
+        ex16_photon_density::check(wrong::density_area_of_r4),
+        "SQUARED distances",
+    );
+}
+
+#[test]
+fn ex17_vpl_contribution() {
+    passes(
+        "unnormalized edge over r⁴, the bound as a branch",
+        ex17_vpl_contribution::check(correct::vpl_contribution),
+    );
+    fails(
+        "not clamped",
+        ex17_vpl_contribution::check(wrong::vpl_unclamped),
+        "G is not clamped",
+    );
+    fails(
+        "min(G, 0)",
+        ex17_vpl_contribution::check(wrong::vpl_clamp_zero),
+        "a bound of 0 means no clamping",
+    );
+    fails(
+        "light clamped",
+        ex17_vpl_contribution::check(wrong::vpl_clamp_light),
+        "bounds the geometry term G, not the light",
+    );
+}
+
 /// The tables of deterministic answers the grader compares with: a change
 /// here changes what students must produce (`cargo insta review`).
 #[test]

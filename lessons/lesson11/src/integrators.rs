@@ -7,6 +7,10 @@
 //! recursion states its worst-case ray count and refuses more than
 //! [`RAY_BUDGET`] rays without `--force`.
 
+mod biased;
+
+pub use biased::{BiasedArgs, BiasedKind, render_sppm_to_files};
+
 use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
 use raytracer::integrator::{
@@ -35,6 +39,14 @@ pub enum IntegratorKind {
     Light,
     /// Bidirectional path tracing: camera and light subpaths, every connection, MIS over all of them.
     Bdpt,
+    /// Photon mapping (biased): photon maps from light paths, density estimates at the camera's hits.
+    Photon,
+    /// Stochastic progressive photon mapping (biased but consistent): --spp passes, radii shrinking by --alpha.
+    Sppm,
+    /// Instant radiosity (biased if clamped): virtual point lights from light paths, gathered with shadow rays.
+    Vpl,
+    /// Irradiance caching (biased): indirect irradiance at a few records, interpolated (Ward).
+    IrradianceCache,
 }
 
 /// The most rays a naive recursive render may trace without `--force`, in
@@ -95,7 +107,37 @@ impl IntegratorKind {
                 rr_depth,
                 strategy_images: None,
             }),
+            IntegratorKind::Photon | IntegratorKind::Vpl | IntegratorKind::IrradianceCache => {
+                let Some(kind) = self.biased() else {
+                    bail!("{self:?} is not a biased integrator")
+                };
+                biased::build(
+                    kind,
+                    &args.biased,
+                    scene,
+                    options,
+                    max_depth,
+                    rr_depth,
+                    force,
+                )?
+            }
+            IntegratorKind::Sppm => bail!(
+                "sppm renders in passes of its own, not sample by sample: use `lesson11 render --integrator sppm`"
+            ),
         })
+    }
+}
+
+impl IntegratorKind {
+    /// The biased integrator this is, if it is one.
+    pub fn biased(self) -> Option<BiasedKind> {
+        match self {
+            IntegratorKind::Photon => Some(BiasedKind::Photon),
+            IntegratorKind::Sppm => Some(BiasedKind::Sppm),
+            IntegratorKind::Vpl => Some(BiasedKind::Vpl),
+            IntegratorKind::IrradianceCache => Some(BiasedKind::IrradianceCache),
+            _ => None,
+        }
     }
 }
 
@@ -163,9 +205,17 @@ pub struct IntegratorArgs {
     /// Ambient occlusion: length of the occlusion rays, in scene units (metres; default 1).
     #[arg(long, allow_negative_numbers = true)]
     pub ao_distance: Option<f32>,
+    #[command(flatten)]
+    pub biased: BiasedArgs,
 }
 
 impl IntegratorArgs {
+    /// [`IntegratorArgs::check`] for an integrator that is not built by
+    /// [`IntegratorKind::build`] (SPPM).
+    pub fn check_only(&self, kind: IntegratorKind) -> Result<()> {
+        self.check(kind)
+    }
+
     /// Refuses options that `kind` does not use, and values that mean nothing.
     fn check(&self, kind: IntegratorKind) -> Result<()> {
         use IntegratorKind::{Ao, Direct, Naive};
@@ -204,6 +254,7 @@ impl IntegratorArgs {
         if kind != Ao && self.ao_distance.is_some() {
             unused("--ao-distance", "it is an option of --integrator ao")?;
         }
+        self.biased.check(kind.biased(), &name)?;
         if self.branching.contains(&0) {
             bail!("--branching factors must be at least 1");
         }

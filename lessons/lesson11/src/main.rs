@@ -18,7 +18,8 @@
 //! chapters/mod.rs  the chapter list in lecture order, and the tour that walks it
 //! chapters/c*.rs   one chapter each: its pictures, tables and plots, and its section of the page
 //! tour.rs          what every chapter is (its entry in the list) and gets (the Tour context)
-//! render_files.rs equal_time.rs integrators.rs     shared by chapters and commands
+//! equal_time.rs algorithms.rs integrators.rs integrators/     shared by chapters and commands
+//! render_files.rs  rendering to files: PNG, EXR and the variance, replaced together
 //! reference.rs     the independent references renders are measured against
 //! options.rs       scene, size, samples, seed, threads and output folder of a command line
 //! page/ plots/     the HTML page and its SVG plots
@@ -31,6 +32,7 @@
 //! `pub const CHAPTER: Chapter`, and its name to the list in
 //! `chapters/mod.rs`: its subcommand and its place in the tour follow.
 
+mod algorithms;
 mod chapters;
 mod commands;
 mod equal_time;
@@ -49,7 +51,7 @@ use clap::{ArgMatches, Args, FromArgMatches, Parser, Subcommand};
 use crate::tour::{Chapter, TourArgs};
 
 /// Lecture 11: stereoscopy, BRDFs, the rendering equation, path tracing,
-/// light tracing and bidirectional path tracing — rendered.
+/// light tracing and bidirectional path tracing, and the biased algorithms — rendered.
 ///
 /// Run without a command to walk the whole lecture with quick settings and
 /// write its pictures to out/lesson11/ (open out/lesson11/index.html).
@@ -159,7 +161,8 @@ mod tests {
                 "path",
                 "light",
                 "bdpt",
-                "compare"
+                "compare",
+                "biased"
             ]
         );
         assert!(names[chapters.len() + 1..].contains(&"render"));

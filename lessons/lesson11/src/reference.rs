@@ -4,9 +4,10 @@
 //!
 //! - the Cornell box of Mitsuba 3 (`raytracer/tests/data/cornell-mitsuba.exr`,
 //!   2048 spp, max depth 65), an independent renderer;
-//! - the door scene rendered once by our bidirectional path tracer with a seed
-//!   of its own and thousands of samples per pixel, stored in
-//!   `lessons/lesson11/references/` (`lesson11 references` renders it again).
+//! - the door and caustic scenes rendered once by our bidirectional path
+//!   tracer with a seed of its own and thousands of samples per pixel, stored
+//!   in `lessons/lesson11/references/` (`lesson11 references` renders them
+//!   again).
 //!
 //! Both are stored at one size and box-filtered (each sample counts for the
 //! pixel it falls in), so averaging k × k blocks gives exactly the reference
@@ -141,6 +142,22 @@ pub fn door_settings() -> StoredSettings {
     }
 }
 
+/// The caustic scene's reference (chapter 9 measures the biased algorithms
+/// against it): 128 × 96, max depth 8 (chapter 6's), 2048 spp, a seed no
+/// tour uses. Bidirectional path tracing finds the caustic through its
+/// light-tracing strategies.
+pub fn caustic_settings() -> StoredSettings {
+    StoredSettings {
+        scene: "caustic".into(),
+        scene_hash: fnv1a(builtin("caustic").map_or("", |s| s.toml).as_bytes()),
+        width: 128,
+        height: 96,
+        max_depth: 8,
+        spp: 2048,
+        seed: 0x5eed_ca05,
+    }
+}
+
 /// 64-bit FNV-1a.
 fn fnv1a(bytes: &[u8]) -> u64 {
     bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
@@ -162,7 +179,7 @@ impl StoredSettings {
 
     fn to_text(&self) -> String {
         format!(
-            "# The {scene} scene's reference for the equal-time comparison (lesson11 compare).\n\
+            "# The {scene} scene's reference for the equal-time comparisons (lesson11 compare, biased).\n\
              # Rendered by `lesson11 references`; the tour uses it only while these settings hold.\n\
              scene = {scene}\nscene_hash = {:016x}\nwidth = {}\nheight = {}\nmax_depth = {}\n\
              spp = {}\nseed = {}\n",
@@ -290,7 +307,7 @@ pub const MITSUBA_MAX_DEPTH: u32 = 65;
 /// The independent reference for the built-in scene `builtin` (`None` for a
 /// scene from a file) at `scene`'s size, and the max depth every render
 /// compared with it must use: Mitsuba's Cornell box (max depth 65), the
-/// stored door (max depth 5); for any other scene or size, or a stored
+/// stored door (max depth 5) and caustic (max depth 8); for any other scene or size, or a stored
 /// reference that is stale, one rendered now with another seed, at
 /// `fallback_depth` and `fallback_spp` (and a note printed why).
 pub fn independent(
@@ -305,8 +322,12 @@ pub fn independent(
         Some("cornell") if scene.settings.rr_depth == 5 => {
             mitsuba_cornell().map(|r| (r, MITSUBA_MAX_DEPTH))
         }
-        Some("door") => {
-            let settings = door_settings();
+        Some(name @ ("door" | "caustic")) => {
+            let settings = if name == "door" {
+                door_settings()
+            } else {
+                caustic_settings()
+            };
             settings.load().map(|r| (r, settings.max_depth))
         }
         _ => Err(anyhow::anyhow!("no stored reference")),
@@ -320,7 +341,7 @@ pub fn independent(
                 scene.name, reference.mean.width, reference.mean.height
             ),
         },
-        Err(e) if builtin.is_some_and(|b| b == "cornell" || b == "door") => {
+        Err(e) if builtin.is_some_and(|b| ["cornell", "door", "caustic"].contains(&b)) => {
             println!("  note: {e:#}; rendering a reference now")
         }
         Err(_) => {}
@@ -377,6 +398,10 @@ mod tests {
     fn the_stored_references_are_current() {
         let door = door_settings().load().unwrap_or_else(|e| panic!("{e:#}"));
         assert_eq!((door.mean.width, door.mean.height), (128, 96));
+        let caustic = caustic_settings()
+            .load()
+            .unwrap_or_else(|e| panic!("{e:#}"));
+        assert_eq!((caustic.mean.width, caustic.mean.height), (128, 96));
         let mitsuba = mitsuba_cornell().unwrap();
         assert_eq!((mitsuba.mean.width, mitsuba.mean.height), (256, 256));
         // Mitsuba's 16 passes of 128 spp: a floor far below the errors measured.

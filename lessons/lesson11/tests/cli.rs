@@ -419,6 +419,7 @@ fn every_chapter_is_a_subcommand_and_runs_alone() {
         "light",
         "bdpt",
         "compare",
+        "biased",
     ];
     for chapter in chapters {
         let o = lesson11(&[chapter, "--help"]);

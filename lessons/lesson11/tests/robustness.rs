@@ -734,3 +734,82 @@ fn a_builtin_name_wins_over_a_file_and_says_so() {
     assert!(!o.status.success() && text(&o.stderr).contains("./cornell"));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The biased integrators' options (issue 15): zero photons, a negative or
+/// NaN radius, α outside (0, 1), NaN bounds and thresholds, an option of
+/// another integrator — one line each, before anything is traced, nothing
+/// written.
+#[test]
+fn the_biased_integrators_refuse_meaningless_options() {
+    let cases: [(&[&'static str], &str); 16] = [
+        (
+            &["--integrator", "photon", "--photons", "0"],
+            "--photons must be at least 1",
+        ),
+        (
+            &["--integrator", "sppm", "--photons", "0"],
+            "--photons must be at least 1",
+        ),
+        (
+            &["--integrator", "photon", "--radius=-1"],
+            "--radius must be a positive distance, got -1",
+        ),
+        (
+            &["--integrator", "sppm", "--radius=NaN"],
+            "--radius must be a positive distance, got NaN",
+        ),
+        (
+            &["--integrator", "photon", "--k", "0"],
+            "--k must be at least 1",
+        ),
+        (
+            &["--integrator", "photon", "--k", "5", "--radius", "0.1"],
+            "--k and --radius exclude each other",
+        ),
+        (
+            &["--integrator", "sppm", "--alpha", "1"],
+            "--alpha must lie strictly between 0 and 1",
+        ),
+        (
+            &["--integrator", "sppm", "--alpha=0"],
+            "--alpha must lie strictly between 0 and 1",
+        ),
+        (
+            &["--integrator", "sppm", "--alpha=NaN"],
+            "--alpha must lie strictly between 0 and 1",
+        ),
+        (
+            &["--integrator", "vpl", "--clamp=NaN"],
+            "--clamp must be a bound ≥ 0 on the geometry term",
+        ),
+        (
+            &["--integrator", "vpl", "--clamp=-1"],
+            "--clamp must be a bound ≥ 0 on the geometry term",
+        ),
+        (
+            &["--integrator", "vpl", "--vpl-paths", "0"],
+            "--vpl-paths must be at least 1",
+        ),
+        (
+            &["--integrator", "irradiance-cache", "--ic-error=NaN"],
+            "--ic-error must be a positive threshold a",
+        ),
+        (
+            &["--integrator", "irradiance-cache", "--ic-rays", "0"],
+            "--ic-rays must be at least 1",
+        ),
+        (
+            &["--integrator", "path", "--alpha", "0.5"],
+            "--alpha does not apply to --integrator path: it is an option of --integrator sppm",
+        ),
+        (
+            &["--integrator", "vpl", "--photons", "10"],
+            "--photons does not apply to --integrator vpl",
+        ),
+    ];
+    for (options, expected) in cases {
+        let mut args = vec!["render"];
+        args.extend(options);
+        refused("biased", &tiny(&args), expected);
+    }
+}

@@ -140,7 +140,7 @@ fn both_languages_have_the_same_files_slides_pictures_and_commands_in_order() {
     let en = read_deck("en");
     let names = |d: &[(String, Vec<Slide>)]| d.iter().map(|c| c.0.clone()).collect::<Vec<_>>();
     assert_eq!(names(&bg), names(&en));
-    assert_eq!(bg.len(), 8, "one file per chapter of the tour");
+    assert_eq!(bg.len(), 9, "one file per chapter of the tour");
     for ((file, b), (_, e)) in bg.iter().zip(&en) {
         assert_eq!(b.len(), e.len(), "{file}: slide counts differ");
         for (x, y) in b.iter().zip(e) {
@@ -289,7 +289,7 @@ fn tiny_args(cmd: &str, out: &Path) -> Result<Vec<String>, String> {
             }
         }
         "tour" | "gi-effects" | "brdf" | "rendering-equation" | "path" | "light" | "bdpt"
-        | "compare" => set(&mut words, "--quality", "tiny".into()),
+        | "compare" | "biased" => set(&mut words, "--quality", "tiny".into()),
         other => return Err(format!("`{cmd}`: the test cannot make `{other}` tiny")),
     }
     Ok(words)

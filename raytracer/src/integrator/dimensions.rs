@@ -21,6 +21,8 @@
 //! | light path's start ([`super::subpath::light_subpath`]) | [`LIGHT_CHOICE`] (1), [`EMISSION_POINT`] (2), [`EMISSION_DIRECTION`] (2) |
 //! | connection to the camera (light tracing, `t = 1`) | [`LENS`] (2) |
 //! | occlusion ray (ambient occlusion) | [`AO_DIRECTION`] (2) |
+//! | visible point ([`super::visible_point::visible_point`]) | camera ray, then a continuation per mirror or glass bounce |
+//! | irradiance-cache ray ([`super::irradiance_cache`]) | [`IC_DIRECTION`] (2), then per surface: light sample (not at delta surfaces), continuation, roulette |
 //!
 //! # Layouts
 //!
@@ -45,6 +47,15 @@
 //!   within each `s = 0, 1, …`: `t = 1` draws a connection to the camera,
 //!   `s = 1` (`t ≥ 2`, at a vertex that can be connected to) a light sample,
 //!   the others nothing.
+//! - **photon**, **vpl**, **sppm** (one pixel's pass), **irradiance-cache**:
+//!   the visible point; there, below the maximum depth: light sample. Then
+//!   `photon` with final gathering, for each gather ray: continuation and a
+//!   continuation per delta bounce; `irradiance-cache` at a point no record
+//!   covers: its record rays, and at a Phong surface: continuation and an
+//!   irradiance-cache ray's path. Their light paths (photons, VPLs) and the
+//!   cache's records draw from streams of their own (sample indices `2^48 +
+//!   stream` and `2^47`), each light path as a light path's start and per
+//!   bounce: continuation, roulette.
 
 use crate::sampling::Draw;
 
@@ -68,6 +79,8 @@ pub const BRDF_DIRECTION: Draw<2> = Draw::new("direction from the BRDF");
 pub const ROULETTE: Draw<1> = Draw::new("Russian roulette");
 /// The cosine-distributed direction of an occlusion ray.
 pub const AO_DIRECTION: Draw<2> = Draw::new("direction of an occlusion ray");
+/// The cosine-distributed direction of an irradiance-cache ray.
+pub const IC_DIRECTION: Draw<2> = Draw::new("direction of an irradiance-cache ray");
 
 #[cfg(test)]
 mod tests {
@@ -160,6 +173,75 @@ mod tests {
             dimensions_used(&scene, &bdpt),
             camera_ray + continuation + light_start + 2 * to_camera + light_sample,
             "bdpt"
+        );
+        // The biased integrators: visible point, light sample; final
+        // gathering adds a continuation per gather ray (the furnace has no
+        // delta surfaces); a covered irradiance-cache point draws nothing more.
+        let never = std::sync::atomic::AtomicBool::new(false);
+        let d = Some(3);
+        let photon = crate::integrator::PhotonMapping::build(
+            &scene,
+            crate::integrator::PhotonSettings {
+                photons: 2000,
+                max_depth: d,
+                ..Default::default()
+            },
+            &never,
+        )
+        .unwrap();
+        assert_eq!(
+            dimensions_used(&scene, &photon),
+            camera_ray + light_sample,
+            "photon"
+        );
+        let gathering = crate::integrator::PhotonMapping::build(
+            &scene,
+            crate::integrator::PhotonSettings {
+                photons: 2000,
+                final_gather: 2,
+                max_depth: d,
+                ..Default::default()
+            },
+            &never,
+        )
+        .unwrap();
+        assert_eq!(
+            dimensions_used(&scene, &gathering),
+            camera_ray + light_sample + 2 * continuation,
+            "photon with final gathering"
+        );
+        let vpl = crate::integrator::InstantRadiosity::build(
+            &scene,
+            crate::integrator::VplSettings {
+                paths: 16,
+                max_depth: d,
+                ..Default::default()
+            },
+            &never,
+        )
+        .unwrap();
+        assert_eq!(
+            dimensions_used(&scene, &vpl),
+            camera_ray + light_sample,
+            "vpl"
+        );
+        let mut tiny = scene.clone();
+        tiny.set_resolution(4, 4);
+        let ic = crate::integrator::IrradianceCache::build(
+            &tiny,
+            crate::integrator::IrradianceCacheSettings {
+                rays: 4,
+                error: 0.9,
+                max_depth: d,
+                ..Default::default()
+            },
+            &never,
+        )
+        .unwrap();
+        assert_eq!(
+            dimensions_used(&tiny, &ic),
+            camera_ray + light_sample,
+            "irradiance-cache"
         );
         // Roulette adds its one number per bounce once it plays (from the
         // first bounce on here; the path may end after one or two).

@@ -40,23 +40,34 @@ pub mod camera_connection;
 pub mod continuation;
 pub mod dimensions;
 mod direct;
+pub mod grid;
+pub mod irradiance_cache;
 mod light_tracing;
 pub mod mis_weight;
 mod naive;
 pub mod nee;
 mod path;
+pub mod photon;
+pub mod photon_map;
+mod photon_mapping;
 pub mod roulette;
 pub mod shading_normals;
+pub mod sppm;
 pub mod stop;
 pub mod subpath;
 pub mod vertex;
+pub mod visible_point;
+pub mod vpl;
 
 pub use ao::AmbientOcclusion;
 pub use bdpt::{Bdpt, StrategyFilter};
 pub use direct::Direct;
+pub use irradiance_cache::{IrradianceCache, IrradianceCacheSettings};
 pub use light_tracing::LightTracer;
 pub use naive::NaiveRecursive;
 pub use path::{DirectStrategy, PathTracer};
+pub use photon_mapping::{PhotonMapping, PhotonSettings, PhotonStats};
+pub use vpl::{InstantRadiosity, VplSettings};
 
 /// The primary ray of a pixel sample: a uniform point in the pixel (a box
 /// filter: each sample counts fully for its own pixel) and a point on the lens.

@@ -34,6 +34,7 @@ chapters![
     c06_light,
     c07_bdpt,
     c08_compare,
+    c09_biased,
 ];
 
 /// The chapter whose subcommand is `name`.

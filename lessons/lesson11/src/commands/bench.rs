@@ -1,5 +1,6 @@
 //! `lesson11 bench`: the figures behind every speed claim of the README.
 
+mod biased;
 mod mitsuba;
 mod rays;
 
@@ -25,6 +26,9 @@ pub struct BenchArgs {
     /// Skip the ray-throughput part.
     #[arg(long)]
     pub no_rays: bool,
+    /// Skip the biased integrators' part (photons, photon map, SPPM, VPL).
+    #[arg(long)]
+    pub no_biased: bool,
     /// Seconds per algorithm in the equal-time comparison (0 skips it).
     #[arg(long, default_value_t = 2.0)]
     pub equal_time: f64,
@@ -112,11 +116,15 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             );
         }
     }
+    if !args.no_biased {
+        biased::run(&threads)?;
+    }
     if args.equal_time > 0.0 {
         println!(
             "\nEqual time ({} s each, 128 pixels wide): RMSE against an independent reference \
-             (Mitsuba's Cornell box at max depth 65, the stored door at max depth 5, else our \
-             bidirectional path tracer with another seed at 512 spp and max depth 5)",
+             (Mitsuba's Cornell box at max depth 65, the stored door at max depth 5 and caustic at \
+             max depth 8, else our bidirectional path tracer with another seed at 512 spp and max \
+             depth 5)",
             args.equal_time
         );
         for name in ["cornell", "door", "caustic"] {

@@ -5,16 +5,16 @@ use anyhow::{Result, anyhow};
 use clap::Args;
 use grading::compare::{COMPARISONS, REFERENCE_SPP};
 
-use crate::reference::door_settings;
+use crate::reference::{caustic_settings, door_settings};
 
 /// Regenerate every stored reference at many samples per pixel (mean and variance EXR):
-/// the ones the grader compares students' images against (tests/references/), and the
-/// door scene's for the equal-time comparison of `lesson11 compare`
-/// (lessons/lesson11/references/; a few minutes). Tables are insta snapshots: review their
+/// the ones the grader compares students' images against (tests/references/), the
+/// door scene's for the equal-time comparison of `lesson11 compare` and the caustic
+/// scene's for `lesson11 biased` (lessons/lesson11/references/; a few minutes). Tables are insta snapshots: review their
 /// changes with `cargo insta review`.
 #[derive(Args, Debug)]
 pub struct ReferencesArgs {
-    /// Only the grader's references (seconds), not the door scene's (minutes).
+    /// Only the grader's references (seconds), not the door and caustic scenes' (minutes).
     #[arg(long)]
     pub grader_only: bool,
 }
@@ -29,16 +29,22 @@ pub fn run(args: &ReferencesArgs) -> Result<()> {
         println!("  wrote {} and its -variance.exr", path.display());
     }
     if !args.grader_only {
-        let door = door_settings();
-        println!(
-            "door: bidirectional path tracing, {}×{}, max depth {}, {} spp, seed {}",
-            door.width, door.height, door.max_depth, door.spp, door.seed
-        );
-        let path = door.render_and_store()?;
-        println!(
-            "  wrote {}, its -variance.exr and its settings",
-            path.display()
-        );
+        for stored in [door_settings(), caustic_settings()] {
+            println!(
+                "{}: bidirectional path tracing, {}×{}, max depth {}, {} spp, seed {}",
+                stored.scene,
+                stored.width,
+                stored.height,
+                stored.max_depth,
+                stored.spp,
+                stored.seed
+            );
+            let path = stored.render_and_store()?;
+            println!(
+                "  wrote {}, its -variance.exr and its settings",
+                path.display()
+            );
+        }
     }
     println!(
         "Now run `cargo test -p grading --features solutions` and `cargo test -p lesson11`, and \

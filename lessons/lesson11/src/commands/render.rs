@@ -5,7 +5,7 @@ mod student;
 use anyhow::Result;
 use clap::Args;
 
-use crate::integrators::{IntegratorArgs, IntegratorKind};
+use crate::integrators::{IntegratorArgs, IntegratorKind, render_sppm_to_files};
 use crate::options::{SceneArgs, check_exposure};
 use crate::render_files::render_to_files;
 
@@ -39,6 +39,21 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         );
     }
     let (scene, options) = args.scene.load("cornell")?;
+    if args.integrator == IntegratorKind::Sppm {
+        let ia = &args.integrator_args;
+        ia.check_only(args.integrator)?;
+        let settings = ia
+            .biased
+            .sppm(ia.max_depth(args.integrator, &scene)?, ia.rr_depth(&scene))?;
+        return render_sppm_to_files(
+            &scene,
+            &settings,
+            &options,
+            &args.scene.out,
+            args.exposure,
+            args.scene.force,
+        );
+    }
     let integrator =
         args.integrator
             .build(&args.integrator_args, &scene, &options, args.scene.force)?;

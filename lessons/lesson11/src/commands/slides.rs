@@ -345,7 +345,8 @@ mod tests {
                     "05-path",
                     "06-light",
                     "07-bdpt",
-                    "08-compare"
+                    "08-compare",
+                    "09-biased"
                 ],
                 "{}",
                 deck.lang

@@ -36,7 +36,13 @@ pub fn run(
             branching: ia.branching()[0],
         },
         IntegratorKind::Direct | IntegratorKind::PathNee => StudentRender::Direct,
-        IntegratorKind::Ao | IntegratorKind::Light | IntegratorKind::Bdpt => bail!(
+        IntegratorKind::Ao
+        | IntegratorKind::Light
+        | IntegratorKind::Bdpt
+        | IntegratorKind::Photon
+        | IntegratorKind::Sppm
+        | IntegratorKind::Vpl
+        | IntegratorKind::IrradianceCache => bail!(
             "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
              (light tracing and bidirectional tracing are graded piece by piece: exercises 14 and 15)"
         ),

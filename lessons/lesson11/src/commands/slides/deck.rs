@@ -1,6 +1,6 @@
 //! The slide deck as the Markdown in `slides/{bg,en}/` writes it.
 //!
-//! One file per chapter of the tour (`01-stereo.md` … `08-compare.md`);
+//! One file per chapter of the tour (`01-stereo.md` … `09-biased.md`);
 //! slides are separated by a line `---`; each slide starts with `# Title`.
 //! A line of images (`![caption](02-gi-effects/cornell-path.png) …`, paths
 //! relative to `out/lesson11`) becomes the slide's figures; the lines
