@@ -74,6 +74,9 @@ pub mod ex16_photon_density;
 #[allow(unused_variables)]
 #[cfg_attr(feature = "solutions", path = "../solutions/ex17_vpl_contribution.rs")]
 pub mod ex17_vpl_contribution;
+#[allow(unused_variables)]
+#[cfg_attr(feature = "solutions", path = "../solutions/ex18_metropolis_step.rs")]
+pub mod ex18_metropolis_step;
 
 /// The module names, in lecture order (they match `info.toml`).
 pub const MODULES: &[&str] = &[
@@ -94,6 +97,7 @@ pub const MODULES: &[&str] = &[
     "ex15_bdpt_connection",
     "ex16_photon_density",
     "ex17_vpl_contribution",
+    "ex18_metropolis_step",
 ];
 
 /// Whether this build uses the reference solutions (feature `solutions`).

@@ -34,9 +34,11 @@
 //! ask for, and [`memory_needed`] with [`MemoryCap`] lets a front-end refuse
 //! an image that would not fit in memory before allocating it.
 
+pub mod metropolis;
 pub mod sppm;
 mod strategies;
 
+pub use metropolis::{Metropolis, MetropolisResult, render_metropolis};
 pub use sppm::{SppmResult, render_sppm};
 pub use strategies::render_strategies;
 
@@ -216,7 +218,7 @@ where
     let start = Instant::now();
     let layout = Layout::new(width, height, options.tile_size, options.spp);
     let expected = width as u64 * height as u64 * options.spp as u64;
-    let bar = progress_bar(options, expected);
+    let bar = progress_bar(options, expected, "samples");
     let job = Job {
         layout,
         seed: options.seed,
@@ -231,32 +233,14 @@ where
         }),
         bar: &bar,
     };
-    let run = || {
+    let threads = on_threads(options.threads, || {
         let workers = rayon::current_num_threads().min(job.layout.units).max(1);
         rayon::scope(|s| {
             for _ in 0..workers {
                 s.spawn(|_| job.work());
             }
         });
-    };
-    let mut threads = rayon::current_num_threads();
-    match options.threads.map(|n| n.clamp(1, thread_limit())) {
-        None => run(),
-        Some(n) => match rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .thread_name(|i| format!("render-{i}"))
-            .build()
-        {
-            Ok(pool) => {
-                threads = n;
-                pool.install(run)
-            }
-            Err(e) => {
-                eprintln!("warning: cannot start {n} render threads ({e}); using the global pool");
-                run()
-            }
-        },
-    }
+    });
     let merger = job.merger.into_inner().expect("a render worker panicked");
     debug_assert!(merger.pending.iter().all(Option::is_none));
     let film = merger.film;
@@ -271,6 +255,33 @@ where
         eprintln!("{}", summary(options, width, height, threads, &stats));
     }
     RenderResult { film, stats }
+}
+
+/// Runs `run` in a pool of `threads` worker threads (at most
+/// [`thread_limit`]), or in rayon's global pool for `None` or if the pool
+/// cannot be made (with a warning); returns the number of threads it had.
+fn on_threads(threads: Option<usize>, run: impl FnOnce() + Send) -> usize {
+    match threads.map(|n| n.clamp(1, thread_limit())) {
+        None => {
+            run();
+            rayon::current_num_threads()
+        }
+        Some(n) => match rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .thread_name(|i| format!("render-{i}"))
+            .build()
+        {
+            Ok(pool) => {
+                pool.install(run);
+                n
+            }
+            Err(e) => {
+                eprintln!("warning: cannot start {n} render threads ({e}); using the global pool");
+                run();
+                rayon::current_num_threads()
+            }
+        },
+    }
 }
 
 /// The most worker threads a render uses: four per core, and at least 64
@@ -504,16 +515,20 @@ where
     }
 }
 
-const PROGRESS_TEMPLATE: &str =
-    "{prefix} {wide_bar} {percent:>3}% {human_pos}/{human_len} samples, {per_sec:0}, ETA {eta}";
+/// The progress bar's line for work counted in `unit`s.
+fn progress_template(unit: &str) -> String {
+    format!(
+        "{{prefix}} {{wide_bar}} {{percent:>3}}% {{human_pos}}/{{human_len}} {unit}, {{per_sec:0}}, ETA {{eta}}"
+    )
+}
 
-/// A progress bar counting samples, with rate and ETA; hidden unless
-/// requested and stderr is a terminal.
-fn progress_bar(options: &RenderOptions, samples: u64) -> ProgressBar {
+/// A progress bar counting samples (or another `unit` of work), with rate
+/// and ETA; hidden unless requested and stderr is a terminal.
+fn progress_bar(options: &RenderOptions, samples: u64, unit: &str) -> ProgressBar {
     if !options.progress || !std::io::stderr().is_terminal() {
         return ProgressBar::hidden();
     }
-    let style = ProgressStyle::with_template(PROGRESS_TEMPLATE)
+    let style = ProgressStyle::with_template(&progress_template(unit))
         .unwrap_or_else(|_| ProgressStyle::default_bar());
     ProgressBar::with_draw_target(Some(samples), ProgressDrawTarget::stderr())
         .with_style(style)
@@ -964,7 +979,7 @@ mod tests {
 
     #[test]
     fn progress_and_summary_text() {
-        assert!(ProgressStyle::with_template(PROGRESS_TEMPLATE).is_ok());
+        assert!(ProgressStyle::with_template(&progress_template("samples")).is_ok());
         let stats = RenderStats {
             elapsed: Duration::from_millis(1500),
             samples: 3_000_000,

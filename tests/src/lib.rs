@@ -3,8 +3,8 @@
 //! Layered as the course's design describes:
 //! 0. deterministic answers (stereo eyes, anaglyph, BRDF values and their
 //!    normalizations, reflection, the density of a warp, change of measure,
-//!    MIS weights, geometry term, splat values): exact comparisons against
-//!    the grader's own formulas; a wrong answer is compared with the answers
+//!    MIS weights, geometry term, splat values, Metropolis acceptance and
+//!    splat weights): exact comparisons against the grader's own formulas; a wrong answer is compared with the answers
 //!    of the usual mistakes in every case at once, and the one that matches
 //!    is named ([`stats::recognise`]);
 //! 1. sampling routines: chi-square against the grader's own pdf
@@ -43,6 +43,7 @@ pub mod ex14_light_tracing;
 pub mod ex15_bdpt_connection;
 pub mod ex16_photon_density;
 pub mod ex17_vpl_contribution;
+pub mod ex18_metropolis_step;
 pub mod outcome;
 pub mod pictures;
 pub mod polygon;
@@ -124,6 +125,12 @@ pub const GRADERS: &[(&str, Check)] = &[
     }),
     ("ex17_vpl_contribution", || {
         ex17_vpl_contribution::check(ex::ex17_vpl_contribution::vpl_contribution)
+    }),
+    ("ex18_metropolis_step", || {
+        ex18_metropolis_step::check(
+            ex::ex18_metropolis_step::acceptance,
+            ex::ex18_metropolis_step::expected_value_splat,
+        )
     }),
 ];
 
@@ -303,9 +310,8 @@ pub fn exercise_report(results: &[Graded]) -> String {
             g.seconds
         ));
         if g.outcome.is_passed() {
-            let next = registry
-                .iter()
-                .find(|n| n.number() == e.number().map(|k| k + 1));
+            // The next in the registry's order (numbers may skip).
+            let next = registry.iter().skip_while(|n| n.name != e.name).nth(1);
             match next {
                 Some(n) => out.push_str(&format!(
                     "Next: exercise {} — {} (exercises/{}).\n",

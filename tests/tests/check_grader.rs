@@ -523,6 +523,48 @@ fn ex17_vpl_contribution() {
     );
 }
 
+#[test]
+fn ex18_metropolis_step() {
+    use ex18_metropolis_step::{check, check_chain};
+    let (a, w) = (correct::acceptance_by_branch, correct::splat_in_f64);
+    passes("branch, weights as 1/f − a/f in f64", check(a, w));
+    fails(
+        "upside down",
+        check(wrong::acceptance_upside_down, w),
+        "upside down",
+    );
+    fails(
+        "unclamped",
+        check(wrong::acceptance_unclamped, w),
+        "min(1, f(y)/f(x))",
+    );
+    fails("Barker", check(wrong::acceptance_barker, w), "Barker");
+    fails(
+        "stuck at f(x) = 0",
+        check(wrong::acceptance_stuck_at_zero, w),
+        "must leave it",
+    );
+    fails(
+        "weights not over f",
+        check(a, wrong::splat_not_over_f),
+        "not divided by f",
+    );
+    fails("swapped weights", check(a, wrong::splat_swapped), "swapped");
+    fails(
+        "proposal only",
+        check(a, wrong::splat_proposal_only),
+        "only the proposal",
+    );
+    fails("NaN at f = 0", check(a, wrong::splat_nan_at_zero), "finite");
+    // The chain alone can fail: weights not over f make every pixel's
+    // estimate follow f² instead of f.
+    fails(
+        "chain with weights not over f",
+        check_chain(a, wrong::splat_not_over_f),
+        "biased",
+    );
+}
+
 /// The tables of deterministic answers the grader compares with: a change
 /// here changes what students must produce (`cargo insta review`).
 #[test]

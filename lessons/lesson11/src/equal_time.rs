@@ -1,29 +1,30 @@
 //! Every algorithm at the same time budget, measured against one independent
 //! reference: the comparison of chapter 8 (unbiased algorithms differ only
-//! in their noise) and of `lesson11 bench`.
+//! in their noise) and of `lesson11 bench`; Metropolis light transport joins
+//! it on request.
 
 use raytracer::film::Image;
 use raytracer::integrator::{
     Bdpt, DirectStrategy, Integrator, LightTracer, NaiveRecursive, PathTracer,
 };
 use raytracer::metrics::rmse;
-use raytracer::render::{RenderOptions, render};
+use raytracer::render::{Metropolis, RenderOptions, render, render_metropolis};
 use raytracer::scene::Scene;
 
 use crate::reference::Reference;
 
-/// Renders `integrator` for about `seconds`: renders of 1, 2, 4, … samples
-/// per pixel measure the time per sample and trace the error against
-/// `reference` as it falls (the convergence curve), then one render takes the
-/// samples that fit the budget.
-fn render_for(
-    scene: &Scene,
-    integrator: &dyn Integrator,
-    base: &RenderOptions,
-    seconds: f64,
-    reference: &Image,
-) -> (Image, u32, f64, Vec<(f64, f64)>) {
-    let run = |spp: u32| {
+/// How one algorithm renders: `spp` samples (mutations, for Metropolis) per
+/// pixel in; the image, its seconds, and the part of them that does not grow
+/// with `spp` (Metropolis's bootstrap) out.
+type Run<'a> = Box<dyn Fn(u32) -> (Image, f64, f64) + 'a>;
+
+/// An integrator rendered by the pixel loop.
+fn pixels<'a>(
+    scene: &'a Scene,
+    integrator: &'a dyn Integrator,
+    base: &'a RenderOptions,
+) -> Run<'a> {
+    Box::new(move |spp| {
         let options = RenderOptions {
             spp,
             progress: false,
@@ -33,20 +34,47 @@ fn render_for(
         (
             result.film.image(),
             result.stats.elapsed.as_secs_f64().max(1e-6),
+            0.0,
         )
-    };
+    })
+}
+
+/// Metropolis light transport over `bdpt` with the default parameters;
+/// the bootstrap's time counts, as a fixed cost.
+fn metropolis<'a>(scene: &'a Scene, bdpt: &'a Bdpt, base: &'a RenderOptions) -> Run<'a> {
+    Box::new(move |spp| {
+        let options = RenderOptions {
+            spp,
+            progress: false,
+            ..base.clone()
+        };
+        let result = render_metropolis(scene, bdpt, &options, &Metropolis::default());
+        (
+            result.film.image(),
+            result.stats.elapsed.as_secs_f64().max(1e-6),
+            result.bootstrap_seconds,
+        )
+    })
+}
+
+/// Renders with `run` for about `seconds`: renders of 1, 2, 4, … samples
+/// per pixel measure the time per sample and trace the error against
+/// `reference` as it falls (the convergence curve), then one render takes the
+/// samples that fit the budget (after the fixed part of the time).
+fn render_for(run: &Run, seconds: f64, reference: &Image) -> (Image, u32, f64, Vec<(f64, f64)>) {
     let mut curve = Vec::new();
     let mut spp = 1;
-    let per_spp = loop {
-        let (image, secs) = run(spp);
+    let (fixed, per_spp) = loop {
+        let (image, secs, fixed) = run(spp);
         curve.push((secs, rmse(&image, reference) as f64));
         if secs * 2.0 > seconds / 2.0 || spp >= 1 << 15 {
-            break secs / spp as f64;
+            let fixed = fixed.clamp(0.0, secs / 2.0);
+            break (fixed, (secs - fixed) / spp as f64);
         }
         spp *= 2;
     };
-    let spp = ((seconds / per_spp) as u32).clamp(1, 1 << 16);
-    let (image, secs) = run(spp);
+    let spp = (((seconds - fixed) / per_spp) as u32).clamp(1, 1 << 16);
+    let (image, secs, _) = run(spp);
     curve.push((secs, rmse(&image, reference) as f64));
     curve.sort_by(|a, b| a.0.total_cmp(&b.0));
     (image, spp, secs, curve)
@@ -67,19 +95,31 @@ pub struct EqualTimeRow {
 /// The branching factor of naive recursion in the comparison.
 pub const NAIVE_N: u32 = 4;
 
+/// The algorithms that join path, light and bidirectional tracing in a
+/// comparison.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Also {
+    /// Naive recursion, N = 4 down to the roulette's depth, then 1.
+    pub naive: bool,
+    /// Metropolis light transport over bidirectional path tracing.
+    pub metropolis: bool,
+}
+
 /// Renders `scene` with every algorithm for about `budget` seconds each, all
 /// stopping at `max_depth` (the reference's) with Russian roulette from the
 /// scene's depth, and measures each one's RMSE against `reference`, an
 /// independent estimate (another renderer, or another seed): an algorithm's
 /// own samples are never part of it. Naive recursion (N = 4 down to the
-/// roulette's depth, then one ray per hit, ended by roulette) joins the comparison if `with_naive`.
+/// roulette's depth, then one ray per hit, ended by roulette) and
+/// Metropolis light transport (over the same bidirectional tracer) join the
+/// comparison as `also` says.
 pub fn equal_time(
     scene: &Scene,
     base: &RenderOptions,
     budget: f64,
     reference: &Reference,
     max_depth: u32,
-    with_naive: bool,
+    also: Also,
 ) -> Vec<EqualTimeRow> {
     let rr_depth = scene.settings.rr_depth;
     let max_depth = Some(max_depth);
@@ -109,25 +149,33 @@ pub fn equal_time(
         max_depth,
         rr_depth,
     };
-    let mut algorithms: Vec<(&'static str, &dyn Integrator)> = vec![
-        ("path (MIS)", &path),
-        ("path (BRDF only)", &path_brdf),
-        ("light", &light),
-        ("bidirectional", &bdpt),
+    let mut algorithms: Vec<(&'static str, &str, Run)> = vec![
+        ("path (MIS)", path.name(), pixels(scene, &path, base)),
+        (
+            "path (BRDF only)",
+            path_brdf.name(),
+            pixels(scene, &path_brdf, base),
+        ),
+        ("light", light.name(), pixels(scene, &light, base)),
+        ("bidirectional", bdpt.name(), pixels(scene, &bdpt, base)),
     ];
-    if with_naive {
-        algorithms.insert(0, ("naive recursion, N = 4 then 1", &naive));
+    if also.naive {
+        let run = pixels(scene, &naive, base);
+        algorithms.insert(0, ("naive recursion, N = 4 then 1", naive.name(), run));
+    }
+    if also.metropolis {
+        let run = metropolis(scene, &bdpt, base);
+        algorithms.push(("Metropolis (over bidirectional)", "mlt", run));
     }
     let mut rows = Vec::new();
-    for (algorithm, integrator) in algorithms {
-        let (image, spp, seconds, curve) =
-            render_for(scene, integrator, base, budget, &reference.mean);
+    for (algorithm, name, run) in algorithms {
+        let (image, spp, seconds, curve) = render_for(&run, budget, &reference.mean);
         let rmse = rmse(&image, &reference.mean);
         println!(
             "  {:14} {algorithm:34} {spp:6} spp {seconds:7.2} s  RMSE {rmse:.4}",
             scene.name
         );
-        let stem = format!("{}-{}", scene.name, integrator.name());
+        let stem = format!("{}-{name}", scene.name);
         rows.push(EqualTimeRow {
             algorithm,
             stem,

@@ -1,6 +1,8 @@
 //! The integrators a command line can choose (`--integrator`) and their
 //! options: the lecture's algorithms from direct light to bidirectional path
-//! tracing, shared by `lesson11 render` and the stereo chapter.
+//! tracing and Metropolis light transport, shared by `lesson11 render` and
+//! the stereo chapter (Metropolis only by `render`: it runs Markov chains
+//! over the whole image, not one pixel sample at a time).
 //!
 //! Every option is checked before anything is rendered: an option the chosen
 //! integrator does not use is an error, not silently ignored, and naive
@@ -17,8 +19,11 @@ use raytracer::integrator::{
     AmbientOcclusion, Bdpt, Direct, DirectStrategy, Integrator, LightTracer, NaiveRecursive,
     PathTracer,
 };
-use raytracer::render::RenderOptions;
+use raytracer::render::{Metropolis, RenderOptions, memory_needed};
 use raytracer::scene::{Scene, max_depth_from};
+
+use crate::metropolis::MetropolisArgs;
+use crate::options::check_memory;
 
 /// The integrators this build offers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -39,6 +44,9 @@ pub enum IntegratorKind {
     Light,
     /// Bidirectional path tracing: camera and light subpaths, every connection, MIS over all of them.
     Bdpt,
+    /// Metropolis light transport: Markov chains over bidirectional paths; --spp counts mutations
+    /// per pixel (see --chains, --bootstrap, --large-step-probability, --mutation-size).
+    Mlt,
     /// Photon mapping (biased): photon maps from light paths, density estimates at the camera's hits.
     Photon,
     /// Stochastic progressive photon mapping (biased but consistent): --spp passes, radii shrinking by --alpha.
@@ -107,6 +115,10 @@ impl IntegratorKind {
                 rr_depth,
                 strategy_images: None,
             }),
+            IntegratorKind::Mlt => bail!(
+                "--integrator mlt runs Markov chains over the whole image, not one pixel sample at a time: \
+                 only `lesson11 render --integrator mlt` renders with it"
+            ),
             IntegratorKind::Photon | IntegratorKind::Vpl | IntegratorKind::IrradianceCache => {
                 let Some(kind) = self.biased() else {
                     bail!("{self:?} is not a biased integrator")
@@ -206,6 +218,8 @@ pub struct IntegratorArgs {
     #[arg(long, allow_negative_numbers = true)]
     pub ao_distance: Option<f32>,
     #[command(flatten)]
+    pub metropolis: MetropolisArgs,
+    #[command(flatten)]
     pub biased: BiasedArgs,
 }
 
@@ -253,6 +267,9 @@ impl IntegratorArgs {
         }
         if kind != Ao && self.ao_distance.is_some() {
             unused("--ao-distance", "it is an option of --integrator ao")?;
+        }
+        if kind != IntegratorKind::Mlt {
+            crate::metropolis::refuse_unused(&self.metropolis, &name)?;
         }
         self.biased.check(kind.biased(), &name)?;
         if self.branching.contains(&0) {
@@ -303,6 +320,45 @@ impl IntegratorArgs {
                 scene.settings.max_depth.unwrap_or(NAIVE_DEFAULT_DEPTH),
             )),
         }
+    }
+
+    /// Metropolis light transport (`--integrator mlt`): the integrator its
+    /// chains run over, bidirectional path tracing with the depth options,
+    /// and its parameters for `options.spp` mutations per pixel, all checked,
+    /// with the memory the chains and the bootstrap need (the cap doubles
+    /// with `force`).
+    pub fn metropolis(
+        &self,
+        scene: &Scene,
+        options: &RenderOptions,
+        force: bool,
+    ) -> Result<(Bdpt, Metropolis)> {
+        let kind = IntegratorKind::Mlt;
+        self.check(kind)?;
+        let bdpt = Bdpt {
+            max_depth: self.max_depth(kind, scene)?,
+            rr_depth: self.rr_depth(scene),
+            strategy_images: None,
+        };
+        let pixels = scene.camera.width as u64 * scene.camera.height as u64;
+        let metropolis = self.metropolis.metropolis(options.spp as u64 * pixels)?;
+        let (w, h) = (scene.camera.width, scene.camera.height);
+        let threads = options
+            .threads
+            .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+        let bytes = metropolis
+            .memory_needed(w, h, threads)
+            .and_then(|m| m.checked_add(memory_needed(w, h)?));
+        check_memory(
+            &format!(
+                "Metropolis light transport at {w}×{h} on {threads} threads with {} bootstrap paths",
+                metropolis.bootstrap_paths(w, h)
+            ),
+            bytes,
+            "--width and --height, --bootstrap or --threads",
+            force,
+        )?;
+        Ok((bdpt, metropolis))
     }
 
     /// The roulette depth: `--rr-depth`, else the scene's.

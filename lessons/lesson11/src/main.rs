@@ -19,6 +19,7 @@
 //! chapters/c*.rs   one chapter each: its pictures, tables and plots, and its section of the page
 //! tour.rs          what every chapter is (its entry in the list) and gets (the Tour context)
 //! equal_time.rs algorithms.rs integrators.rs integrators/     shared by chapters and commands
+//! metropolis.rs    --integrator mlt: its options and its render to files
 //! render_files.rs  rendering to files: PNG, EXR and the variance, replaced together
 //! reference.rs     the independent references renders are measured against
 //! options.rs       scene, size, samples, seed, threads and output folder of a command line
@@ -37,6 +38,7 @@ mod chapters;
 mod commands;
 mod equal_time;
 mod integrators;
+mod metropolis;
 mod options;
 mod page;
 mod plots;

@@ -10,8 +10,8 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use anyhow::Result;
-use raytracer::film::Image;
 use raytracer::film::output::commit_all;
+use raytracer::film::{Film, Image};
 use raytracer::integrator::Integrator;
 use raytracer::render::{RenderOptions, RenderStats, render};
 use raytracer::scene::Scene;
@@ -31,68 +31,106 @@ pub fn render_to_files(
     stem: &str,
     exposure: f32,
 ) -> Result<Picture> {
-    create_dir(dir)?;
-    let png = dir.join(format!("{stem}.png"));
-    let exr = dir.join(format!("{stem}.exr"));
-    let variance = dir.join(format!("{stem}-variance.exr"));
-    // Found now, not after the render (a folder cannot be replaced by a file).
-    if let Some(folder) = [&png, &exr, &variance].into_iter().find(|p| p.is_dir()) {
-        anyhow::bail!(
-            "cannot write {}: a folder has that name; move it or choose another --out",
-            folder.display()
-        );
-    }
+    let files = OutputFiles::new(dir, stem)?;
     warn_if_unlit(scene, integrator);
     let result = render(scene, integrator, options);
-    if result.stats.samples == 0 && result.stats.interrupted {
-        // A black picture would only replace a better one.
-        println!(
-            "  {}: interrupted before any sample was computed; nothing written",
-            png.display()
-        );
-        anyhow::bail!("interrupted before any sample was computed");
-    }
-    let image = result.film.image();
-    let staged = [
-        image.stage_exr(&exr),
-        result.film.variance_image().stage_exr(&variance),
-        image.stage_png(&png, exposure),
-    ];
-    // All written before any is renamed: an error leaves the old three.
-    let staged = staged.into_iter().collect::<std::io::Result<Vec<_>>>()?;
-    commit_all(staged)?;
-    let stats = &result.stats;
-    let seconds = stats.elapsed.as_secs_f64();
-    if stats.nonfinite > 0 {
-        println!(
-            "  note: {} samples were NaN, infinite or negative and counted as zero",
-            stats.nonfinite
-        );
-    }
-    if stats.interrupted {
-        println!(
-            "  wrote {} and .exr: {}",
-            png.display(),
-            interrupted_summary(stats, options, result.film.unsampled_pixels(), scene)
-        );
-        anyhow::bail!(
-            "interrupted; what was rendered so far is in {}",
-            exr.display()
-        );
-    }
-    println!(
-        "  wrote {} and .exr ({} spp, {})",
-        png.display(),
-        options.spp,
-        seconds_text(seconds)
-    );
-    Ok(Picture {
-        png,
-        exr,
-        spp: options.spp,
-        exposure,
-        seconds: Some(seconds),
+    files.write(&result.film, &result.stats, options.spp, exposure, || {
+        interrupted_summary(
+            &result.stats,
+            options,
+            result.film.unsampled_pixels(),
+            scene,
+        )
     })
+}
+
+/// The three files of one picture: `stem.png`, `stem.exr` and
+/// `stem-variance.exr` in a folder.
+pub struct OutputFiles {
+    png: PathBuf,
+    exr: PathBuf,
+    variance: PathBuf,
+}
+
+impl OutputFiles {
+    /// Creates `dir` and checks, before anything is rendered, that no
+    /// folder stands where a file must go (a folder cannot be replaced by a
+    /// file).
+    pub fn new(dir: &Path, stem: &str) -> Result<OutputFiles> {
+        create_dir(dir)?;
+        let files = OutputFiles {
+            png: dir.join(format!("{stem}.png")),
+            exr: dir.join(format!("{stem}.exr")),
+            variance: dir.join(format!("{stem}-variance.exr")),
+        };
+        if let Some(folder) = [&files.png, &files.exr, &files.variance]
+            .into_iter()
+            .find(|p| p.is_dir())
+        {
+            anyhow::bail!(
+                "cannot write {}: a folder has that name; move it or choose another --out",
+                folder.display()
+            );
+        }
+        Ok(files)
+    }
+
+    /// Writes a rendered film (its image, its variance image, the PNG) and
+    /// prints one line; `interrupted` says how much an interrupted render
+    /// computed. Nothing is written if nothing was computed.
+    pub fn write(
+        &self,
+        film: &Film,
+        stats: &RenderStats,
+        spp: u32,
+        exposure: f32,
+        interrupted: impl FnOnce() -> String,
+    ) -> Result<Picture> {
+        let (png, exr) = (&self.png, &self.exr);
+        if film.total_samples() == 0 && stats.interrupted {
+            // A black picture would only replace a better one.
+            println!(
+                "  {}: interrupted before any sample was computed; nothing written",
+                png.display()
+            );
+            anyhow::bail!("interrupted before any sample was computed");
+        }
+        let image = film.image();
+        let staged = [
+            image.stage_exr(exr),
+            film.variance_image().stage_exr(&self.variance),
+            image.stage_png(png, exposure),
+        ];
+        // All written before any is renamed: an error leaves the old three.
+        let staged = staged.into_iter().collect::<std::io::Result<Vec<_>>>()?;
+        commit_all(staged)?;
+        let seconds = stats.elapsed.as_secs_f64();
+        if stats.nonfinite > 0 {
+            println!(
+                "  note: {} samples were NaN, infinite or negative and counted as zero",
+                stats.nonfinite
+            );
+        }
+        if stats.interrupted {
+            println!("  wrote {} and .exr: {}", png.display(), interrupted());
+            anyhow::bail!(
+                "interrupted; what was rendered so far is in {}",
+                exr.display()
+            );
+        }
+        println!(
+            "  wrote {} and .exr ({spp} spp, {})",
+            png.display(),
+            seconds_text(seconds)
+        );
+        Ok(Picture {
+            png: png.clone(),
+            exr: exr.clone(),
+            spp,
+            exposure,
+            seconds: Some(seconds),
+        })
+    }
 }
 
 /// What an interrupted render computed: its samples, their average per
@@ -118,7 +156,7 @@ fn interrupted_summary(
 
 /// Warns, once per run, that a scene without lights renders black (ambient
 /// occlusion needs none).
-fn warn_if_unlit(scene: &Scene, integrator: &dyn Integrator) {
+pub fn warn_if_unlit(scene: &Scene, integrator: &dyn Integrator) {
     static WARNED: AtomicBool = AtomicBool::new(false);
     if scene.lights.is_empty() && integrator.name() != "ao" && !WARNED.swap(true, Ordering::Relaxed)
     {

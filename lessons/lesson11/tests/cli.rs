@@ -144,6 +144,7 @@ fn the_tour_writes_every_picture_its_page_shows() {
         "path (BRDF only)",
         "light",
         "bidirectional",
+        "Metropolis (over bidirectional)",
     ] {
         assert!(
             compare.contains(algorithm),
@@ -175,7 +176,8 @@ fn equal_time_is_measured_against_independent_references_with_their_noise_floor(
         }
         rows += 1;
     }
-    assert_eq!(rows, 9);
+    // Door: four algorithms and Metropolis; Cornell box: naive recursion and four.
+    assert_eq!(rows, 10);
     let html = std::fs::read_to_string(tiny_tour().join("index.html")).unwrap();
     assert!(html.contains("noise floors"), "the table states the floors");
 }
@@ -235,7 +237,11 @@ fn captions_state_the_real_spp_exposure_and_time() {
         .iter()
         .filter(|f| f.src.starts_with("08-compare/door-") && f.src.ends_with(".png"))
         .collect();
-    assert_eq!(door.len(), 5, "the reference and four algorithms");
+    assert_eq!(
+        door.len(),
+        8,
+        "the reference, four algorithms and Metropolis, and Metropolis's noise beside BDPT's"
+    );
     assert!(door.iter().all(|f| f.exposure == Some(6.0)));
 }
 
@@ -318,6 +324,38 @@ fn render_writes_png_exr_and_variance() {
         "cornell-path.exr",
         "cornell-path-variance.exr",
     ] {
+        assert!(out.join(f).is_file(), "{f} missing");
+    }
+    std::fs::remove_dir_all(&out).ok();
+}
+
+/// Metropolis light transport writes the same three files; a render this
+/// small (48 mutations) runs with one chain per mutation.
+#[test]
+fn render_mlt_writes_png_exr_and_the_chains_variance() {
+    let out = temp_dir("render-mlt");
+    let o = lesson11(&[
+        "render",
+        "--scene",
+        "door",
+        "--integrator",
+        "mlt",
+        "--width",
+        "8",
+        "--height",
+        "6",
+        "--spp",
+        "1",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        said.contains("Metropolis: b = ") && said.contains("48 chains"),
+        "{said}"
+    );
+    for f in ["door-mlt.png", "door-mlt.exr", "door-mlt-variance.exr"] {
         assert!(out.join(f).is_file(), "{f} missing");
     }
     std::fs::remove_dir_all(&out).ok();

@@ -625,6 +625,63 @@ fn meaningless_numbers_are_refused() {
     );
 }
 
+/// Metropolis light transport's options (issue 16): each out-of-range value
+/// is named by its flag before anything is rendered, and an option of
+/// `--integrator mlt` given to another integrator is refused.
+#[test]
+fn metropolis_options_are_checked_before_rendering() {
+    let mlt = |flag: &'static str, value: &'static str| {
+        tiny(&[
+            "render",
+            "--integrator",
+            "mlt",
+            "--scene",
+            "door",
+            flag,
+            value,
+        ])
+    };
+    let cases = [
+        (
+            "--large-step-probability",
+            "1.5",
+            "--large-step-probability must be in [0, 1]",
+        ),
+        ("--large-step-probability", "-0.1", "got -0.1"),
+        ("--large-step-probability", "NaN", "got NaN"),
+        (
+            "--mutation-size",
+            "-0.01",
+            "--mutation-size must be in (0, 1]",
+        ),
+        ("--mutation-size", "0", "--mutation-size must be in (0, 1]"),
+        ("--mutation-size", "NaN", "got NaN"),
+        ("--chains", "0", "--chains must be at least 1, got 0"),
+        ("--chains", "-3", "--chains must be at least 1, got -3"),
+        ("--chains", "1000", "there are only 48 mutations in all"),
+        ("--bootstrap", "0", "--bootstrap must be at least 1 path"),
+        (
+            "--bootstrap",
+            "-1",
+            "--bootstrap must be at least 1, got -1",
+        ),
+    ];
+    for (flag, value, expected) in cases {
+        refused("mlt", &mlt(flag, value), expected);
+    }
+    // 2³² − 1 bootstrap paths would keep 64 GiB of f and its distribution.
+    refused(
+        "mlt-memory",
+        &mlt("--bootstrap", "4294967295"),
+        "Metropolis light transport at 8×6 on",
+    );
+    refused(
+        "mlt-unused",
+        &tiny(&["render", "--integrator", "bdpt", "--chains", "4"]),
+        "--chains does not apply to --integrator bdpt",
+    );
+}
+
 /// One rule for max depth D, on the command line and in a scene file.
 #[test]
 fn max_depth_has_one_rule_everywhere() {

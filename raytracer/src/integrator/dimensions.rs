@@ -47,6 +47,9 @@
 //!   within each `s = 0, 1, …`: `t = 1` draws a connection to the camera,
 //!   `s = 1` (`t ≥ 2`, at a vertex that can be connected to) a light sample,
 //!   the others nothing.
+//! - **mlt** (Metropolis light transport, [`crate::render::metropolis`]):
+//!   the pixel (2 numbers), then the layout of the integrator it runs over;
+//!   the numbers are the coordinates of the chain's state.
 //! - **photon**, **vpl**, **sppm** (one pixel's pass), **irradiance-cache**:
 //!   the visible point; there, below the maximum depth: light sample. Then
 //!   `photon` with final gathering, for each gather ray: continuation and a

@@ -4,13 +4,17 @@
 //! falls).
 
 use anyhow::Result;
+use raytracer::integrator::Bdpt;
+use raytracer::metrics::{mean, rmse};
+use raytracer::render::{self as renderer, Metropolis, RenderOptions, render_metropolis};
+use raytracer::scene::Scene;
 
-use crate::equal_time::{NAIVE_N, equal_time};
-use crate::page::{Figure, Section, Table, seconds_number};
+use crate::equal_time::{Also, EqualTimeRow, NAIVE_N, equal_time};
+use crate::page::{Figure, Section, Table, seconds_number, seconds_text};
 use crate::plots::{Chart, Scale, Series};
-use crate::reference::independent;
+use crate::reference::{Reference, independent};
 use crate::render_files::write_image;
-use crate::tour::{Chapter, Quality, Tour};
+use crate::tour::{Chapter, ChapterOutput, Quality, Tour};
 
 pub const CHAPTER: Chapter = Chapter::new(
     "compare",
@@ -44,7 +48,10 @@ fn render(tour: &Tour) -> Result<Section> {
              √(mean variance of the reference), is printed with the table and drawn in the plots, \
              and no RMSE measured against it can fall below it. In the door scene the only lamp is \
              in the next room: a path tracer must find the gap by chance, light paths pass through \
-             it on their own, and bidirectional path tracing joins the two rooms directly. On the \
+             it on their own, and bidirectional path tracing joins the two rooms directly; Metropolis \
+             light transport, Markov chains over bidirectional paths, keeps a path that found the gap \
+             and explores its neighbours (its spp are mutations per pixel, its time includes the \
+             bootstrap that estimates the brightness b). On the \
              Cornell box naive recursion (N = {NAIVE_N} rays at every hit, the full tree to depth 5 \
              — at most 341 rays per pixel sample — and below it one ray per hit, ended by Russian \
              roulette) spends its time on \
@@ -103,7 +110,14 @@ fn render(tour: &Tour) -> Result<Section> {
                 ),
             ));
         }
-        let rows = equal_time(&scene, &base, budget, &reference, max_depth, name == "cornell");
+        let also = Also {
+            naive: name == "cornell",
+            metropolis: name == "door",
+        };
+        let rows = equal_time(&scene, &base, budget, &reference, max_depth, also);
+        if name == "door" {
+            metropolis_noise(tour, &mut c, &scene, &base, max_depth, &reference, &rows)?;
+        }
         let times = rows.iter().flat_map(|r| r.curve.iter().map(|p| p.0));
         let (t0, t1) = times.fold((f64::MAX, 0.0f64), |(a, b), t| (a.min(t), b.max(t)));
         let mut series: Vec<Series> = rows
@@ -178,4 +192,94 @@ fn render(tour: &Tour) -> Result<Section> {
     table.write_csv(&c.dir.join("equal-time.csv"))?;
     c.section.tables.push(table);
     Ok(c.section)
+}
+
+/// "Not all noise is white": Metropolis light transport at a few mutations
+/// per pixel beside bidirectional path tracing given the same time, both at
+/// the door's exposure, with each one's RMSE and, for Metropolis, the RMSE
+/// its independent chains predict.
+fn metropolis_noise(
+    tour: &Tour,
+    c: &mut ChapterOutput,
+    scene: &Scene,
+    base: &RenderOptions,
+    max_depth: u32,
+    reference: &Reference,
+    rows: &[EqualTimeRow],
+) -> Result<()> {
+    let bdpt = Bdpt {
+        max_depth: Some(max_depth),
+        rr_depth: scene.settings.rr_depth,
+        ..Bdpt::default()
+    };
+    let mutations = if tour.quality == Quality::Tiny { 1 } else { 4 };
+    let options = |spp, seed| RenderOptions {
+        spp,
+        seed,
+        progress: false,
+        ..base.clone()
+    };
+    let metropolis = Metropolis::default();
+    // Seeds of their own: the equal-time row may have taken the same number
+    // of mutations, and its picture is on the page already.
+    let mlt = render_metropolis(scene, &bdpt, &options(mutations, base.seed + 1), &metropolis);
+    let seconds = mlt.stats.elapsed.as_secs_f64();
+    // Bidirectional tracing at the same time, from the equal-time row's
+    // seconds per sample.
+    let per_spp = rows
+        .iter()
+        .find(|r| r.algorithm == "bidirectional")
+        .map_or(seconds, |r| r.seconds / r.spp as f64);
+    let spp = ((seconds / per_spp).round() as u32).max(1);
+    let other = renderer::render(scene, &bdpt, &options(spp, base.seed + 2));
+    // The chains' prediction: the variance of each pixel's mean over the
+    // chains, plus the bootstrap's b̂ error that scales the whole image.
+    let (image, variance) = (mlt.film.image(), mlt.film.variance_image());
+    let rel = mlt.bootstrap.as_ref().map_or(0.0, |b| b.relative_error()) as f32;
+    let b_part = image
+        .pixels
+        .iter()
+        .map(|p| (*p * rel).length_squared() / 3.0)
+        .sum::<f32>()
+        / image.pixels.len() as f32;
+    let predicted = (mean(&variance).element_sum() / 3.0 + b_part).sqrt();
+    let truth = &reference.mean;
+    let pictures = [
+        (
+            format!("door-mlt-streaks-ev{DOOR_EXPOSURE}"),
+            image.clone(),
+            mutations,
+            seconds,
+            format!(
+                "door, Metropolis light transport over bidirectional paths, {mutations} mutations per pixel in {} \
+                 chains ({}), max depth {max_depth}: the errors come in streaks and blobs, each the trail of a \
+                 chain that lingered on a bright path — not all noise is white. RMSE {:.5} against {}; the \
+                 spread of the independent chains predicts {predicted:.5}.",
+                mlt.chains,
+                seconds_text(seconds),
+                rmse(&image, truth),
+                reference.name
+            ),
+        ),
+        (
+            format!("door-bdpt-streaks-ev{DOOR_EXPOSURE}"),
+            other.film.image(),
+            spp,
+            other.stats.elapsed.as_secs_f64(),
+            format!(
+                "door, bidirectional path tracing in the same time ({spp} spp, {}), max depth {max_depth}: \
+                 independent samples, white noise, pixel by pixel. RMSE {:.5} against {}.",
+                seconds_text(other.stats.elapsed.as_secs_f64()),
+                rmse(&other.film.image(), truth),
+                reference.name
+            ),
+        ),
+    ];
+    for (stem, image, spp, seconds, caption) in pictures {
+        let picture = write_image(&c.dir, &stem, &image, spp, DOOR_EXPOSURE, Some(seconds))?;
+        c.section
+            .figures
+            .push(Figure::new(&tour.out, &picture, &caption));
+    }
+    Ok(())
 }

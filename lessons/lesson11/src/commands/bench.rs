@@ -8,13 +8,15 @@ use std::path::PathBuf;
 
 use anyhow::{Result, bail};
 use clap::Args;
-use raytracer::integrator::{Direct, DirectStrategy, Integrator, PathTracer};
-use raytracer::render::{RenderOptions, render};
+use raytracer::integrator::{Bdpt, Direct, DirectStrategy, Integrator, LightTracer, PathTracer};
+use raytracer::render::{Metropolis, RenderOptions, render, render_metropolis};
 use raytracer::scene::Scene;
 
-/// Measure primary-ray throughput on large meshes and direct-lighting samples
-/// per second on the Cornell box (256×256), with the ratio to Mitsuba 3 when
-/// one is installed. Run it with --release.
+/// Measure primary-ray throughput on large meshes, direct-lighting and path
+/// tracing samples per second on the Cornell box (256×256) with the ratio to
+/// Mitsuba 3 when one is installed, and the unbiased integrators' samples
+/// (Metropolis: mutations) per second on the door scene. Run it with
+/// --release.
 #[derive(Args, Debug)]
 pub struct BenchArgs {
     /// Thread counts to measure (comma separated; default: 1 and all cores).
@@ -116,6 +118,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             );
         }
     }
+    door(16, &threads)?;
     if !args.no_biased {
         biased::run(&threads)?;
     }
@@ -149,9 +152,79 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 args.equal_time,
                 &reference,
                 max_depth,
-                name == "cornell",
+                crate::equal_time::Also {
+                    naive: name == "cornell",
+                    metropolis: name == "door",
+                },
             );
         }
+    }
+    Ok(())
+}
+
+/// Samples per second of path, light and bidirectional tracing on `door`
+/// (128×96, max depth 5) beside Metropolis light transport's mutations per
+/// second over bidirectional tracing: one mutation is one BDPT sample plus
+/// the chain's bookkeeping. Its rate counts the chains' time only; the
+/// bootstrap (one BDPT path per pixel) is printed apart.
+fn door(spp: u32, threads: &[usize]) -> Result<()> {
+    let mut scene = Scene::builtin("door")?;
+    let (w, h) = (scene.settings.width, scene.settings.height);
+    scene.set_resolution(128, (h * 128 / w).max(1));
+    let max_depth = Some(5);
+    let path = PathTracer {
+        max_depth,
+        ..PathTracer::default()
+    };
+    let light = LightTracer {
+        max_depth,
+        ..LightTracer::default()
+    };
+    let bdpt = Bdpt {
+        max_depth,
+        ..Bdpt::default()
+    };
+    println!(
+        "\n`door` {}×{}, max depth 5, {spp} samples (Metropolis: mutations) per pixel",
+        scene.camera.width, scene.camera.height
+    );
+    println!(
+        "  {:>8} {:<34} {:>10} {:>14}",
+        "threads", "algorithm", "seconds", "k samples/s"
+    );
+    for &n in threads {
+        let options = RenderOptions {
+            spp,
+            seed: 1,
+            threads: Some(n),
+            progress: false,
+            ..RenderOptions::default()
+        };
+        let cases: [(&str, &dyn Integrator); 3] = [
+            ("path tracing (MIS)", &path),
+            ("light tracing", &light),
+            ("bidirectional path tracing", &bdpt),
+        ];
+        for (what, integrator) in cases {
+            let stats = render(&scene, integrator, &options).stats;
+            println!(
+                "  {:>8} {what:<34} {:>10.3} {:>14.1}",
+                n,
+                stats.elapsed.as_secs_f64(),
+                stats.samples_per_second() / 1e3
+            );
+        }
+        let r = render_metropolis(&scene, &bdpt, &options, &Metropolis::default());
+        let chains = r.stats.elapsed.as_secs_f64() - r.bootstrap_seconds;
+        println!(
+            "  {:>8} {:<34} {:>10.3} {:>14.1}   mutations/s; + {:.3} s bootstrap, acceptance {:.0} %",
+            n,
+            "Metropolis over bidirectional",
+            chains,
+            r.stats.samples as f64 / chains.max(1e-9) / 1e3,
+            r.bootstrap_seconds,
+            100.0 * r.acceptance_rate
+        );
     }
     Ok(())
 }

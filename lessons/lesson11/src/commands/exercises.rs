@@ -44,10 +44,20 @@ pub struct SolutionArgs {
 
 fn exercise(number: usize) -> Result<Exercise> {
     let reg = exercises::registry();
-    let count = reg.len();
+    // Listed, not given as a range: a number may be skipped (18 before 16).
+    let numbers: Vec<String> = reg
+        .iter()
+        .filter_map(|e| e.number())
+        .map(|n| n.to_string())
+        .collect();
     reg.into_iter()
         .find(|e| e.number() == Some(number))
-        .with_context(|| format!("there is no exercise {number}: they are numbered 1 to {count}"))
+        .with_context(|| {
+            format!(
+                "there is no exercise {number}: the exercises are {}",
+                numbers.join(", ")
+            )
+        })
 }
 
 pub fn run_exercises(args: &ExercisesArgs) -> Result<()> {

@@ -18,7 +18,7 @@ use clap::Subcommand;
 #[derive(Subcommand)]
 pub enum Command {
     /// Render one scene with one integrator to PNG (to look at) and EXR (to measure).
-    Render(render::RenderArgs),
+    Render(Box<render::RenderArgs>),
     /// List the built-in scenes, or write one out as a file to edit.
     Scenes(scenes::ScenesArgs),
     /// Measure the renderer: rays per second on big meshes, samples per second on the Cornell box.

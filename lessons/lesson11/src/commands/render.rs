@@ -39,6 +39,21 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         );
     }
     let (scene, options) = args.scene.load("cornell")?;
+    if args.integrator == IntegratorKind::Mlt {
+        let (bdpt, metropolis) =
+            args.integrator_args
+                .metropolis(&scene, &options, args.scene.force)?;
+        crate::metropolis::render_to_files(
+            &scene,
+            &bdpt,
+            &options,
+            &metropolis,
+            &args.scene.out,
+            &format!("{}-mlt", scene.name),
+            args.exposure,
+        )?;
+        return Ok(());
+    }
     if args.integrator == IntegratorKind::Sppm {
         let ia = &args.integrator_args;
         ia.check_only(args.integrator)?;

@@ -39,12 +39,14 @@ pub fn run(
         IntegratorKind::Ao
         | IntegratorKind::Light
         | IntegratorKind::Bdpt
+        | IntegratorKind::Mlt
         | IntegratorKind::Photon
         | IntegratorKind::Sppm
         | IntegratorKind::Vpl
         | IntegratorKind::IrradianceCache => bail!(
             "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
-             (light tracing and bidirectional tracing are graded piece by piece: exercises 14 and 15)"
+             (light tracing, bidirectional tracing and Metropolis light transport are graded piece by piece: \
+             exercises 14, 15 and 18)"
         ),
     };
     let exercise = which.exercise();

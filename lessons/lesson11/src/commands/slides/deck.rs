@@ -143,9 +143,17 @@ fn parse_slide(lines: &[(usize, &str)], file: &str) -> Result<Slide> {
                         "{at}: `> exercise:` takes numbers like `9` or `3, 4`, found `{ex}`"
                     )
                 })?;
-                let count = exercises::registry::registry().len() as u32;
-                if !(1..=count).contains(&num) {
-                    bail!("{at}: there are exercises 1 to {count}, found {num}");
+                let numbers: Vec<u32> = exercises::registry::registry()
+                    .iter()
+                    .filter_map(|e| e.number())
+                    .map(|n| n as u32)
+                    .collect();
+                if !numbers.contains(&num) {
+                    let list: Vec<String> = numbers.iter().map(u32::to_string).collect();
+                    bail!(
+                        "{at}: there is no exercise {num} (the exercises are {})",
+                        list.join(", ")
+                    );
                 }
                 slide.exercises.push(num);
             }
@@ -226,7 +234,10 @@ mod tests {
             ("no title\n", "t.md:1: a slide must start"),
             ("# A\n---\n", "empty slide"),
             ("# A\n> exercise: nine\n", "t.md:2"),
-            ("# A\n> exercise: 99\n", "there are exercises 1 to"),
+            (
+                "# A\n> exercise: 99\n",
+                "there is no exercise 99 (the exercises are 1, 2,",
+            ),
             ("# A\n> command: cargo run\n", "lesson11"),
             ("# A\n![x](/abs.png)\n", "relative"),
             ("# A\ntext ![x](a.png)\n", "own"),

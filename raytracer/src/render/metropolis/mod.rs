@@ -1,0 +1,598 @@
+//! Metropolis light transport in primary sample space (Kelemen,
+//! Szirmay-Kalos, Antal and Csonka 2002; Veach and Guibas 1997 for the
+//! Metropolis idea): many independent Markov chains over paths, rendered in
+//! parallel and reproducibly.
+//!
+//! Lecture topic: "Metropolis light transport", the last of the unbiased
+//! algorithms the lecture names. Path, light and bidirectional tracing draw
+//! every path independently; Metropolis keeps a *current* path and proposes
+//! a change to it, so that once a bright path is found (light through the
+//! gap of a door), its neighbours are explored instead of being found again
+//! by chance.
+//!
+//! # Which sampler, and why
+//!
+//! A path is the image of the random numbers `u ∈ [0, 1)^∞` an integrator
+//! draws ([`PrimarySample`](crate::sampling::PrimarySample)); the chains move
+//! those numbers and let the integrator build the path. Any [`Integrator`]
+//! can serve; `lesson11 render --integrator mlt` runs the chains over
+//! **bidirectional path tracing** ([`crate::integrator::Bdpt`], all its
+//! strategies under MIS at once), as Kelemen et al. did and as pbrt-v4's
+//! `MLTIntegrator` does, because:
+//!
+//! - a large step is one independent sample of the underlying integrator,
+//!   and so is every bootstrap path: with BDPT they find the light that
+//!   comes through a gap (its light subpaths pass the gap on their own),
+//!   where most path-tracing samples of `door` bring nothing. The bootstrap's
+//!   `b̂` and the chains' first states are only as good as that sampler;
+//! - a small step moves the numbers of both subpaths at once, so a chain
+//!   that found a light path through the gap walks along it on both sides.
+//!
+//! The price is a dearer sample (a BDPT sample costs several path-tracing
+//! samples); `lesson11 bench` prints both. pbrt-v4 instead picks one
+//! strategy `(s, t)` per sample (Hachisuka et al.'s multiplexed MLT); we keep
+//! the renderer's BDPT unchanged, which is simpler and shares its tests.
+//!
+//! # The estimator
+//!
+//! A state `x` gives contributions `g_j(x)` to pixels `j` (its own pixel and
+//! the splats of `t = 1`) and the scalar `f(x) = Σ_j Y(g_j(x))`, the
+//! luminance it brings. With `b = ∫ f(u) du` the mean of `f`, a chain in
+//! equilibrium visits `x` with density `f(x) / b`, so
+//! `I_j = W·H ∫ g_j = W·H · b · E_{f/b}[g_j / f]`: each chain splats `g/f`
+//! ([`chain`]) and its image is scaled by `W·H · b̂ / N` after `N` steps.
+//!
+//! **Why it is unbiased, with the right normalization.** The bootstrap
+//! ([`bootstrap`]) draws `n` independent paths, estimates
+//! `b̂ = (1/n) Σ f(u_i)` and starts each chain at `u_i` with probability
+//! `f(u_i) / Σ f`. Then for every function `φ`,
+//! `E[b̂ · φ(x_0)] = E[(1/n) Σ_i f(u_i) φ(u_i)] = ∫ f φ`. The Metropolis step
+//! leaves `f` invariant (detailed balance: `f(x) T(x→y) a(x→y)` is symmetric
+//! in `x, y` for a symmetric proposal `T` and `a = min(1, f(y)/f(x))`), so
+//! the same holds for every later state: `E[b̂ · φ(x_t)] = ∫ f φ`. With
+//! `φ = g_j / f` every step's splat has mean `∫ g_j = I_j / (W·H)`: each
+//! chain's image is unbiased after any number of steps — no burn-in to
+//! throw away — provided `b̂` comes from the same bootstrap that chose the
+//! start. (A chain started anywhere else, or scaled by another `b̂`, would be
+//! biased until it forgot its start.) The expected-value splat replaces the
+//! next state's `g/f` by its mean over the accept coin, which keeps the mean.
+//!
+//! **Why its noise looks different.** Consecutive states are neighbours
+//! (small steps) or the same path again (a rejection), so a chain's errors
+//! come in streaks and blobs the size of a path's footprint, not pixel by
+//! pixel: not all noise is white. Per-pixel sample variances would miss it;
+//! the noise is estimated from *independent chains* instead: the film gets
+//! one sample per pixel per chain (that chain's estimate), so its mean is the
+//! image and its variance image is the spread of the chains over their
+//! number ([`crate::film::Film::variance_image`]), and the result keeps each
+//! chain's tile means for tests of whole tiles. All chains share `b̂`: the
+//! chains' spread is the noise *given* `b̂`, whose own relative error
+//! ([`Bootstrap::relative_error`]) scales the whole image at once.
+//!
+//! # Determinism and interruption
+//!
+//! Chain `c`'s numbers come from `(seed, c, step)` through derived seeds
+//! (its start, its step kinds and acceptances, its large and small steps);
+//! bootstrap path `i` from `(seed, i)`. The bootstrap is added up in index
+//! order and the chains are merged into the film in chain order (a reorder
+//! buffer, as in [`super::render_pixels`]), so the image is the same bit for
+//! bit on any number of threads. The number of chains is an option, not the
+//! number of threads. On Ctrl-C (or [`super::request_interrupt`]) each chain
+//! stops after its current step and is merged with the steps it made (its
+//! image is unbiased at any length); chains not yet started are left out.
+//! Interrupted during the bootstrap, the render returns no chain.
+
+pub mod bootstrap;
+pub mod chain;
+mod merger;
+mod parameters;
+
+pub use bootstrap::Bootstrap;
+pub use chain::{SplatWeights, acceptance, expected_value_splat};
+pub use parameters::{Metropolis, ParameterError};
+
+use super::{INTERRUPTED, RenderOptions, RenderStats, human, on_threads, progress_bar};
+use crate::film::Film;
+use crate::integrator::{Integrator, stop};
+use crate::math::Color;
+use crate::sampling::Sampler;
+use crate::sampling::rng::mix64;
+use crate::scene::Scene;
+use chain::{ChainRun, ChainStreams, Moves, run_chain};
+use indicatif::ProgressBar;
+use merger::Merger;
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::time::Instant;
+
+/// A finished (or interrupted) Metropolis render.
+#[derive(Clone, Debug)]
+pub struct MetropolisResult {
+    /// One sample per pixel per chain (that chain's estimate): its image is
+    /// the render, its variance image the chains' spread over their number.
+    pub film: Film,
+    /// `samples` counts mutations (steps); `elapsed` includes the bootstrap.
+    pub stats: RenderStats,
+    /// `None` if the render was interrupted during the bootstrap.
+    pub bootstrap: Option<Bootstrap>,
+    /// The chains merged into the film.
+    pub chains: u32,
+    /// Accepted steps over all steps.
+    pub acceptance_rate: f64,
+    /// Seconds of the bootstrap (included in `stats.elapsed`).
+    pub bootstrap_seconds: f64,
+    /// For each merged chain, in chain order, the mean of its image over
+    /// each `tile_size × tile_size` tile, in the order of
+    /// [`crate::metrics::tile_means`].
+    pub chain_tile_means: Vec<Vec<Color>>,
+}
+
+/// Derived seeds of the streams of one render.
+const BOOTSTRAP_STREAM: u64 = 1;
+const START_STREAM: u64 = 2;
+const CONTROL_STREAM: u64 = 3;
+const LARGE_STREAM: u64 = 4;
+const SMALL_STREAM: u64 = 5;
+
+fn stream(seed: u64, name: u64) -> u64 {
+    mix64(seed ^ mix64(name.wrapping_mul(0x9e37_79b9_7f4a_7c15)))
+}
+
+/// Where a chain starts: which bootstrap path is chosen with `u`.
+const START: crate::sampling::Draw<1> =
+    crate::sampling::Draw::new("bootstrap path a chain starts at");
+
+/// Renders `scene` by Metropolis light transport over `integrator`'s primary
+/// sample space with `options.spp` mutations per pixel. Stops early on
+/// Ctrl-C once [`super::install_interrupt_handler`] was called.
+///
+/// # Panics
+/// If `metropolis` fails [`Metropolis::check`] (front-ends check first).
+pub fn render_metropolis(
+    scene: &Scene,
+    integrator: &dyn Integrator,
+    options: &RenderOptions,
+    metropolis: &Metropolis,
+) -> MetropolisResult {
+    render_metropolis_with_stop(scene, integrator, options, metropolis, &INTERRUPTED)
+}
+
+/// [`render_metropolis`] that watches its own stop flag.
+pub fn render_metropolis_with_stop(
+    scene: &Scene,
+    integrator: &dyn Integrator,
+    options: &RenderOptions,
+    metropolis: &Metropolis,
+    stop: &AtomicBool,
+) -> MetropolisResult {
+    let start = Instant::now();
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    let mutations = options.spp as u64 * w as u64 * h as u64;
+    if let Err(e) = metropolis.check(mutations) {
+        panic!("{e}");
+    }
+    let paths = metropolis.bootstrap_paths(w, h);
+    let bar = progress_bar(options, paths + mutations, "paths and mutations");
+    let seed = options.seed;
+    let mut merged = None;
+    let mut boot = None;
+    let mut bootstrap_seconds = 0.0;
+    let threads = on_threads(options.threads, || {
+        let tick = |n| bar.inc(n);
+        let Some(b) = bootstrap::bootstrap(
+            scene,
+            integrator,
+            stream(seed, BOOTSTRAP_STREAM),
+            paths,
+            stop,
+            &tick,
+        ) else {
+            return;
+        };
+        bootstrap_seconds = start.elapsed().as_secs_f64();
+        let workers = rayon::current_num_threads()
+            .min(metropolis.chains as usize)
+            .max(1);
+        let job = ChainJob {
+            scene,
+            integrator,
+            metropolis,
+            seed,
+            bootstrap: &b,
+            mutations,
+            stop,
+            next_chain: AtomicU64::new(0),
+            ahead: 2 * workers as u64,
+            merger: Mutex::new(Merger::new(w, h, options.tile_size.max(1), b.b)),
+            bar: &bar,
+        };
+        rayon::scope(|s| {
+            for _ in 0..workers {
+                s.spawn(|_| job.work());
+            }
+        });
+        merged = Some(job.merger.into_inner().expect("a chain worker panicked"));
+        boot = Some(b);
+    });
+    bar.finish_and_clear();
+    let merger = merged.unwrap_or_else(|| Merger::new(w, h, 1, 0.0));
+    let nonfinite = merger.nonfinite + boot.as_ref().map_or(0, |b| b.nonfinite);
+    let stats = RenderStats {
+        elapsed: start.elapsed(),
+        samples: merger.steps,
+        interrupted: merger.steps < mutations,
+        nonfinite,
+    };
+    let result = MetropolisResult {
+        film: merger.film,
+        stats,
+        bootstrap: boot,
+        chains: merger.chains,
+        acceptance_rate: merger.accepted as f64 / merger.steps.max(1) as f64,
+        bootstrap_seconds,
+        chain_tile_means: merger.tile_means,
+    };
+    if options.progress {
+        eprintln!("{}", summary(options, metropolis, &result, threads));
+    }
+    result
+}
+
+/// Everything the chain workers share.
+struct ChainJob<'a> {
+    scene: &'a Scene,
+    integrator: &'a dyn Integrator,
+    metropolis: &'a Metropolis,
+    seed: u64,
+    bootstrap: &'a Bootstrap,
+    mutations: u64,
+    stop: &'a AtomicBool,
+    next_chain: AtomicU64,
+    /// How far ahead of the next chain to merge a worker may start one.
+    ahead: u64,
+    merger: Mutex<Merger>,
+    bar: &'a ProgressBar,
+}
+
+impl ChainJob<'_> {
+    /// Steps of chain `c`: an equal share, the first chains one more.
+    fn steps(&self, c: u64) -> u64 {
+        let k = self.metropolis.chains as u64;
+        self.mutations / k + u64::from(c < self.mutations % k)
+    }
+
+    /// One worker: runs chains in increasing order until none is left or a
+    /// stop is requested; every chain it takes is submitted.
+    fn work(&self) {
+        let lock = || self.merger.lock().expect("a chain worker panicked");
+        let mut run = lock().spare.pop().unwrap_or_default();
+        stop::watch(self.stop, || {
+            while !self.stop.load(Ordering::Relaxed) {
+                let c = self.next_chain.fetch_add(1, Ordering::Relaxed);
+                if c >= self.metropolis.chains as u64 {
+                    break;
+                }
+                // At most `ahead` chains wait to be merged (each holds a
+                // W·H image): a worker far ahead of the slowest chain waits.
+                while c >= lock().next + self.ahead && !self.stop.load(Ordering::Relaxed) {
+                    std::thread::sleep(std::time::Duration::from_millis(1));
+                }
+                self.run(c, &mut run);
+                run = lock().submit(c, run);
+            }
+        });
+    }
+
+    fn run(&self, c: u64, run: &mut ChainRun) {
+        let seed = self.seed;
+        let u = START.draw(&mut Sampler::new(stream(seed, START_STREAM), c, 0));
+        let streams = ChainStreams {
+            start: (stream(seed, BOOTSTRAP_STREAM), self.bootstrap.choose(u)),
+            index: c,
+            control: stream(seed, CONTROL_STREAM),
+            large: stream(seed, LARGE_STREAM),
+            small: stream(seed, SMALL_STREAM),
+        };
+        let moves = Moves {
+            large_step_probability: self.metropolis.large_step_probability,
+            mutation_size: self.metropolis.mutation_size,
+        };
+        const TICK: u64 = 1024;
+        let mut since_tick = 0;
+        let mut keep_going = || {
+            since_tick += 1;
+            if since_tick == TICK {
+                self.bar.inc(TICK);
+                since_tick = 0;
+            }
+            !self.stop.load(Ordering::Relaxed)
+        };
+        let steps = self.steps(c);
+        run_chain(
+            self.scene,
+            self.integrator,
+            streams,
+            moves,
+            steps,
+            &mut keep_going,
+            run,
+        );
+        self.bar.inc(run.steps % TICK);
+    }
+}
+
+/// One line: what was rendered, the bootstrap's `b̂`, the acceptance rate,
+/// how fast.
+fn summary(
+    options: &RenderOptions,
+    metropolis: &Metropolis,
+    r: &MetropolisResult,
+    threads: usize,
+) -> String {
+    let s = &r.stats;
+    let (w, h) = (r.film.width(), r.film.height());
+    let chain_seconds = s.elapsed.as_secs_f64() - r.bootstrap_seconds;
+    let rate = s.samples as f64 / chain_seconds.max(1e-9);
+    let mut line = format!(
+        "{}: {w}×{h}, Metropolis, {} mutations per pixel in {} chains (large steps {}, mutation size {})",
+        options.label,
+        options.spp,
+        metropolis.chains,
+        metropolis.large_step_probability,
+        metropolis.mutation_size,
+    );
+    if let Some(b) = &r.bootstrap {
+        line += &format!(
+            ", b = {:.4} ± {:.1} % from {} paths, acceptance {:.0} %",
+            b.b,
+            100.0 * b.relative_error(),
+            human(b.paths as f64),
+            100.0 * r.acceptance_rate
+        );
+    }
+    line += &format!(
+        ", {} mutations in {:.2} s after a {:.2} s bootstrap ({} mutations/s, {threads} threads)",
+        human(s.samples as f64),
+        chain_seconds,
+        r.bootstrap_seconds,
+        human(rate)
+    );
+    if s.interrupted {
+        line += ", INTERRUPTED";
+    }
+    if s.nonfinite > 0 {
+        line += &format!(", {} NaN/inf/negative values dropped", s.nonfinite);
+    }
+    line
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::film::Splat;
+    use crate::math::{UVec2, Vec2, luminance};
+    use std::sync::atomic::AtomicUsize;
+
+    /// A toy integrator with a known image on a `W × 2` film: pixel `(x, y)`
+    /// gets `(2u · k, k, 1/2)` with `k = 1 + x` and `u` its first number
+    /// (mean `(k, k, 1/2)`), and every sample splats `(v/10, 0, 0)` into
+    /// pixel (0, 0) with `v` its second number (mean `W·H/20` there). `f`
+    /// varies by a factor of 40 over primary space, so the chains are no
+    /// independent sampler in disguise.
+    struct Toy {
+        /// After this many samples, set `stop` (an interrupted render).
+        stop_after: Option<(usize, &'static AtomicBool)>,
+        calls: AtomicUsize,
+    }
+
+    impl Toy {
+        fn new() -> Self {
+            Toy {
+                stop_after: None,
+                calls: AtomicUsize::new(0),
+            }
+        }
+    }
+
+    impl Integrator for Toy {
+        fn name(&self) -> &'static str {
+            "toy"
+        }
+        fn sample(
+            &self,
+            _: &Scene,
+            pixel: UVec2,
+            s: &mut Sampler,
+            splats: &mut Vec<Splat>,
+        ) -> Color {
+            if let Some((n, flag)) = self.stop_after
+                && self.calls.fetch_add(1, Ordering::Relaxed) >= n
+            {
+                flag.store(true, Ordering::Relaxed);
+            }
+            let (u, v) = (s.next_1d(), s.next_1d());
+            splats.push(Splat {
+                raster: Vec2::new(0.5, 0.5),
+                value: Color::new(v / 10.0, 0.0, 0.0),
+            });
+            let k = 1.0 + pixel.x as f32;
+            Color::new(2.0 * u * k, k, 0.5)
+        }
+    }
+
+    fn toy_scene(width: u32) -> Scene {
+        let mut scene = Scene::builtin("furnace").unwrap();
+        scene.set_resolution(width, 2);
+        scene
+    }
+
+    fn options(spp: u32, threads: usize) -> RenderOptions {
+        RenderOptions {
+            spp,
+            seed: 5,
+            threads: Some(threads),
+            tile_size: 2,
+            progress: false,
+            label: "test".into(),
+        }
+    }
+
+    fn exact(x: u32, y: u32, width: u32) -> Color {
+        let k = 1.0 + x as f32;
+        let splat = if (x, y) == (0, 0) {
+            width as f32 * 2.0 / 20.0
+        } else {
+            0.0
+        };
+        Color::new(k + splat, k, 0.5)
+    }
+
+    /// Every pixel of the toy against its exact value, with the variance
+    /// of the chains (64 independent chains, given `b̂`) plus `b̂`'s own
+    /// relative variance. 16 pixels × 3 channels = 48 tests at |z| ≤ 6: with
+    /// the chains' variance estimated from 63 degrees of freedom, a
+    /// Student-t tail of 1.1e-7 each, false failure < 6e-6 in all (normal
+    /// chain means assumed; each averages 256 steps).
+    #[test]
+    fn the_toy_image_is_unbiased() {
+        let scene = toy_scene(8);
+        let metropolis = Metropolis {
+            bootstrap: Some(4096),
+            ..Metropolis::default()
+        };
+        let r = render_metropolis_with_stop(
+            &scene,
+            &Toy::new(),
+            &options(1024, 2),
+            &metropolis,
+            &AtomicBool::new(false),
+        );
+        assert!(!r.stats.interrupted);
+        assert_eq!(r.stats.samples, 1024 * 16);
+        assert_eq!(r.chains, 64);
+        let b = r.bootstrap.as_ref().unwrap();
+        let rel = b.relative_error();
+        assert!(rel > 0.0 && rel < 0.05, "{rel}");
+        let (image, variance) = (r.film.image(), r.film.variance_image());
+        let mut worst = 0.0f64;
+        for y in 0..2 {
+            for x in 0..8 {
+                let (m, v, e) = (image.get(x, y), variance.get(x, y), exact(x, y, 8));
+                for c in 0..3 {
+                    let var = v[c] as f64 + (m[c] as f64 * rel).powi(2);
+                    let z = (m[c] as f64 - e[c] as f64) / var.sqrt();
+                    worst = worst.max(z.abs());
+                    assert!(
+                        z.abs() < 6.0,
+                        "pixel ({x}, {y}) channel {c}: {} vs {} (z = {z})",
+                        m[c],
+                        e[c]
+                    );
+                }
+            }
+        }
+        eprintln!(
+            "toy: b = {} ± {:.2} %, worst |z| = {worst:.2}",
+            b.b,
+            100.0 * rel
+        );
+        // It could fail: the acceptance is far from 1, the chains do move.
+        assert!(
+            (0.2..0.95).contains(&r.acceptance_rate),
+            "{}",
+            r.acceptance_rate
+        );
+    }
+
+    /// Every step splats one unit of luminance (`(1 − a) f(x)/f(x) + a f(y)/f(y)`),
+    /// so the image's mean luminance is `b̂` itself, to rounding.
+    #[test]
+    fn the_mean_luminance_is_b() {
+        let scene = toy_scene(4);
+        let r = render_metropolis_with_stop(
+            &scene,
+            &Toy::new(),
+            &options(64, 2),
+            &Metropolis::default(),
+            &AtomicBool::new(false),
+        );
+        let image = r.film.image();
+        let mean: f64 = image
+            .pixels
+            .iter()
+            .map(|&c| luminance(c) as f64)
+            .sum::<f64>()
+            / image.pixels.len() as f64;
+        let b = r.bootstrap.unwrap().b;
+        assert!((mean / b - 1.0).abs() < 1e-5, "{mean} vs {b}");
+    }
+
+    #[test]
+    fn same_image_on_any_number_of_threads() {
+        let scene = toy_scene(5);
+        let run = |threads, seed| {
+            let o = RenderOptions {
+                seed,
+                ..options(32, threads)
+            };
+            render_metropolis_with_stop(
+                &scene,
+                &Toy::new(),
+                &o,
+                &Metropolis {
+                    chains: 7,
+                    ..Metropolis::default()
+                },
+                &AtomicBool::new(false),
+            )
+        };
+        let one = run(1, 5);
+        for threads in [2, 3] {
+            let r = run(threads, 5);
+            assert!(r.film == one.film, "{threads} threads: the films differ");
+            assert_eq!(r.chain_tile_means, one.chain_tile_means);
+            assert_eq!(r.stats.samples, one.stats.samples);
+        }
+        assert!(run(2, 6).film != one.film, "the seed is ignored");
+    }
+
+    /// A stop request half-way: the chains that ran keep their steps (the
+    /// film has samples, fewer mutations than asked), the others are left
+    /// out, and the image is still finite and non-negative.
+    #[test]
+    fn an_interrupted_render_keeps_its_chains() {
+        static STOP: AtomicBool = AtomicBool::new(false);
+        let scene = toy_scene(4);
+        let toy = Toy {
+            stop_after: Some((300 + 8 + 2000, &STOP)),
+            calls: AtomicUsize::new(0),
+        };
+        let metropolis = Metropolis {
+            chains: 8,
+            bootstrap: Some(300),
+            ..Metropolis::default()
+        };
+        let r = render_metropolis_with_stop(&scene, &toy, &options(1000, 2), &metropolis, &STOP);
+        assert!(r.stats.interrupted);
+        assert!(
+            r.stats.samples >= 1900 && r.stats.samples < 8000,
+            "{}",
+            r.stats.samples
+        );
+        assert!(r.chains >= 1 && r.chains <= 8);
+        assert_eq!(r.film.sample_count(UVec2::ZERO), r.chains as u64);
+        assert!(
+            r.film
+                .image()
+                .pixels
+                .iter()
+                .all(|c| c.is_finite() && c.min_element() >= 0.0)
+        );
+        // Stopped during the bootstrap: no chain, an empty film.
+        let stopped = AtomicBool::new(true);
+        let r =
+            render_metropolis_with_stop(&scene, &Toy::new(), &options(8, 2), &metropolis, &stopped);
+        assert!(r.bootstrap.is_none() && r.chains == 0 && r.stats.samples == 0);
+        assert!(r.stats.interrupted);
+    }
+}

@@ -1,0 +1,301 @@
+//! Primary sample space: the random numbers of one sample, as a point that a
+//! Markov chain moves (Kelemen, Szirmay-Kalos, Antal and Csonka, "A Simple
+//! and Robust Mutation Strategy for the Metropolis Light Transport
+//! Algorithm", 2002).
+//!
+//! Lecture topic: Metropolis light transport, the last unbiased algorithm
+//! the lecture names. An integrator turns the numbers `u = (u_0, u_1, …)` it
+//! draws into a path and the path into a contribution `f(u)`; so a path *is*
+//! a point `u` of the unit hypercube, and to move from one path to a similar
+//! one it is enough to move `u` a little. A [`PrimarySample`] is such a point
+//! with the two moves of Kelemen et al.:
+//!
+//! - a **large step**: every coordinate drawn afresh (an independent path,
+//!   as the integrator alone would make);
+//! - a **small step**: every coordinate moved by a normal perturbation of
+//!   standard deviation `σ`, wrapped around `[0, 1)` (a torus, so the move is
+//!   symmetric: `T(x → y) = T(y → x)`).
+//!
+//! The chain proposes a step, the integrator evaluates the proposal, and the
+//! chain [`accept`](PrimarySample::accept)s it or
+//! [`reject`](PrimarySample::reject)s it (which restores the old point).
+//!
+//! **Lazily.** An integrator draws a different number of coordinates for
+//! each path (a longer path, more numbers), so coordinates are made and
+//! moved only when they are read, as in pbrt-v3/v4's `MLTSampler`: a
+//! coordinate remembers the iteration it was last moved at; read at
+//! iteration `t` after `n = t − t_last` small steps it did not take part in,
+//! it takes their sum at once, one normal step of deviation `σ√n` (the sum of
+//! `n` independent normal steps). A coordinate that has not been read since
+//! the state's last large step takes that step's fresh number first.
+//!
+//! **Addresses.** Every number comes from the counter-based hash of
+//! [`super::rng`]: the starting point is the sequence of
+//! `Sampler::new(seed, index, sample)` (so a chain can start exactly at a
+//! path of the bootstrap), and each step's numbers come from the address the
+//! chain gives it (its seed, its index, the iteration). A chain is then a
+//! pure function of its addresses, whichever thread runs it.
+
+use super::rng::{key, uniform};
+use crate::math::PI;
+
+/// The largest `f32` below 1 (coordinates stay in `[0, 1)`).
+const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
+
+/// One coordinate: its value, the iteration it was last moved at, and the
+/// two as they were before the current proposal moved them.
+#[derive(Clone, Copy, Debug)]
+struct Coordinate {
+    value: f32,
+    moved: u64,
+    backup_value: f32,
+    backup_moved: u64,
+}
+
+/// A point of primary sample space moved by large and small steps.
+#[derive(Clone, Debug)]
+pub struct PrimarySample {
+    coordinates: Vec<Coordinate>,
+    /// The steps the state took, plus one while a proposal is open (0: the
+    /// starting point).
+    iteration: u64,
+    /// Whether proposal `t` is a large step.
+    large_step: bool,
+    /// The iteration of the current state's last large step (0: the start)
+    /// and the key of that step's fresh numbers.
+    last_large_step: u64,
+    state_key: u64,
+    /// The keys of the current proposal's fresh numbers (large step) and of
+    /// its perturbations (small step).
+    proposal_key: u64,
+    /// Standard deviation of a small step, a fraction of the unit interval.
+    sigma: f32,
+}
+
+impl PrimarySample {
+    /// The point whose coordinate `d` is number `d` of
+    /// `Sampler::new(seed, index, sample)`: an integrator reading it draws
+    /// the very path that sampler gives. `sigma` is the standard deviation
+    /// of a small step.
+    pub fn new(seed: u64, index: u64, sample: u64, sigma: f32) -> Self {
+        PrimarySample {
+            coordinates: Vec::new(),
+            iteration: 0,
+            large_step: false,
+            last_large_step: 0,
+            state_key: key(seed, index, sample),
+            proposal_key: 0,
+            sigma,
+        }
+    }
+
+    /// The number of steps the state has taken (accepted proposals), plus
+    /// one while a proposal is open.
+    pub fn iteration(&self) -> u64 {
+        self.iteration
+    }
+
+    /// Starts the next proposal as a large step: coordinate `d` becomes
+    /// number `d` of `Sampler::new(seed, index, sample)` when it is read.
+    pub fn propose_large(&mut self, seed: u64, index: u64, sample: u64) {
+        self.propose(true, key(seed, index, sample));
+    }
+
+    /// Starts the next proposal as a small step: coordinate `d` moves by
+    /// `σ√n · N(0, 1)` when it is read, the normal number made from numbers
+    /// `2d` and `2d + 1` of `Sampler::new(seed, index, sample)`.
+    pub fn propose_small(&mut self, seed: u64, index: u64, sample: u64) {
+        self.propose(false, key(seed, index, sample));
+    }
+
+    fn propose(&mut self, large: bool, proposal_key: u64) {
+        self.iteration += 1;
+        self.large_step = large;
+        self.proposal_key = proposal_key;
+    }
+
+    /// Keeps the proposal: it becomes the state.
+    pub fn accept(&mut self) {
+        if self.large_step {
+            self.last_large_step = self.iteration;
+            self.state_key = self.proposal_key;
+        }
+    }
+
+    /// Drops the proposal: every coordinate it moved takes back its value,
+    /// and the iteration count goes back with them (as in pbrt), so that
+    /// `t − t_last` counts only the steps the state really took.
+    pub fn reject(&mut self) {
+        for c in &mut self.coordinates {
+            if c.moved == self.iteration {
+                c.value = c.backup_value;
+                c.moved = c.backup_moved;
+            }
+        }
+        debug_assert!(self.iteration > 0, "reject without a proposal");
+        self.iteration = self.iteration.saturating_sub(1);
+    }
+
+    /// Coordinate `d` of the current proposal (of the state before the
+    /// first proposal), made and moved as the module doc says.
+    #[inline(never)]
+    pub(crate) fn coordinate(&mut self, d: u32) -> f32 {
+        let i = d as usize;
+        while self.coordinates.len() <= i {
+            let k = self.coordinates.len() as u32;
+            let value = uniform(self.state_key, k);
+            self.coordinates.push(Coordinate {
+                value,
+                moved: self.last_large_step,
+                backup_value: value,
+                backup_moved: self.last_large_step,
+            });
+        }
+        let c = &mut self.coordinates[i];
+        // Not read since the state's last large step: take its number.
+        if c.moved < self.last_large_step {
+            c.value = uniform(self.state_key, d);
+            c.moved = self.last_large_step;
+        }
+        if c.moved < self.iteration {
+            c.backup_value = c.value;
+            c.backup_moved = c.moved;
+            c.value = if self.large_step {
+                uniform(self.proposal_key, d)
+            } else {
+                // The n small steps since it last moved, as one.
+                let n = (self.iteration - c.moved) as f32;
+                let normal = standard_normal(
+                    uniform(self.proposal_key, 2 * d),
+                    uniform(self.proposal_key, 2 * d + 1),
+                );
+                wrap(c.value + self.sigma * n.sqrt() * normal)
+            };
+            c.moved = self.iteration;
+        }
+        c.value
+    }
+}
+
+/// A standard normal number from two uniform ones (Box–Muller).
+#[inline]
+fn standard_normal(u1: f32, u2: f32) -> f32 {
+    // 1 − u1 lies in (0, 1]: no logarithm of 0.
+    (-2.0 * (1.0 - u1).ln()).sqrt() * (2.0 * PI * u2).cos()
+}
+
+/// `x` wrapped around the unit interval, into `[0, 1)`.
+#[inline]
+fn wrap(x: f32) -> f32 {
+    let w = x - x.floor();
+    // x a tiny negative number: 1 − tiny rounds to 1.
+    if w < 1.0 { w } else { ONE_MINUS_EPSILON }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sampling::Sampler;
+
+    fn read(p: &mut PrimarySample, dims: u32) -> Vec<f32> {
+        (0..dims).map(|d| p.coordinate(d)).collect()
+    }
+
+    #[test]
+    fn the_start_is_the_hashed_samplers_sequence() {
+        let mut p = PrimarySample::new(3, 4, 5, 0.01);
+        let mut s = Sampler::new(3, 4, 5);
+        // Read out of order, with a gap: the values are the addresses'.
+        let seven = p.coordinate(7);
+        let first = read(&mut p, 10);
+        let expected: Vec<f32> = (0..10).map(|_| s.next_1d()).collect();
+        assert_eq!(first, expected);
+        assert_eq!(seven, expected[7]);
+        // Through a sampler, dimension after dimension.
+        let mut primary = Sampler::primary(PrimarySample::new(3, 4, 5, 0.01));
+        let drawn: Vec<f32> = (0..10).map(|_| primary.next_1d()).collect();
+        assert_eq!(drawn, expected);
+    }
+
+    #[test]
+    fn reject_restores_and_accept_keeps() {
+        let mut p = PrimarySample::new(1, 2, 3, 0.05);
+        let start = read(&mut p, 6);
+        p.propose_small(9, 0, 1);
+        let moved = read(&mut p, 4);
+        assert!(moved.iter().zip(&start).all(|(a, b)| a != b));
+        p.reject();
+        assert_eq!(read(&mut p, 6), start, "reading after a reject");
+        p.propose_large(9, 0, 2);
+        let fresh = read(&mut p, 3);
+        let mut s = Sampler::new(9, 0, 2);
+        assert_eq!(fresh, (0..3).map(|_| s.next_1d()).collect::<Vec<_>>());
+        p.accept();
+        // The large step is the state now, also for coordinates it did not
+        // read: coordinate 4 is number 4 of that step's address.
+        let mut s = Sampler::new(9, 0, 2);
+        let expected: Vec<f32> = (0..6).map(|_| s.next_1d()).collect();
+        p.propose_small(9, 0, 3);
+        p.reject();
+        assert_eq!(read(&mut p, 6), expected);
+    }
+
+    /// Small steps are wrapped normal moves of deviation σ, σ√n for a
+    /// coordinate that sat out n − 1 steps. 20 000 moves each: the standard
+    /// error of a variance is √2/√20000 ≈ 1% of it; 6% is 6 standard errors
+    /// (false failure < 1e-8). The mean displacement (standard error
+    /// σ/141) within 6 standard errors of 0.
+    #[test]
+    fn small_steps_have_deviation_sigma_root_n() {
+        let sigma = 0.02f32;
+        for n in [1u64, 4] {
+            let (mut sum, mut sum_sq) = (0.0f64, 0.0f64);
+            let count = 20_000;
+            for chain in 0..count {
+                let mut p = PrimarySample::new(5, chain, 0, sigma);
+                let before = p.coordinate(0);
+                for k in 1..n {
+                    // Steps that read another coordinate only.
+                    p.propose_small(6, chain, k);
+                    p.coordinate(1);
+                    p.accept();
+                }
+                p.propose_small(6, chain, n);
+                let after = p.coordinate(0);
+                let mut d = (after - before) as f64;
+                d -= d.round();
+                sum += d;
+                sum_sq += d * d;
+            }
+            let mean = sum / count as f64;
+            let var = sum_sq / count as f64 - mean * mean;
+            let expected = (sigma as f64).powi(2) * n as f64;
+            let se_mean = expected.sqrt() / (count as f64).sqrt();
+            assert!(mean.abs() < 6.0 * se_mean, "n = {n}: mean {mean}");
+            assert!(
+                (var / expected - 1.0).abs() < 0.06,
+                "n = {n}: variance {var}, expected {expected}"
+            );
+        }
+    }
+
+    #[test]
+    fn coordinates_stay_in_the_unit_interval() {
+        assert_eq!(wrap(-1e-9), ONE_MINUS_EPSILON);
+        assert_eq!(wrap(1.25), 0.25);
+        assert_eq!(wrap(-0.25), 0.75);
+        let mut p = PrimarySample::new(0, 0, 0, 0.3);
+        for t in 1..2000 {
+            if t % 7 == 0 {
+                p.propose_large(1, 0, t);
+            } else {
+                p.propose_small(2, 0, t);
+            }
+            for d in 0..8 {
+                let v = p.coordinate(d);
+                assert!((0.0..1.0).contains(&v), "{v}");
+            }
+            if t % 3 == 0 { p.reject() } else { p.accept() }
+        }
+    }
+}
