@@ -12,6 +12,13 @@
 //! plain scalar code elsewhere through glam's fallback). Boxes are stored
 //! structure-of-arrays: `bounds[2k]` holds the four children's minima along
 //! axis `k`, `bounds[2k + 1]` their maxima.
+//!
+//! Two walks share the four-box slab test: [`Bvh4::traverse`] visits the
+//! children a ray enters nearest first and skips those that start beyond the
+//! closest hit so far (closest hit); [`Bvh4::traverse_any`] visits them in
+//! any order and stops at the first blocker (shadow rays).
+
+use std::mem::MaybeUninit;
 
 use super::aabb::InverseDirection;
 use super::bvh::{Bvh, BvhNode};
@@ -87,40 +94,18 @@ impl Bvh4 {
         if nodes.is_empty() {
             return;
         }
-        // Moving in +k the ray enters slab k at its minimum plane, in −k at
-        // its maximum: picking the planes once per ray saves the min/max of
-        // the two plane distances per box. The side comes from the sign of
-        // 1/d, so a −0.0 component picks the planes its −1e30 needs.
-        let InverseDirection {
-            inv_d,
-            negative: [sx, sy, sz],
-        } = InverseDirection::new(d);
-        let (ox, oy, oz) = (Vec4::splat(o.x), Vec4::splat(o.y), Vec4::splat(o.z));
-        let (ix, iy, iz) = (
-            Vec4::splat(inv_d.x),
-            Vec4::splat(inv_d.y),
-            Vec4::splat(inv_d.z),
-        );
-
-        let mut stack = [(0u32, 0f32); STACK];
-        let mut sp = 0usize;
+        let ray = SlabRay::new(o, d);
+        let mut stack = Stack::<(u32, f32)>::new();
         let mut current = 0u32;
         loop {
             if current & LEAF != 0 {
-                let first = (current & !LEAF) >> COUNT_BITS;
-                if leaf(first, current & ((1 << COUNT_BITS) - 1), &mut t_max) {
+                let (first, count) = leaf_range(current);
+                if leaf(first, count, &mut t_max) {
                     return;
                 }
             } else {
                 let node = &nodes[current as usize];
-                let b = &node.bounds;
-                let t_near = ((b[sx] - ox) * ix)
-                    .max((b[2 + sy] - oy) * iy)
-                    .max(((b[4 + sz] - oz) * iz).max(Vec4::ZERO));
-                let t_far = ((b[1 - sx] - ox) * ix)
-                    .min((b[3 - sy] - oy) * iy)
-                    .min(((b[5 - sz] - oz) * iz).min(Vec4::splat(t_max)));
-                let mut mask = t_near.cmple(t_far).bitmask();
+                let (t_near, mut mask) = ray.enter(node, t_max);
                 if mask != 0 {
                     let t = t_near.to_array();
                     let i = mask.trailing_zeros() as usize;
@@ -134,8 +119,7 @@ impl Bvh4 {
                     if mask & (mask - 1) == 0 {
                         // Two children hit (the common case): nearer first.
                         let (a, b) = if t[i] <= t[j] { (i, j) } else { (j, i) };
-                        stack[sp] = (node.child[b], t[b]);
-                        sp += 1;
+                        stack.push((node.child[b], t[b]));
                         current = node.child[a];
                         continue;
                     }
@@ -155,8 +139,7 @@ impl Bvh4 {
                         n += 1;
                     }
                     for h in hits[1..n].iter().rev() {
-                        stack[sp] = *h;
-                        sp += 1;
+                        stack.push(*h);
                     }
                     current = hits[0].0;
                     continue;
@@ -164,17 +147,151 @@ impl Bvh4 {
             }
             // Next pending subtree that still starts before t_max.
             loop {
-                if sp == 0 {
+                let Some((c, t)) = stack.pop() else {
                     return;
-                }
-                sp -= 1;
-                let (c, t) = stack[sp];
+                };
                 if t < t_max {
                     current = c;
                     break;
                 }
             }
         }
+    }
+
+    /// Any-hit traversal for shadow rays: calls `leaf(first, count)` for the
+    /// leaves the ray `o + t·d`, `t ∈ (0, t_max)`, enters, in no particular
+    /// order, until it returns `true` (something blocks the ray); returns
+    /// whether it did. Since any blocker ends the walk, the children a ray
+    /// enters are neither sorted nor stored with their entry distances, and
+    /// `t_max` never shrinks, so no pending subtree is ever skipped.
+    #[inline(always)]
+    pub fn traverse_any(
+        &self,
+        o: Vec3A,
+        d: Vec3A,
+        t_max: f32,
+        mut leaf: impl FnMut(u32, u32) -> bool,
+    ) -> bool {
+        let nodes = &self.nodes[..];
+        if nodes.is_empty() {
+            return false;
+        }
+        let ray = SlabRay::new(o, d);
+        let mut stack = Stack::<u32>::new();
+        let mut current = 0u32;
+        loop {
+            if current & LEAF != 0 {
+                let (first, count) = leaf_range(current);
+                if leaf(first, count) {
+                    return true;
+                }
+            } else {
+                let node = &nodes[current as usize];
+                let (_, mut mask) = ray.enter(node, t_max);
+                if mask != 0 {
+                    // Visit the first child entered, keep the others.
+                    current = node.child[mask.trailing_zeros() as usize];
+                    mask &= mask - 1;
+                    while mask != 0 {
+                        stack.push(node.child[mask.trailing_zeros() as usize]);
+                        mask &= mask - 1;
+                    }
+                    continue;
+                }
+            }
+            let Some(c) = stack.pop() else {
+                return false;
+            };
+            current = c;
+        }
+    }
+}
+
+/// First primitive and count of a leaf reference.
+#[inline(always)]
+fn leaf_range(reference: u32) -> (u32, u32) {
+    (
+        (reference & !LEAF) >> COUNT_BITS,
+        reference & ((1 << COUNT_BITS) - 1),
+    )
+}
+
+/// A ray prepared for the slab tests of four boxes at once.
+///
+/// Moving in +k the ray enters slab k at its minimum plane, in −k at its
+/// maximum: picking the planes once per ray saves the min/max of the two
+/// plane distances per box. The side comes from the sign of 1/d, so a −0.0
+/// component picks the planes its −1e30 needs.
+struct SlabRay {
+    o: [Vec4; 3],
+    inv_d: [Vec4; 3],
+    negative: [usize; 3],
+}
+
+impl SlabRay {
+    #[inline(always)]
+    fn new(o: Vec3A, d: Vec3A) -> Self {
+        let InverseDirection { inv_d, negative } = InverseDirection::new(d);
+        SlabRay {
+            o: [Vec4::splat(o.x), Vec4::splat(o.y), Vec4::splat(o.z)],
+            inv_d: [
+                Vec4::splat(inv_d.x),
+                Vec4::splat(inv_d.y),
+                Vec4::splat(inv_d.z),
+            ],
+            negative,
+        }
+    }
+
+    /// Slab test of the four children of `node` against `(0, t_max)`: the
+    /// entry distances `max_k (plane_near_k − o_k)/d_k` (clamped at 0) and a
+    /// bit mask of the children entered (`t_near ≤ t_far`).
+    #[inline(always)]
+    fn enter(&self, node: &Bvh4Node, t_max: f32) -> (Vec4, u32) {
+        let b = &node.bounds;
+        let [sx, sy, sz] = self.negative;
+        let [ox, oy, oz] = self.o;
+        let [ix, iy, iz] = self.inv_d;
+        let t_near = ((b[sx] - ox) * ix)
+            .max((b[2 + sy] - oy) * iy)
+            .max(((b[4 + sz] - oz) * iz).max(Vec4::ZERO));
+        let t_far = ((b[1 - sx] - ox) * ix)
+            .min((b[3 - sy] - oy) * iy)
+            .min(((b[5 - sz] - oz) * iz).min(Vec4::splat(t_max)));
+        (t_near, t_near.cmple(t_far).bitmask())
+    }
+}
+
+/// The traversal stack: a fixed array, left uninitialized (zeroing its
+/// 512 bytes for every ray showed up in profiles as a `memset` costing a
+/// few per cent of a path tracer's time).
+struct Stack<T: Copy> {
+    items: [MaybeUninit<T>; STACK],
+    len: usize,
+}
+
+impl<T: Copy> Stack<T> {
+    #[inline(always)]
+    fn new() -> Self {
+        Stack {
+            items: [const { MaybeUninit::uninit() }; STACK],
+            len: 0,
+        }
+    }
+
+    #[inline(always)]
+    fn push(&mut self, item: T) {
+        // Indexing panics (rather than writing out of bounds) should the
+        // depth bound of the build ever be broken.
+        self.items[self.len] = MaybeUninit::new(item);
+        self.len += 1;
+    }
+
+    #[inline(always)]
+    fn pop(&mut self) -> Option<T> {
+        self.len = self.len.checked_sub(1)?;
+        // SAFETY: every slot below the former `len` was written by `push`.
+        Some(unsafe { self.items[self.len].assume_init() })
     }
 }
 

@@ -256,15 +256,12 @@ impl Geometry {
     pub fn occluded(&self, ray: &Ray) -> bool {
         let (o, d) = (ray.o, ray.d);
         let prims = &self.prims[..];
-        let mut hit = false;
-        self.bvh.traverse(o, d, ray.t_max, |first, count, t_max| {
-            let leaf = &prims[first as usize..(first + count) as usize];
-            hit = leaf
+        let t_max = ray.t_max;
+        self.bvh.traverse_any(o, d, t_max, |first, count| {
+            prims[first as usize..(first + count) as usize]
                 .iter()
-                .any(|prim| prim.intersect(o, d, *t_max).is_some());
-            hit
-        });
-        hit
+                .any(|prim| prim.intersect(o, d, t_max).is_some())
+        })
     }
 
     /// The closest hit by testing every primitive (for tests and for

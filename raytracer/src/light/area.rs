@@ -16,6 +16,7 @@ use crate::frame::Frame;
 use crate::geometry::{Quad, Sphere};
 use crate::light::{Emission, LightSample};
 use crate::math::{Color, INV_PI, PI, Ray, RayPdf, Vec2, Vec3A, ray_offset};
+use crate::sampling::sincos::sincos_turn;
 use crate::sampling::warp::{cosine_hemisphere, uniform_sphere};
 
 /// The surface of an area light.
@@ -127,9 +128,9 @@ impl AreaLight {
                 let cos_t = 1.0 - one_minus_cos;
                 let sin2_t = (one_minus_cos * (2.0 - one_minus_cos)).max(0.0);
                 let sin_t = sin2_t.sqrt();
-                let phi = 2.0 * PI * u.y;
+                let (sin_phi, cos_phi) = sincos_turn(u.y);
                 let frame = Frame::from_normal(to_c / dc);
-                let wi = frame.to_world(Vec3A::new(sin_t * phi.cos(), sin_t * phi.sin(), cos_t));
+                let wi = frame.to_world(Vec3A::new(sin_t * cos_phi, sin_t * sin_phi, cos_t));
                 // Nearest intersection of p + t·wi with the sphere:
                 // t = dc cos θ − sqrt(r² − dc² sin²θ) (clamped: rounding may
                 // put θ a hair outside the cone, where the ray grazes it).

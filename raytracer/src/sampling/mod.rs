@@ -13,6 +13,7 @@ pub mod draw;
 pub mod mis;
 pub mod primary;
 pub mod rng;
+pub mod sincos;
 pub mod warp;
 
 pub use distribution::{Distribution1D, Distribution2D};

@@ -6,6 +6,7 @@
 //! [`crate::frame`]); pdfs of directions are per unit solid angle (`pdf_w`),
 //! pdfs of points per unit area (`pdf_a`).
 
+use super::sincos::{sincos_small, sincos_turn};
 use crate::math::{INV_2PI, INV_4PI, INV_PI, PI, Vec2, Vec3A};
 
 /// Uniform point on the unit disk, by Shirley and Chiu's concentric map
@@ -16,12 +17,16 @@ pub fn concentric_disk(u: Vec2) -> Vec2 {
     if a.x == 0.0 && a.y == 0.0 {
         return Vec2::ZERO;
     }
-    let (r, theta) = if a.x.abs() > a.y.abs() {
-        (a.x, (PI / 4.0) * (a.y / a.x))
+    // θ = (π/4)(a_y/a_x) on the left and right wedges; on the top and bottom
+    // θ = π/2 − x with x = (π/4)(a_x/a_y), so cos θ = sin x, sin θ = cos x.
+    // Both angles x lie in [−π/4, π/4].
+    if a.x.abs() > a.y.abs() {
+        let (s, c) = sincos_small((PI / 4.0) * (a.y / a.x));
+        a.x * Vec2::new(c, s)
     } else {
-        (a.y, PI / 2.0 - (PI / 4.0) * (a.x / a.y))
-    };
-    r * Vec2::new(theta.cos(), theta.sin())
+        let (s, c) = sincos_small((PI / 4.0) * (a.x / a.y));
+        a.y * Vec2::new(s, c)
+    }
 }
 
 /// Density of [`concentric_disk`] per unit area: `1/π`.
@@ -57,8 +62,8 @@ pub fn concentric_disk_inverse(p: Vec2) -> Vec2 {
 pub fn uniform_hemisphere(u: Vec2) -> Vec3A {
     let z = u.x;
     let r = (1.0 - z * z).max(0.0).sqrt();
-    let phi = 2.0 * PI * u.y;
-    Vec3A::new(r * phi.cos(), r * phi.sin(), z)
+    let (sin_phi, cos_phi) = sincos_turn(u.y);
+    Vec3A::new(r * cos_phi, r * sin_phi, z)
 }
 
 /// Density of [`uniform_hemisphere`]: `1/(2π)` per steradian.
@@ -100,8 +105,8 @@ pub fn cosine_hemisphere_inverse(w: Vec3A) -> Vec2 {
 pub fn uniform_sphere(u: Vec2) -> Vec3A {
     let z = 1.0 - 2.0 * u.x;
     let r = (1.0 - z * z).max(0.0).sqrt();
-    let phi = 2.0 * PI * u.y;
-    Vec3A::new(r * phi.cos(), r * phi.sin(), z)
+    let (sin_phi, cos_phi) = sincos_turn(u.y);
+    Vec3A::new(r * cos_phi, r * sin_phi, z)
 }
 
 /// Density of [`uniform_sphere`]: `1/(4π)` per steradian.
@@ -123,8 +128,8 @@ pub fn uniform_sphere_inverse(w: Vec3A) -> Vec2 {
 pub fn uniform_cone(u: Vec2, cos_theta_max: f32) -> Vec3A {
     let z = 1.0 - u.x * (1.0 - cos_theta_max);
     let r = (1.0 - z * z).max(0.0).sqrt();
-    let phi = 2.0 * PI * u.y;
-    Vec3A::new(r * phi.cos(), r * phi.sin(), z)
+    let (sin_phi, cos_phi) = sincos_turn(u.y);
+    Vec3A::new(r * cos_phi, r * sin_phi, z)
 }
 
 /// Density of [`uniform_cone`]: one over the cone's solid angle `2π(1 − cos θ_max)`.

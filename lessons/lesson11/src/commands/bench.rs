@@ -1,7 +1,10 @@
 //! `lesson11 bench`: the figures behind every speed claim of the README.
 
 mod biased;
+mod mitsuba;
 mod rays;
+
+use std::path::PathBuf;
 
 use anyhow::{Result, bail};
 use clap::Args;
@@ -9,9 +12,10 @@ use raytracer::integrator::{Bdpt, Direct, DirectStrategy, Integrator, LightTrace
 use raytracer::render::{Metropolis, RenderOptions, render, render_metropolis};
 use raytracer::scene::Scene;
 
-/// Measure primary-ray throughput on large meshes, direct-lighting samples
-/// per second on the Cornell box (256×256), and the unbiased integrators'
-/// samples (Metropolis: mutations) per second on the door scene. Run it with
+/// Measure primary-ray throughput on large meshes, direct-lighting and path
+/// tracing samples per second on the Cornell box (256×256) with the ratio to
+/// Mitsuba 3 when one is installed, and the unbiased integrators' samples
+/// (Metropolis: mutations) per second on the door scene. Run it with
 /// --release.
 #[derive(Args, Debug)]
 pub struct BenchArgs {
@@ -30,6 +34,11 @@ pub struct BenchArgs {
     /// Seconds per algorithm in the equal-time comparison (0 skips it).
     #[arg(long, default_value_t = 2.0)]
     pub equal_time: f64,
+    /// A Python with Mitsuba 3 installed, to print the ratio of our path
+    /// tracer to Mitsuba's on the Cornell box (default: the environment
+    /// variable LESSON11_MITSUBA_PYTHON, else `python3` if it has Mitsuba).
+    #[arg(long, value_name = "PYTHON")]
+    pub mitsuba: Option<PathBuf>,
 }
 
 /// Checks the options before any measurement starts.
@@ -79,9 +88,10 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             &path,
         ),
     ];
-    for (what, integrator) in cases {
+    for (k, (what, integrator)) in cases.into_iter().enumerate() {
         println!("\n`cornell` 256×256, {} spp: {what}", args.spp);
         println!("  {:>8} {:>10} {:>14}", "threads", "seconds", "M samples/s");
+        let mut last = 0.0;
         for &n in &threads {
             let options = RenderOptions {
                 spp: args.spp,
@@ -96,6 +106,15 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 n,
                 result.stats.elapsed.as_secs_f64(),
                 result.stats.samples_per_second() / 1e6
+            );
+            last = result.stats.samples_per_second();
+        }
+        // The path tracer (the second case) against its peer.
+        if k == 1 {
+            let n = *threads.last().expect("at least one thread count");
+            println!(
+                "{}",
+                mitsuba::compare(args.mitsuba.as_ref(), args.spp, last, n)
             );
         }
     }
