@@ -13,10 +13,11 @@
 //!
 //! with `ω_o` and `ω_i` both pointing away from x (`ω_i` towards where the
 //! light comes from) and `cos θ_i = ω_i·n`, the normal `n` taken on the side
-//! of `ω_o`. The slide writes `ω_i` pointing into the surface (the way the
-//! light travels), hence its `(−ω_i·n)`: with `ω_i(slide) = −ω_i`,
-//! `(−ω_i(slide)·n) = ω_i·n`. The light arriving from `ω_i` is the light
-//! leaving the first surface x′ hit by the ray from x in direction `ω_i`:
+//! of `ω_o`. The lecture writes `ω_i` pointing into the surface (the way
+//! the light travels), hence its `(−ω_i·n)`: with `ω_i(lecture) = −ω_i`,
+//! `(−ω_i(lecture)·n) = ω_i·n` (slide "The lecture's ωᵢ and ours"). The
+//! light arriving from `ω_i` is the light leaving the first surface x′ hit
+//! by the ray from x in direction `ω_i`:
 //! `L_i(x, ω_i) = L_o(x′, −ω_i)`, another instance of the same equation.
 //!
 //! Task: return the radiance arriving at the origin of `ray` along it — the

@@ -16,6 +16,9 @@
 //! the raster position `raster`, the unit direction `wi` from `p` towards
 //! the lens point, the importance `we` (`W_e`) of that ray, and `pdf_w`, the
 //! density per unit solid angle at `p` with which that lens point was drawn.
+//! (`wi` is the camera's name for it, as in pbrt: the direction from which
+//! importance arrives at `p`. For the BRDF at `p` it is the slide's `ω_o`,
+//! the way the light leaves towards the lens.)
 //! Return the splat at that raster position whose value is an unbiased
 //! estimate of the vertex's contribution to the image: the slide's `C`
 //! integrated over the lens, estimated with the one lens point drawn. The

@@ -136,7 +136,7 @@ fn check_eval(f: PhongFn) -> Result<(), String> {
             &|c| lobe(albedo, c.n, c.wi.z),
         ),
         (
-            "you mirrored −ω_i, the slide's incoming direction: here ω_i points away from the surface, and the angle is between ω_i and reflect(ω_o)",
+            "you mirrored −ω_i, the lecture's incoming direction: here ω_i points away from the surface, and the angle is between ω_i and reflect(ω_o)",
             &|c| lobe(albedo, c.n, -mirror_z(c.wo).dot(c.wi)),
         ),
         (

@@ -152,7 +152,9 @@ fn path_sample(
         Labels::Subpaths,
         "path-sample",
         &format!(
-            "One path-tracing sample of pixel ({}, {}), recorded by the renderer and drawn over              the picture: the camera ray from the lens x₀, the bounces x₁ … (D = 5), and from              every vertex a shadow ray to a point on the lamp (green; red where blocked).",
+            "One path-tracing sample of pixel ({}, {}), recorded by the renderer and drawn over \
+             the picture: the camera ray from the lens x₀, the bounces x₁ … (D = 5), and from \
+             every vertex a shadow ray to a point on the lamp (green; red where blocked).",
             pixel.x, pixel.y
         ),
     )
