@@ -1,25 +1,31 @@
 //! The integrators a command line can choose (`--integrator`) and their
 //! options: the lecture's algorithms from direct light to bidirectional path
-//! tracing and Metropolis light transport, shared by `lesson11 render` and
-//! the stereo chapter (Metropolis only by `render`: it runs Markov chains
-//! over the whole image, not one pixel sample at a time).
+//! tracing and Metropolis light transport, shared by `lesson11 render`, the
+//! lab and the stereo chapter (SPPM and Metropolis only by `render` and the
+//! lab's Render tab: they render the whole image in loops of their own, not
+//! one pixel sample at a time).
 //!
-//! Every option is checked before anything is rendered: an option the chosen
-//! integrator does not use is an error, not silently ignored, and naive
-//! recursion states its worst-case ray count and refuses more than
-//! [`RAY_BUDGET`] rays without `--force`.
+//! Every option is checked before anything is rendered
+//! ([`IntegratorKind::plan`]): an option the chosen integrator does not use
+//! is an error, not silently ignored, and naive recursion states its
+//! worst-case ray count and refuses more than [`RAY_BUDGET`] rays without
+//! `--force`. What takes long (photon maps, VPLs, irradiance records) is
+//! built afterwards ([`IntegratorPlan::build`]) and can be stopped.
 
 mod biased;
 
-pub use biased::{BiasedArgs, BiasedKind, render_sppm_to_files};
+pub use biased::{BiasedArgs, BiasedKind, BiasedPlan, render_sppm_to_files};
+
+use std::sync::atomic::AtomicBool;
 
 use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
+use raytracer::integrator::sppm::SppmSettings;
 use raytracer::integrator::{
     AmbientOcclusion, Bdpt, Direct, DirectStrategy, Integrator, LightTracer, NaiveRecursive,
     PathTracer,
 };
-use raytracer::render::{Metropolis, RenderOptions, memory_needed};
+use raytracer::render::{Metropolis, RenderOptions, interrupt_flag, memory_needed};
 use raytracer::scene::{Scene, max_depth_from};
 
 use crate::metropolis::MetropolisArgs;
@@ -67,9 +73,26 @@ pub const RAY_BUDGET: f64 = 1e10;
 /// `--max-depth -1 --roulette` and a last branching factor of 1).
 pub const NAIVE_DEFAULT_DEPTH: u32 = 4;
 
+/// A checked `--integrator` choice, not built yet: what
+/// [`IntegratorKind::plan`] makes of the command line.
+pub enum IntegratorPlan {
+    /// An integrator of pixel samples that needs no preparation.
+    Ready(Box<dyn Integrator + Send>),
+    /// Photon mapping, instant radiosity or irradiance caching: pixel
+    /// samples once their maps, lights or records are built.
+    Biased(BiasedPlan),
+    /// SPPM: passes of its own (`raytracer::render::sppm`), `--spp` of them.
+    Sppm(SppmSettings),
+    /// Metropolis light transport: Markov chains over bidirectional path
+    /// tracing (`raytracer::render::metropolis`).
+    Metropolis(Bdpt, Metropolis),
+}
+
 impl IntegratorKind {
-    /// The integrator with the command line's options, checked; `options`
-    /// and `force` decide whether naive recursion stays within its budget.
+    /// The integrator with the command line's options, checked and built;
+    /// `options` and `force` decide whether naive recursion stays within its
+    /// budget. Ctrl-C stops a build (see [`IntegratorPlan::build`]). SPPM and
+    /// Metropolis are refused: they are no integrators of pixel samples.
     pub fn build(
         self,
         args: &IntegratorArgs,
@@ -77,9 +100,27 @@ impl IntegratorKind {
         options: &RenderOptions,
         force: bool,
     ) -> Result<Box<dyn Integrator + Send>> {
+        self.plan(args, scene, options, force)?
+            .build(scene, options, interrupt_flag())
+    }
+
+    /// Every check of the command line's options for this integrator
+    /// (quick, nothing is traced): the plan of the render, or one line on
+    /// what is wrong.
+    pub fn plan(
+        self,
+        args: &IntegratorArgs,
+        scene: &Scene,
+        options: &RenderOptions,
+        force: bool,
+    ) -> Result<IntegratorPlan> {
+        if self == IntegratorKind::Mlt {
+            let (bdpt, metropolis) = args.metropolis(scene, options, force)?;
+            return Ok(IntegratorPlan::Metropolis(bdpt, metropolis));
+        }
         args.check(self)?;
         let max_depth = args.max_depth(self, scene)?;
-        let rr_depth = args.rr_depth.unwrap_or(scene.settings.rr_depth);
+        let rr_depth = args.rr_depth(scene);
         let path = |strategy| {
             Box::new(PathTracer {
                 max_depth,
@@ -87,7 +128,7 @@ impl IntegratorKind {
                 strategy,
             })
         };
-        Ok(match self {
+        Ok(IntegratorPlan::Ready(match self {
             IntegratorKind::Direct => Box::new(Direct),
             IntegratorKind::Ao => Box::new(AmbientOcclusion {
                 distance: args.ao_distance.unwrap_or(1.0),
@@ -115,32 +156,79 @@ impl IntegratorKind {
                 rr_depth,
                 strategy_images: None,
             }),
-            IntegratorKind::Mlt => bail!(
-                "--integrator mlt runs Markov chains over the whole image, not one pixel sample at a time: \
-                 only `lesson11 render --integrator mlt` renders with it"
-            ),
-            IntegratorKind::Photon | IntegratorKind::Vpl | IntegratorKind::IrradianceCache => {
-                let Some(kind) = self.biased() else {
-                    bail!("{self:?} is not a biased integrator")
-                };
-                biased::build(
-                    kind,
+            IntegratorKind::Sppm => {
+                return Ok(IntegratorPlan::Sppm(biased::sppm_plan(
                     &args.biased,
-                    scene,
-                    options,
                     max_depth,
                     rr_depth,
                     force,
-                )?
+                )?));
             }
-            IntegratorKind::Sppm => bail!(
-                "sppm renders in passes of its own, not sample by sample: use `lesson11 render --integrator sppm`"
-            ),
-        })
+            IntegratorKind::Mlt
+            | IntegratorKind::Photon
+            | IntegratorKind::Vpl
+            | IntegratorKind::IrradianceCache => {
+                let Some(kind) = self.biased() else {
+                    bail!("{self:?} is not a biased integrator")
+                };
+                return Ok(IntegratorPlan::Biased(biased::plan(
+                    kind,
+                    &args.biased,
+                    options.seed,
+                    max_depth,
+                    rr_depth,
+                    force,
+                )?));
+            }
+        }))
+    }
+}
+
+/// Why `--integrator mlt` has no pixel samples.
+const MLT_IS_NO_SAMPLER: &str = "--integrator mlt runs Markov chains over the whole image, not one pixel \
+     sample at a time: only `lesson11 render --integrator mlt` (and the lab's Render tab) renders with it";
+
+/// Why `--integrator sppm` has no pixel samples.
+const SPPM_IS_NO_SAMPLER: &str = "sppm renders in passes of its own, not sample by sample: use \
+     `lesson11 render --integrator sppm` (or the lab's Render tab)";
+
+impl IntegratorPlan {
+    /// Refuses SPPM and Metropolis where pixel samples are needed (they
+    /// render the whole image in loops of their own).
+    pub fn check_pixel_samples(&self) -> Result<()> {
+        match self {
+            IntegratorPlan::Sppm(_) => bail!(SPPM_IS_NO_SAMPLER),
+            IntegratorPlan::Metropolis(..) => bail!(MLT_IS_NO_SAMPLER),
+            IntegratorPlan::Ready(_) | IntegratorPlan::Biased(_) => Ok(()),
+        }
+    }
+
+    /// The integrator of pixel samples: built now for the biased ones
+    /// (their maps, lights or records, on `options.threads` threads, ended
+    /// early once `stop` is set), refused for SPPM and Metropolis.
+    pub fn build(
+        self,
+        scene: &Scene,
+        options: &RenderOptions,
+        stop: &AtomicBool,
+    ) -> Result<Box<dyn Integrator + Send>> {
+        self.check_pixel_samples()?;
+        match self {
+            IntegratorPlan::Ready(integrator) => Ok(integrator),
+            IntegratorPlan::Biased(plan) => Ok(plan.build(scene, options, stop)?.0),
+            IntegratorPlan::Sppm(_) => bail!(SPPM_IS_NO_SAMPLER),
+            IntegratorPlan::Metropolis(..) => bail!(MLT_IS_NO_SAMPLER),
+        }
     }
 }
 
 impl IntegratorKind {
+    /// False for SPPM and Metropolis, which render the whole image in
+    /// loops of their own (see [`IntegratorPlan::check_pixel_samples`]).
+    pub fn renders_pixel_samples(self) -> bool {
+        !matches!(self, IntegratorKind::Sppm | IntegratorKind::Mlt)
+    }
+
     /// The biased integrator this is, if it is one.
     pub fn biased(self) -> Option<BiasedKind> {
         match self {
@@ -224,12 +312,6 @@ pub struct IntegratorArgs {
 }
 
 impl IntegratorArgs {
-    /// [`IntegratorArgs::check`] for an integrator that is not built by
-    /// [`IntegratorKind::build`] (SPPM).
-    pub fn check_only(&self, kind: IntegratorKind) -> Result<()> {
-        self.check(kind)
-    }
-
     /// Refuses options that `kind` does not use, and values that mean nothing.
     fn check(&self, kind: IntegratorKind) -> Result<()> {
         use IntegratorKind::{Ao, Direct, Naive};

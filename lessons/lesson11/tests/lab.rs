@@ -238,6 +238,11 @@ fn the_page_and_its_assets_load_and_unknown_paths_are_404() {
         ],
         "every --integrator of lesson11 render"
     );
+    assert_eq!(
+        scenes["whole_image"],
+        serde_json::json!(["mlt", "sppm"]),
+        "the stereo tab leaves out what renders no pixel samples"
+    );
     assert!(scenes["composites"].as_array().unwrap().len() >= 13);
 }
 
@@ -377,6 +382,16 @@ fn bad_parameters_get_400_with_a_one_line_reason() {
         ),
         (
             "POST",
+            "/api/stereo?page=x&integrator=sppm".into(),
+            "sppm renders in passes of its own",
+        ),
+        (
+            "POST",
+            "/api/stereo?page=x&integrator=mlt".into(),
+            "Markov chains over the whole image",
+        ),
+        (
+            "POST",
             "/api/brdf-sphere?page=x&model=velvet".into(),
             "`model` must be",
         ),
@@ -436,25 +451,43 @@ fn bad_parameters_get_400_with_a_one_line_reason() {
     assert_eq!(lab.get("/").status, 200, "the lab still answers");
 }
 
-/// A settings change stops the previous render within moments, also a
-/// naive recursion whose single samples would take ages.
+/// A settings change stops the previous render within moments whatever it
+/// is doing: path tracing, a naive recursion whose single samples would
+/// take ages, photon mapping while it builds its photon maps (on the job's
+/// thread: the request that starts it answers at once), SPPM between or
+/// inside its passes, Metropolis inside its chains.
+///
+/// The bound: a correct implementation stops within a few milliseconds
+/// (the stop flag is seen before every pixel sample, inside long samples,
+/// between batches of 1024 photon paths and after every Metropolis step);
+/// [`STOP_BOUND_MS`] is a hundred times that, a wide margin for a loaded
+/// 2-core machine, where a thread may wait tens of milliseconds for a core.
 #[test]
 fn a_settings_change_cancels_the_previous_render() {
+    const STOP_BOUND_MS: f64 = 1000.0;
     let lab = Lab::start(&[]);
-    for first in [
-        "integrator=path&spp=65536",
-        "integrator=naive&branching=1000&max-depth=6&spp=4",
+    // (the first render, how long it runs before the change)
+    for (first, runs) in [
+        ("integrator=path&spp=65536", 300),
+        ("integrator=naive&branching=1000&max-depth=6&spp=4", 300),
+        // The photon maps take about 0.15 s here (200000 paths): changed at once.
+        ("integrator=photon&spp=65536", 0),
+        ("integrator=sppm&spp=65536", 300),
+        ("integrator=mlt&spp=65536", 300),
     ] {
         let a = lab.json(
             "POST",
             &format!("/api/render?page=c&width=64&height=64&{first}"),
         );
-        std::thread::sleep(Duration::from_millis(300));
+        if first.contains("photon") {
+            assert_eq!(a["phase"], "building", "the build is the job's: {a}");
+        }
+        std::thread::sleep(Duration::from_millis(runs));
         let b = lab.json(
             "POST",
             "/api/render?page=c&integrator=path&width=64&height=64&spp=65536&seed=1",
         );
-        let end = Instant::now() + Duration::from_secs(20);
+        let end = Instant::now() + Duration::from_secs(10);
         let previous = loop {
             let s = lab.json("GET", "/api/status?page=c");
             assert_eq!(s["job"]["id"], b["id"]);
@@ -467,15 +500,94 @@ fn a_settings_change_cancels_the_previous_render() {
             assert!(Instant::now() < end, "{first}: not stopped: {s}");
             std::thread::sleep(Duration::from_millis(20));
         };
-        assert_eq!(previous["interrupted"], true);
+        assert_eq!(previous["interrupted"], true, "{previous}");
+        assert_eq!(previous["error"], Value::Null, "{previous}");
         let ms = previous["stopped_after_ms"].as_f64().unwrap();
         println!("{first}: stopped {ms:.1} ms after the request");
+        assert!(
+            ms < STOP_BOUND_MS,
+            "{first}: stopped {ms:.1} ms after the request, more than {STOP_BOUND_MS} ms"
+        );
+        if first.contains("photon") {
+            // Stopped while tracing its photons: the maps hold fewer paths than asked.
+            assert_eq!(previous["cancelled_in"], "building", "{previous}");
+            let note = previous["note"].as_str().unwrap_or_default();
+            assert!(
+                note.starts_with("photon maps: ") && note.ends_with("INTERRUPTED"),
+                "{previous}"
+            );
+            assert_eq!(previous["samples"], 0, "{previous}");
+        } else {
+            assert_eq!(previous["cancelled_in"], "rendering", "{previous}");
+        }
         let samples = previous["samples"].clone();
         std::thread::sleep(Duration::from_millis(300));
         let again = lab.json("GET", "/api/status?page=c");
         assert_eq!(again["previous"]["samples"], samples, "it stays stopped");
     }
     assert_eq!(lab.post("/api/stop?page=c").status, 200);
+}
+
+/// SPPM shows its picture pass by pass and Metropolis as its chains are
+/// merged, each saying what its spp counts; the inspector says why it has
+/// no pixel sample to show; a stop request is honoured.
+#[test]
+fn sppm_and_mlt_render_progressively() {
+    let lab = Lab::start(&[]);
+    for (integrator, spp, unit, note) in [
+        ("sppm", 65536, "passes", "SPPM: "),
+        ("mlt", 1024, "mutations per pixel", "chains merged"),
+    ] {
+        let s = lab.json(
+            "POST",
+            &format!(
+                "/api/render?page=m&integrator={integrator}&width=48&height=32&spp={spp}&seed=3"
+            ),
+        );
+        assert_eq!(
+            (s["unit"].as_str(), s["target_spp"].as_u64()),
+            (Some(unit), Some(spp))
+        );
+        let mut spps = Vec::new();
+        let mut version = 0;
+        let end = Instant::now() + Duration::from_secs(60);
+        while spps.len() < 3 {
+            assert!(
+                Instant::now() < end,
+                "{integrator}: only {spps:?} after a minute"
+            );
+            let status = lab.json("GET", &format!("/api/status?page=m&after={version}"));
+            let job = &status["job"];
+            assert_eq!(job["done"], false, "{integrator} ended early: {job}");
+            version = job["version"].as_u64().unwrap();
+            if job["picture"] != true {
+                continue;
+            }
+            let png = lab.get(&format!("/api/image.png?page=m&job={}", job["id"]));
+            assert_eq!(png.status, 200, "{integrator}: {}", png.text());
+            assert_eq!(png.png_size(), (48, 32));
+            let spp = job["spp"].as_f64().unwrap();
+            if integrator == "sppm" {
+                assert_eq!(
+                    spp,
+                    job["complete_spp"].as_f64().unwrap(),
+                    "whole passes: {job}"
+                );
+            }
+            assert!(job["note"].as_str().unwrap().contains(note), "{job}");
+            if spps.last().is_none_or(|&last| spp > last) {
+                spps.push(spp);
+            }
+        }
+        let r = lab.get("/api/paths?page=m&x=3&y=3&sample=0");
+        assert_eq!(r.status, 400);
+        assert!(r.text().contains("not of"), "{integrator}: {}", r.text());
+        assert_eq!(r.text().lines().count(), 1);
+        assert_eq!(lab.post("/api/stop?page=m").status, 200);
+        let s = lab.wait_done("m", Duration::from_secs(10));
+        assert_eq!(s["job"]["interrupted"], true, "{s}");
+        println!("{integrator}: snapshots at {spps:?} {unit}");
+    }
 }
 
 /// Runs `lesson11 render` with `args` into `dir`.
@@ -497,18 +609,20 @@ fn render(dir: &Path, args: &[&str]) -> Output {
 
 /// The lab's picture at N spp is `lesson11 render`'s with the same options:
 /// the same EXR and PNG bytes (40 spp: two full passes and a partial one;
-/// light tracing splats into other pixels).
+/// light tracing splats into other pixels; SPPM's N passes and Metropolis's
+/// N mutations per pixel, rendered in loops of their own).
 #[test]
 fn the_labs_picture_equals_lesson11_render_bit_for_bit() {
     let lab = Lab::start(&[]);
     let dir = temp_dir("same");
-    for integrator in ["path", "light"] {
+    for (integrator, spp) in [("path", 40), ("light", 40), ("sppm", 6), ("mlt", 40)] {
+        let spp = spp.to_string();
         let options = [
             ("scene", "cornell"),
             ("integrator", integrator),
             ("width", "40"),
             ("height", "32"),
-            ("spp", "40"),
+            ("spp", spp.as_str()),
             ("seed", "7"),
             ("max-depth", "5"),
         ];
@@ -516,8 +630,8 @@ fn the_labs_picture_equals_lesson11_render_bit_for_bit() {
         let status = lab.json("POST", &format!("/api/render?page=d&{}", query.join("&")));
         let command = status["command"].as_str().unwrap().to_string();
         let done = lab.wait_done("d", Duration::from_secs(120));
-        assert_eq!(done["job"]["interrupted"], false);
-        assert_eq!(done["job"]["complete_spp"], 40);
+        assert_eq!(done["job"]["interrupted"], false, "{done}");
+        assert_eq!(done["job"]["complete_spp"].to_string(), spp, "{done}");
         let exr = lab.get("/api/image.exr?page=d");
         let png = lab.get("/api/image.png?page=d&exposure=1.5");
         assert_eq!((exr.status, png.status), (200, 200));

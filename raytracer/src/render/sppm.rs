@@ -20,8 +20,13 @@
 //! any number of threads.
 //!
 //! **Interruption.** The stop flag (Ctrl-C) is checked between the steps of
-//! a pass and by the photon tracing; a pass cut short is dropped whole, so
-//! the image is that of the finished passes (`passes` says how many).
+//! a pass, by every pixel of the camera pass and by the photon tracing; a
+//! pass cut short is dropped whole, so the image is that of the finished
+//! passes (`passes` says how many).
+//!
+//! **Watching.** [`render_sppm_watched`] shows a watcher every finished
+//! pass (a progressive front-end's snapshots): after pass `k` the image is,
+//! bit for bit, the image of a render of `k` passes with the same seed.
 //!
 //! **Memory.** Per pixel its state and one visible point; per pass one
 //! photon map, freed before the next: bounded by the photons of one pass.
@@ -29,7 +34,7 @@
 
 use std::io::IsTerminal;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
@@ -73,7 +78,45 @@ pub fn render_sppm_with_stop(
     options: &RenderOptions,
     stop: &AtomicBool,
 ) -> SppmResult {
-    let run = || passes(scene, settings, options, stop);
+    render_sppm_watched(scene, settings, options, stop, &mut |_| {})
+}
+
+/// How far an SPPM render has come, as [`render_sppm_watched`] shows it
+/// after each finished pass.
+pub struct SppmProgress<'a> {
+    states: &'a [PixelState],
+    width: u32,
+    height: u32,
+    photons: u64,
+    /// Passes finished so far.
+    pub passes: u32,
+    /// Wall-clock time since the render started.
+    pub elapsed: Duration,
+}
+
+impl SppmProgress<'_> {
+    /// The image of the passes finished so far: bit for bit the image of a
+    /// render of [`Self::passes`] passes with the same settings and seed
+    /// (computed on demand, one radiance per pixel).
+    pub fn image(&self) -> Image {
+        let w = self.width;
+        Image::from_fn(w, self.height, |x, y| {
+            self.states[(y * w + x) as usize].radiance(self.passes, self.photons)
+        })
+    }
+}
+
+/// [`render_sppm_with_stop`] that shows `watch` the render after every
+/// finished pass. `watch` runs between passes, while no thread works: it
+/// should be quick (take the image, not encode it).
+pub fn render_sppm_watched(
+    scene: &Scene,
+    settings: &SppmSettings,
+    options: &RenderOptions,
+    stop: &AtomicBool,
+    watch: &mut (dyn FnMut(&SppmProgress) + Send),
+) -> SppmResult {
+    let mut run = || passes(scene, settings, options, stop, watch);
     match options.threads.map(|n| n.clamp(1, thread_limit())) {
         None => run(),
         Some(n) => match rayon::ThreadPoolBuilder::new().num_threads(n).build() {
@@ -91,6 +134,7 @@ fn passes(
     settings: &SppmSettings,
     options: &RenderOptions,
     stop: &AtomicBool,
+    watch: &mut (dyn FnMut(&SppmProgress) + Send),
 ) -> SppmResult {
     let start = Instant::now();
     let (w, h) = (scene.camera.width, scene.camera.height);
@@ -107,6 +151,10 @@ fn passes(
         let points: Vec<(Color, Option<PassPoint>)> = (0..pixels)
             .into_par_iter()
             .map(|j| {
+                if stopped() {
+                    // The pass is dropped below.
+                    return (Color::ZERO, None);
+                }
                 let pixel = UVec2::new(j as u32 % w.max(1), j as u32 / w.max(1));
                 camera_pass(scene, settings, options.seed, pixel, j as u64, pass)
             })
@@ -137,6 +185,14 @@ fn passes(
         peak_photons = peak_photons.max(map.len());
         done += 1;
         bar.inc(1);
+        watch(&SppmProgress {
+            states: &states,
+            width: w,
+            height: h,
+            photons: settings.photons,
+            passes: done,
+            elapsed: start.elapsed(),
+        });
     }
     bar.finish_and_clear();
     let image = Image::from_fn(w, h, |x, y| {
@@ -210,6 +266,30 @@ mod tests {
             .iter()
             .flat_map(|c| c.to_array().map(f32::to_bits))
             .collect()
+    }
+
+    /// The watcher sees every pass in order, and the image it is shown after
+    /// pass `k` is, bit for bit, the image of a `k`-pass render (on another
+    /// number of threads, too).
+    #[test]
+    fn each_pass_shown_is_the_image_of_a_shorter_render() {
+        let mut scene = Scene::builtin("cornell").unwrap();
+        scene.set_resolution(12, 10);
+        let settings = SppmSettings {
+            photons: 2000,
+            ..SppmSettings::default()
+        };
+        let never = AtomicBool::new(false);
+        let mut seen = Vec::new();
+        let full = render_sppm_watched(&scene, &settings, &options(3, 2), &never, &mut |p| {
+            seen.push((p.passes, bits(&p.image())))
+        });
+        let passes: Vec<u32> = seen.iter().map(|s| s.0).collect();
+        assert_eq!(passes, [1, 2, 3]);
+        let two = render_sppm_with_stop(&scene, &settings, &options(2, 1), &never);
+        assert_eq!(seen[1].1, bits(&two.image));
+        assert_eq!(seen[2].1, bits(&full.image));
+        assert_ne!(seen[1].1, seen[2].1);
     }
 
     /// One thread or three: the same image to the last bit; a raised stop

@@ -5,7 +5,9 @@ mod student;
 use anyhow::Result;
 use clap::Args;
 
-use crate::integrators::{IntegratorArgs, IntegratorKind, render_sppm_to_files};
+use raytracer::render::interrupt_flag;
+
+use crate::integrators::{IntegratorArgs, IntegratorKind, IntegratorPlan, render_sppm_to_files};
 use crate::options::{SceneArgs, check_exposure};
 use crate::render_files::render_to_files;
 
@@ -39,39 +41,34 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         );
     }
     let (scene, options) = args.scene.load("cornell")?;
-    if args.integrator == IntegratorKind::Mlt {
-        let (bdpt, metropolis) =
-            args.integrator_args
-                .metropolis(&scene, &options, args.scene.force)?;
-        crate::metropolis::render_to_files(
-            &scene,
-            &bdpt,
-            &options,
-            &metropolis,
-            &args.scene.out,
-            &format!("{}-mlt", scene.name),
-            args.exposure,
-        )?;
-        return Ok(());
-    }
-    if args.integrator == IntegratorKind::Sppm {
-        let ia = &args.integrator_args;
-        ia.check_only(args.integrator)?;
-        let settings = ia
-            .biased
-            .sppm(ia.max_depth(args.integrator, &scene)?, ia.rr_depth(&scene))?;
-        return render_sppm_to_files(
-            &scene,
-            &settings,
-            &options,
-            &args.scene.out,
-            args.exposure,
-            args.scene.force,
-        );
-    }
-    let integrator =
-        args.integrator
-            .build(&args.integrator_args, &scene, &options, args.scene.force)?;
+    // The lab renders from the same plan (`commands/lab/job.rs`).
+    let plan = args
+        .integrator
+        .plan(&args.integrator_args, &scene, &options, args.scene.force)?;
+    let integrator = match plan {
+        IntegratorPlan::Metropolis(bdpt, metropolis) => {
+            crate::metropolis::render_to_files(
+                &scene,
+                &bdpt,
+                &options,
+                &metropolis,
+                &args.scene.out,
+                &format!("{}-mlt", scene.name),
+                args.exposure,
+            )?;
+            return Ok(());
+        }
+        IntegratorPlan::Sppm(settings) => {
+            return render_sppm_to_files(
+                &scene,
+                &settings,
+                &options,
+                &args.scene.out,
+                args.exposure,
+            );
+        }
+        plan => plan.build(&scene, &options, interrupt_flag())?,
+    };
     let stem = format!("{}-{}", scene.name, integrator.name());
     render_to_files(
         &scene,

@@ -1,19 +1,24 @@
 //! The options of the biased integrators (`photon`, `sppm`, `vpl`,
-//! `irradiance-cache`), checked before anything is traced, and what they
-//! build: photon maps, VPLs and the irradiance cache are made before the
-//! render (with a line saying how many and how much memory); SPPM renders
-//! in passes of its own ([`render_sppm_to_files`]).
+//! `irradiance-cache`), checked before anything is traced ([`plan`],
+//! [`sppm_plan`]), and what they build: photon maps, VPLs and the
+//! irradiance cache are made before the render ([`BiasedPlan::build`], with
+//! a line saying how many and how much memory, stopped by a stop flag);
+//! SPPM renders in passes of its own ([`render_sppm_to_files`]).
 
 use std::path::Path;
+use std::sync::atomic::AtomicBool;
 
 use anyhow::{Result, bail};
 use clap::Args;
+use raytracer::integrator::photon::{Photon, PhotonKind};
+use raytracer::integrator::roulette::MAX_SURVIVAL;
 use raytracer::integrator::sppm::SppmSettings;
+use raytracer::integrator::vpl::Vpl;
 use raytracer::integrator::{
     InstantRadiosity, Integrator, IrradianceCache, IrradianceCacheSettings, PhotonMapping,
     PhotonSettings, VplSettings,
 };
-use raytracer::render::{RenderOptions, interrupt_flag, sppm::render_sppm};
+use raytracer::render::{RenderOptions, sppm::render_sppm};
 use raytracer::scene::Scene;
 
 use crate::options::{check_memory, create_dir};
@@ -176,11 +181,57 @@ impl BiasedArgs {
     }
 }
 
-/// Bytes a photon tracing of `paths` light paths may need: 40 bytes per
-/// photon, at most 16 photons per path kept in the estimate (Russian
-/// roulette ends almost every path before; deeper ones are rare).
-fn photon_bytes(paths: u64) -> Option<u64> {
-    paths.checked_mul(40 * 16)
+/// The photons (or VPLs) a light path leaves on average, at most: one per
+/// vertex after the light's, and a path has at most `D − 1` of them (one
+/// camera segment must still fit, `D` = `max_depth`). Paths have no other
+/// cap: without a finite `D` only Russian roulette ends a path that neither
+/// escapes nor fails to scatter (a closed white scene). Its first
+/// `max(rr_depth, 1)` vertices need no roulette; every further vertex needs
+/// one more survival, each with probability at most
+/// [`MAX_SURVIVAL`] = 0.95, so the expected count is at most
+/// `max(rr_depth, 1) + Σ_{j≥1} 0.95^j = max(rr_depth, 1) + 19` (a closed
+/// box of white walls at the default `rr_depth` 5 comes close: 24). For the
+/// millions of paths where memory
+/// matters, the total stays within a fraction of a percent of `N` times this
+/// mean (one path's count has a standard deviation below 20).
+fn vertices_per_path(max_depth: Option<u32>, rr_depth: u32) -> u64 {
+    let roulette = (MAX_SURVIVAL as f64 / (1.0 - MAX_SURVIVAL as f64)).ceil() as u64;
+    let by_roulette = (rr_depth.max(1) as u64).saturating_add(roulette);
+    match max_depth {
+        Some(d) => by_roulette.min((d as u64).saturating_sub(1).max(1)),
+        None => by_roulette,
+    }
+}
+
+/// Peak bytes per photon while a tracing is gathered: each photon is a
+/// (kind, photon) pair of `size_of` 44 bytes, held twice while the batches'
+/// vectors are concatenated (its batch's and the whole tracing's), and a
+/// vector that grows by doubling may hold up to twice what it uses: 4 × 44
+/// bytes. (Splitting them by kind afterwards, and building the maps' grids,
+/// holds less: 2 × 44 + 2 × 40, then 40 + 4 + 40.)
+const PHOTON_PEAK_BYTES: u64 = 4 * std::mem::size_of::<(PhotonKind, Photon)>() as u64;
+
+/// Peak bytes per virtual point light, by the same count (held twice, each
+/// vector up to twice its length; the scaling afterwards reuses the buffer).
+const VPL_PEAK_BYTES: u64 = 4 * std::mem::size_of::<Vpl>() as u64;
+
+/// What a tracing of `paths` light paths needs at its peak (`None`: more
+/// than 2⁶⁴ bytes), and the words that say so.
+fn tracing_memory(
+    paths: u64,
+    max_depth: Option<u32>,
+    rr_depth: u32,
+    what: &str,
+    peak_bytes: u64,
+) -> (String, Option<u64>) {
+    let per_path = vertices_per_path(max_depth, rr_depth);
+    let bytes = paths
+        .checked_mul(per_path)
+        .and_then(|n| n.checked_mul(peak_bytes));
+    (
+        format!("tracing {paths} light paths (up to {per_path} {what} each on average)"),
+        bytes,
+    )
 }
 
 /// Runs `work` on `threads` threads (rayon's global pool if `None`).
@@ -191,79 +242,133 @@ fn in_pool<R: Send>(threads: Option<usize>, work: impl FnOnce() -> R + Send) -> 
     }
 }
 
-/// Builds `photon`, `vpl` or `irradiance-cache` (their maps, lights or
-/// records made now) and prints one line on what they hold.
-pub fn build(
+/// `photon`, `vpl` or `irradiance-cache` with their settings checked, not
+/// built yet: the checks are quick, the build ([`BiasedPlan::build`]) may
+/// take long.
+#[derive(Clone, Debug)]
+pub enum BiasedPlan {
+    Photon(PhotonSettings),
+    Vpl(VplSettings),
+    IrradianceCache(IrradianceCacheSettings),
+}
+
+/// Checks the settings of `photon`, `vpl` or `irradiance-cache` and the
+/// memory their build needs (the cap doubles with `force`).
+pub fn plan(
     kind: BiasedKind,
     args: &BiasedArgs,
-    scene: &Scene,
-    options: &RenderOptions,
+    seed: u64,
     max_depth: Option<u32>,
     rr_depth: u32,
     force: bool,
-) -> Result<Box<dyn Integrator + Send>> {
-    let seed = options.seed;
-    let stop = interrupt_flag();
-    let (integrator, summary): (Box<dyn Integrator + Send>, String) = match kind {
+) -> Result<BiasedPlan> {
+    Ok(match kind {
         BiasedKind::Photon => {
             let s = args.photon(max_depth, rr_depth, seed)?;
-            check_memory(
-                &format!("{} photon paths", s.photons),
-                photon_bytes(s.photons),
-                "--photons",
-                force,
-            )?;
-            let pm = in_pool(options.threads, || PhotonMapping::build(scene, s, stop))
-                .map_err(anyhow::Error::msg)?;
-            let line = pm.summary();
-            (Box::new(pm), line)
+            let (what, bytes) =
+                tracing_memory(s.photons, max_depth, rr_depth, "photons", PHOTON_PEAK_BYTES);
+            check_memory(&what, bytes, "--photons (or --max-depth)", force)?;
+            BiasedPlan::Photon(s)
         }
         BiasedKind::Vpl => {
             let s = args.vpl(max_depth, rr_depth, seed)?;
-            check_memory(
-                &format!("{} VPL paths", s.paths),
-                s.paths.checked_mul(16 * 128),
-                "--vpl-paths",
-                force,
-            )?;
-            let ir = in_pool(options.threads, || InstantRadiosity::build(scene, s, stop))
-                .map_err(anyhow::Error::msg)?;
-            let line = ir.summary();
-            (Box::new(ir), line)
+            let (what, bytes) =
+                tracing_memory(s.paths, max_depth, rr_depth, "VPLs", VPL_PEAK_BYTES);
+            check_memory(&what, bytes, "--vpl-paths (or --max-depth)", force)?;
+            BiasedPlan::Vpl(s)
         }
         BiasedKind::IrradianceCache => {
-            let s = args.irradiance_cache(max_depth, rr_depth, seed)?;
-            let ic = in_pool(options.threads, || IrradianceCache::build(scene, s, stop))
-                .map_err(anyhow::Error::msg)?;
-            let line = ic.summary();
-            (Box::new(ic), line)
+            BiasedPlan::IrradianceCache(args.irradiance_cache(max_depth, rr_depth, seed)?)
         }
-        other => bail!("{other:?} is not built here"),
-    };
-    if options.progress {
-        println!("  {summary}");
-    }
-    Ok(integrator)
+        BiasedKind::Sppm => bail!("sppm is not built before its render: see `sppm_plan`"),
+    })
 }
 
-/// `lesson11 render --integrator sppm`: `--spp` passes, then `dir/stem.png`
-/// and `.exr` (no variance image: SPPM's pixels are not means of
-/// independent samples). An interrupted render writes its finished passes
-/// and returns an error.
+/// SPPM's settings, checked, and the memory of one pass's photons (the cap
+/// doubles with `force`).
+pub fn sppm_plan(
+    args: &BiasedArgs,
+    max_depth: Option<u32>,
+    rr_depth: u32,
+    force: bool,
+) -> Result<SppmSettings> {
+    let settings = args.sppm(max_depth, rr_depth)?;
+    let (what, bytes) = tracing_memory(
+        settings.photons,
+        settings.max_depth,
+        settings.rr_depth,
+        "photons",
+        PHOTON_PEAK_BYTES,
+    );
+    check_memory(
+        &format!("{what} per pass"),
+        bytes,
+        "--photons (or --max-depth)",
+        force,
+    )?;
+    Ok(settings)
+}
+
+impl BiasedPlan {
+    /// What the build makes ("the photon maps"), for a line saying it is under way.
+    pub fn what(&self) -> &'static str {
+        match self {
+            BiasedPlan::Photon(_) => "the photon maps",
+            BiasedPlan::Vpl(_) => "the virtual point lights",
+            BiasedPlan::IrradianceCache(_) => "the irradiance cache",
+        }
+    }
+
+    /// Builds the maps, lights or records for `scene` on `options.threads`
+    /// threads (rayon's global pool if `None`), ending early once `stop` is
+    /// set (whole batches of photon paths, whole levels of the cache: an
+    /// interrupted build is only good for an interrupted render). Returns
+    /// the integrator and one line on what it holds (printed too, if
+    /// `options.progress`).
+    pub fn build(
+        self,
+        scene: &Scene,
+        options: &RenderOptions,
+        stop: &AtomicBool,
+    ) -> Result<(Box<dyn Integrator + Send>, String)> {
+        let (integrator, summary): (Box<dyn Integrator + Send>, String) = match self {
+            BiasedPlan::Photon(s) => {
+                let pm = in_pool(options.threads, || PhotonMapping::build(scene, s, stop))
+                    .map_err(anyhow::Error::msg)?;
+                let line = pm.summary();
+                (Box::new(pm), line)
+            }
+            BiasedPlan::Vpl(s) => {
+                let ir = in_pool(options.threads, || InstantRadiosity::build(scene, s, stop))
+                    .map_err(anyhow::Error::msg)?;
+                let line = ir.summary();
+                (Box::new(ir), line)
+            }
+            BiasedPlan::IrradianceCache(s) => {
+                let ic = in_pool(options.threads, || IrradianceCache::build(scene, s, stop))
+                    .map_err(anyhow::Error::msg)?;
+                let line = ic.summary();
+                (Box::new(ic), line)
+            }
+        };
+        if options.progress {
+            println!("  {summary}");
+        }
+        Ok((integrator, summary))
+    }
+}
+
+/// `lesson11 render --integrator sppm`: `--spp` passes with settings from
+/// [`sppm_plan`], then `dir/stem.png` and `.exr` (no variance image: SPPM's
+/// pixels are not means of independent samples). An interrupted render
+/// writes its finished passes and returns an error.
 pub fn render_sppm_to_files(
     scene: &Scene,
     settings: &SppmSettings,
     options: &RenderOptions,
     dir: &Path,
     exposure: f32,
-    force: bool,
 ) -> Result<()> {
-    check_memory(
-        &format!("{} photon paths per pass", settings.photons),
-        photon_bytes(settings.photons),
-        "--photons",
-        force,
-    )?;
     create_dir(dir)?;
     let stem = format!("{}-sppm", scene.name);
     let result = render_sppm(scene, settings, options);

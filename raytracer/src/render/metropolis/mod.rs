@@ -81,6 +81,14 @@
 //! stops after its current step and is merged with the steps it made (its
 //! image is unbiased at any length); chains not yet started are left out.
 //! Interrupted during the bootstrap, the render returns no chain.
+//!
+//! # Watching
+//!
+//! [`render_metropolis_watched`] shows a watcher the film after the
+//! bootstrap and after every chain it merges (a progressive front-end's
+//! snapshots). Since chains are merged in chain order, the film after `k`
+//! chains is the same whatever the threads, and after the last one it is
+//! the render's film, bit for bit.
 
 pub mod bootstrap;
 pub mod chain;
@@ -103,7 +111,7 @@ use indicatif::ProgressBar;
 use merger::Merger;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 /// A finished (or interrupted) Metropolis render.
 #[derive(Clone, Debug)]
@@ -165,6 +173,41 @@ pub fn render_metropolis_with_stop(
     metropolis: &Metropolis,
     stop: &AtomicBool,
 ) -> MetropolisResult {
+    render_metropolis_watched(scene, integrator, options, metropolis, stop, &mut |_| {})
+}
+
+/// How far a Metropolis render has come, as [`render_metropolis_watched`]
+/// shows it: once after the bootstrap (no chain merged yet), then after
+/// every chain merged, in chain order.
+pub struct MetropolisProgress<'a> {
+    /// The merged chains, one sample per pixel each: its image is the
+    /// estimate of those chains (unbiased after any number of them).
+    pub film: &'a Film,
+    /// The bootstrap that scales every chain and started them.
+    pub bootstrap: &'a Bootstrap,
+    /// Chains merged so far (those that made at least one step).
+    pub chains: u32,
+    /// Mutations (steps) of the merged chains, and how many were accepted.
+    pub mutations: u64,
+    pub accepted: u64,
+    /// Wall-clock time since the render started (bootstrap included).
+    pub elapsed: Duration,
+}
+
+/// [`render_metropolis_with_stop`] that shows `watch` the film after the
+/// bootstrap and after every merged chain. `watch` runs while the chain
+/// workers wait to merge: it should be quick (copy the image, not encode it).
+///
+/// # Panics
+/// If `metropolis` fails [`Metropolis::check`] (front-ends check first).
+pub fn render_metropolis_watched(
+    scene: &Scene,
+    integrator: &dyn Integrator,
+    options: &RenderOptions,
+    metropolis: &Metropolis,
+    stop: &AtomicBool,
+    watch: &mut (dyn FnMut(&MetropolisProgress) + Send),
+) -> MetropolisResult {
     let start = Instant::now();
     let (w, h) = (scene.camera.width, scene.camera.height);
     let mutations = options.spp as u64 * w as u64 * h as u64;
@@ -205,7 +248,10 @@ pub fn render_metropolis_with_stop(
             ahead: 2 * workers as u64,
             merger: Mutex::new(Merger::new(w, h, options.tile_size.max(1), b.b)),
             bar: &bar,
+            watch: Mutex::new(&mut *watch),
+            start,
         };
+        job.show(&job.merger.lock().expect("a chain worker panicked"));
         rayon::scope(|s| {
             for _ in 0..workers {
                 s.spawn(|_| job.work());
@@ -252,6 +298,9 @@ struct ChainJob<'a> {
     ahead: u64,
     merger: Mutex<Merger>,
     bar: &'a ProgressBar,
+    /// Shown every merge (see [`render_metropolis_watched`]).
+    watch: Mutex<&'a mut (dyn FnMut(&MetropolisProgress) + Send)>,
+    start: Instant,
 }
 
 impl ChainJob<'_> {
@@ -278,8 +327,27 @@ impl ChainJob<'_> {
                     std::thread::sleep(std::time::Duration::from_millis(1));
                 }
                 self.run(c, &mut run);
-                run = lock().submit(c, run);
+                let mut merger = lock();
+                let merged = merger.next;
+                run = merger.submit(c, run);
+                if merger.next > merged {
+                    self.show(&merger);
+                }
             }
+        });
+    }
+
+    /// Shows the watcher the film of the chains merged so far (called with
+    /// the merger locked, so the watcher sees the merges in order).
+    fn show(&self, merger: &Merger) {
+        let mut watch = self.watch.lock().expect("a Metropolis watcher panicked");
+        watch(&MetropolisProgress {
+            film: &merger.film,
+            bootstrap: self.bootstrap,
+            chains: merger.chains,
+            mutations: merger.steps,
+            accepted: merger.accepted,
+            elapsed: self.start.elapsed(),
         });
     }
 
@@ -554,6 +622,32 @@ mod tests {
             assert_eq!(r.stats.samples, one.stats.samples);
         }
         assert!(run(2, 6).film != one.film, "the seed is ignored");
+    }
+
+    /// The watcher sees the bootstrap, then every chain in chain order, and
+    /// the last film it is shown is the render's film.
+    #[test]
+    fn the_watcher_sees_every_chain_in_order() {
+        let scene = toy_scene(4);
+        let metropolis = Metropolis {
+            chains: 5,
+            ..Metropolis::default()
+        };
+        let mut seen: Vec<(u32, u64, Film)> = Vec::new();
+        let r = render_metropolis_watched(
+            &scene,
+            &Toy::new(),
+            &options(16, 2),
+            &metropolis,
+            &AtomicBool::new(false),
+            &mut |p| seen.push((p.chains, p.mutations, p.film.clone())),
+        );
+        let chains: Vec<u32> = seen.iter().map(|s| s.0).collect();
+        assert_eq!(chains, [0, 1, 2, 3, 4, 5]);
+        assert!(seen.windows(2).all(|w| w[1].1 > w[0].1));
+        let last = seen.last().unwrap();
+        assert_eq!(last.1, r.stats.samples);
+        assert!(last.2 == r.film, "the last film shown is the render's");
     }
 
     /// A stop request half-way: the chains that ran keep their steps (the

@@ -25,6 +25,7 @@ use serde::Serialize;
 use super::job::JobSpec;
 use super::query::Query;
 use super::settings::MAX_SPP;
+use crate::integrators::IntegratorPlan;
 
 /// The parameters of a BRDF.
 pub const BRDF_PARAMS: &[&str] = &["model", "albedo", "exponent", "phong", "ior", "theta"];
@@ -259,7 +260,8 @@ pub fn sphere_job(q: &Query, choice: &BrdfChoice) -> Result<JobSpec, String> {
         kind: "brdf",
         command: format!("(the lab's BRDF ball: {}, path traced)", choice.formula),
         eyes: vec![scene],
-        integrator: Box::new(integrator),
+        build_for: None,
+        plan: IntegratorPlan::Ready(Box::new(integrator)),
         options,
     })
 }

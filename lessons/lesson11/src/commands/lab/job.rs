@@ -1,36 +1,61 @@
 //! One progressive render of a page: one image (the Render and BRDF tabs)
-//! or two (the eyes of the Stereo tab), each rendered on a thread of its own
-//! by `raytracer::render::render_pixels_watched`, with a snapshot of the
-//! picture about four times a second.
+//! or two (the eyes of the Stereo tab), on a thread of the job's own, with
+//! a snapshot of the picture about four times a second.
+//!
+//! The job's thread does everything that takes time, in this order, so
+//! that the request that started it returns at once and the next one can
+//! stop it in any phase:
+//!
+//! - **building**: photon maps, virtual point lights or irradiance records
+//!   ([`crate::integrators::BiasedPlan::build`]), ended by the job's stop
+//!   flag;
+//! - **rendering**: pixel samples by `raytracer::render::render_pixels_watched`
+//!   (one thread per eye), SPPM pass by pass
+//!   (`raytracer::render::sppm::render_sppm_watched`, a snapshot after a
+//!   pass), or Metropolis light transport chain by chain
+//!   (`raytracer::render::metropolis::render_metropolis_watched`, a
+//!   snapshot as chains are merged: `--spp` counts mutations per pixel).
 //!
 //! A job stops when its page asks for another one: the stop flag is seen
-//! before every pixel sample, and inside long samples (naive recursion),
-//! so the threads end within moments and the time they took is reported.
-//! Stopping never changes the samples: the finished picture at N spp is the
-//! picture of `lesson11 render --spp N`, bit for bit.
+//! between batches of photon paths, before every pixel sample and inside
+//! long samples (naive recursion), after every Metropolis step, so the
+//! thread ends within moments and the time it took is reported. Stopping
+//! never changes the samples: the finished picture at N spp (N passes, N
+//! mutations per pixel) is the picture of `lesson11 render --spp N`, bit for
+//! bit, since both come from the same plan ([`IntegratorPlan`]).
 
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-use std::sync::{Arc, Condvar, Mutex, MutexGuard};
+use std::sync::{Arc, Condvar, Mutex, MutexGuard, OnceLock};
 use std::time::{Duration, Instant};
 
 use raytracer::film::Image;
-use raytracer::integrator::Integrator;
-use raytracer::render::{Progress, RenderOptions, render_pixels_watched};
+use raytracer::integrator::sppm::SppmSettings;
+use raytracer::integrator::{Bdpt, Integrator};
+use raytracer::render::metropolis::{MetropolisProgress, render_metropolis_watched};
+use raytracer::render::sppm::{SppmProgress, render_sppm_watched};
+use raytracer::render::{Metropolis, Progress, RenderOptions, render_pixels_watched};
 use raytracer::scene::Scene;
 use serde::Serialize;
+
+use super::settings::one_line;
+use crate::integrators::{BiasedPlan, IntegratorPlan};
 
 /// How often a running render publishes its picture (about 4 times a second).
 pub const SNAPSHOT_EVERY: Duration = Duration::from_millis(250);
 
 /// What to render: one scene per eye (one for a plain picture), one
-/// integrator, one set of options.
+/// integrator's plan, one set of options.
 pub struct JobSpec {
     /// "render", "stereo" or "brdf": the tab that asked.
     pub kind: &'static str,
     /// The command line that renders the same pictures (shown on the page).
     pub command: String,
     pub eyes: Vec<Scene>,
-    pub integrator: Box<dyn Integrator + Send>,
+    /// The scene a build is made for, if not the first eye's (the stereo
+    /// rig's centre, as `lesson11 stereo` builds it).
+    pub build_for: Option<Scene>,
+    /// Checked, not built: the job's thread builds what takes time.
+    pub plan: IntegratorPlan,
     pub options: RenderOptions,
 }
 
@@ -38,25 +63,53 @@ pub struct JobSpec {
 #[derive(Clone, Default)]
 pub struct Snapshot {
     pub image: Option<Arc<Image>>,
-    /// Samples on the film when the picture was taken.
+    /// Samples on the film when the picture was taken (pixel passes of
+    /// SPPM, mutations of Metropolis).
     pub samples: u64,
     /// Samples per pixel of the passes complete then (every pixel has them).
     pub complete_spp: u32,
+    /// Time the render of this eye had taken then.
     pub elapsed: Duration,
-    /// It ended before computing every sample.
-    pub interrupted: bool,
     /// Samples dropped as NaN, infinite or negative.
     pub nonfinite: u64,
 }
 
+/// What a job is doing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Phase {
+    /// Photon maps, VPLs or irradiance records are being made.
+    Building,
+    Rendering,
+    Done,
+}
+
+/// What the work left for the job's thread is.
+enum Work {
+    /// Pixel samples of the integrator the job already holds.
+    Samples,
+    /// Pixel samples once the plan is built.
+    Build(BiasedPlan),
+    Sppm(SppmSettings),
+    Metropolis(Bdpt, Metropolis),
+}
+
 struct State {
     eyes: Vec<Snapshot>,
-    /// Counts the snapshots published: the page asks for a newer one.
+    /// Counts the changes the page should see (snapshots, phases, notes).
     version: u64,
-    /// Render threads still running.
-    running: usize,
+    phase: Phase,
+    /// One line on the render (the build's summary, the chains merged, …).
+    note: Option<String>,
+    /// Why the render failed (a build that could not be made).
+    error: Option<String>,
+    /// It ended before rendering everything (stopped).
+    interrupted: bool,
+    ended: Option<Instant>,
     cancelled_at: Option<Instant>,
-    /// From the stop request to the end of the last thread.
+    /// The phase the stop request came in.
+    cancelled_in: Option<Phase>,
+    /// From the stop request to the end of the job's thread.
     stopped_after: Option<Duration>,
 }
 
@@ -69,11 +122,21 @@ pub struct Job {
     pub height: u32,
     pub target_spp: u32,
     seed: u64,
-    /// The integrator (the path inspector records its samples).
-    integrator: Arc<dyn Integrator + Send>,
+    /// What `spp` counts, and what a sample is.
+    units: (&'static str, &'static str),
+    /// The integrator of pixel samples, once built (the path inspector
+    /// records its samples).
+    integrator: OnceLock<Arc<dyn Integrator + Send>>,
+    /// Why the render has no pixel samples to inspect (SPPM, Metropolis).
+    no_samples: Option<&'static str>,
+    /// What the build makes ("the photon maps"), if there is one.
+    building: Option<&'static str>,
     /// The scene of each eye.
     scenes: Vec<Arc<Scene>>,
-    stop: Arc<AtomicBool>,
+    /// See [`JobSpec::build_for`].
+    build_for: Option<Scene>,
+    started: Instant,
+    stop: AtomicBool,
     state: Mutex<State>,
     changed: Condvar,
 }
@@ -87,17 +150,30 @@ pub struct JobStatus {
     pub width: u32,
     pub height: u32,
     pub target_spp: u32,
+    /// What `spp` and `target_spp` count: "spp", "passes" (SPPM) or
+    /// "mutations per pixel" (Metropolis).
+    pub unit: &'static str,
+    /// What `samples` counts: "samples", "pixel passes" or "mutations".
+    pub samples_unit: &'static str,
     /// Average samples per pixel so far (of the eye that is behind).
     pub spp: f64,
     /// Samples per pixel that every pixel has (of the eye that is behind).
     pub complete_spp: u32,
     pub samples: u64,
     pub samples_per_second: f64,
+    /// Seconds since the job started (until it ended), its build included.
     pub elapsed: f64,
+    pub phase: Phase,
+    /// Whether there is a picture to show yet.
+    pub picture: bool,
+    pub note: Option<String>,
+    pub error: Option<String>,
     pub done: bool,
     pub interrupted: bool,
     pub nonfinite: u64,
     pub version: u64,
+    /// The phase the render was in when it was asked to stop.
+    pub cancelled_in: Option<Phase>,
     /// Milliseconds from the stop request to the end of the render, once stopped.
     pub stopped_after_ms: Option<f64>,
 }
@@ -107,11 +183,49 @@ fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
     m.lock().unwrap_or_else(|e| e.into_inner())
 }
 
+/// Why the inspector has nothing to show for SPPM.
+const SPPM_NO_SAMPLES: &str = "sppm's picture is made of passes of visible points and photons, \
+     not of pixel samples, so there are no paths of one sample to show (photon mapping's are)";
+
+/// Why the inspector has nothing to show for Metropolis.
+const MLT_NO_SAMPLES: &str = "mlt's picture is made of Markov chains that mutate paths, not of \
+     independent pixel samples, so there are no paths of one sample to show (bdpt shows the \
+     paths its chains mutate)";
+
 impl Job {
-    /// Starts the render threads (`running` counts them for the whole lab).
+    /// Starts the job's thread (`running` counts the running jobs of the
+    /// whole lab). Only quick work happens here: the thread does the rest.
     pub fn start(id: u64, spec: JobSpec, running: &Arc<AtomicUsize>) -> Result<Arc<Job>, String> {
         let scenes: Vec<Arc<Scene>> = spec.eyes.into_iter().map(Arc::new).collect();
         let first = scenes.first().ok_or("a job without a picture")?;
+        let integrator = OnceLock::new();
+        let (work, units, no_samples, building) = match spec.plan {
+            IntegratorPlan::Ready(i) => {
+                let _ = integrator.set(Arc::from(i));
+                (Work::Samples, ("spp", "samples"), None, None)
+            }
+            IntegratorPlan::Biased(plan) => {
+                let what = plan.what();
+                (Work::Build(plan), ("spp", "samples"), None, Some(what))
+            }
+            IntegratorPlan::Sppm(s) => (
+                Work::Sppm(s),
+                ("passes", "pixel passes"),
+                Some(SPPM_NO_SAMPLES),
+                None,
+            ),
+            IntegratorPlan::Metropolis(b, m) => (
+                Work::Metropolis(b, m),
+                ("mutations per pixel", "mutations"),
+                Some(MLT_NO_SAMPLES),
+                None,
+            ),
+        };
+        if no_samples.is_some() && scenes.len() != 1 {
+            return Err(
+                "sppm and mlt render one picture (the Render tab), not a stereo pair".into(),
+            );
+        }
         let job = Arc::new(Job {
             id,
             kind: spec.kind,
@@ -120,58 +234,135 @@ impl Job {
             height: first.camera.height,
             target_spp: spec.options.spp,
             seed: spec.options.seed,
-            integrator: Arc::from(spec.integrator),
+            units,
+            integrator,
+            no_samples,
+            building,
             scenes: scenes.clone(),
-            stop: Arc::new(AtomicBool::new(false)),
+            build_for: spec.build_for,
+            started: Instant::now(),
+            stop: AtomicBool::new(false),
             state: Mutex::new(State {
                 eyes: vec![Snapshot::default(); scenes.len()],
                 version: 0,
-                running: scenes.len(),
+                phase: if building.is_some() {
+                    Phase::Building
+                } else {
+                    Phase::Rendering
+                },
+                note: building.map(|what| format!("building {what}…")),
+                error: None,
+                interrupted: false,
+                ended: None,
                 cancelled_at: None,
+                cancelled_in: None,
                 stopped_after: None,
             }),
             changed: Condvar::new(),
         });
-        let integrator = job.integrator.clone();
-        for (eye, scene) in scenes.into_iter().enumerate() {
-            let (job2, integrator, options) =
-                (job.clone(), integrator.clone(), spec.options.clone());
-            running.fetch_add(1, Ordering::SeqCst);
-            let counter = running.clone();
-            let spawned = std::thread::Builder::new()
-                .name(format!("lab-render-{id}-{eye}"))
-                .spawn(move || {
-                    job2.render(eye, &scene, integrator.as_ref(), &options);
-                    counter.fetch_sub(1, Ordering::SeqCst);
-                });
-            if let Err(e) = spawned {
-                running.fetch_sub(1, Ordering::SeqCst);
-                job.cancel();
-                return Err(format!("cannot start a render thread: {e}"));
-            }
+        running.fetch_add(1, Ordering::SeqCst);
+        let (job2, counter, options) = (job.clone(), running.clone(), spec.options);
+        let spawned = std::thread::Builder::new()
+            .name(format!("lab-job-{id}"))
+            .spawn(move || {
+                let outcome = job2.run(work, options);
+                job2.finish(outcome, &counter);
+            });
+        if let Err(e) = spawned {
+            running.fetch_sub(1, Ordering::SeqCst);
+            return Err(format!("cannot start a render thread: {e}"));
         }
         Ok(job)
     }
 
-    /// One eye's render, publishing snapshots as it goes and the film at the end.
+    /// The job's thread: the build if there is one, then the render.
+    /// `Ok(true)`: every sample was rendered; `Ok(false)`: stopped before.
     ///
-    /// It runs on a thread pool of its own (one thread per core): a render
+    /// It runs on thread pools of its own (one thread per core): a render
     /// keeps every thread of its pool busy until it ends, and the global
     /// pool must stay free for the next request's scene (its BVH is built
     /// in parallel). The picture does not depend on the threads.
-    fn render(
+    fn run(&self, work: Work, options: RenderOptions) -> Result<bool, String> {
+        let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+        let options = RenderOptions {
+            threads: Some(cores),
+            ..options
+        };
+        let integrator = match work {
+            Work::Sppm(settings) => return Ok(self.render_sppm(&settings, &options)),
+            Work::Metropolis(bdpt, metropolis) => {
+                return Ok(self.render_metropolis(&bdpt, &metropolis, &options));
+            }
+            Work::Samples => match self.integrator.get() {
+                Some(i) => i.clone(),
+                None => return Err("the render has no integrator".into()),
+            },
+            Work::Build(plan) => {
+                let scene = self.build_for.as_ref().unwrap_or(&self.scenes[0]);
+                let (integrator, summary) = plan
+                    .build(scene, &options, &self.stop)
+                    .map_err(|e| one_line(&e))?;
+                if self.stopped() {
+                    // The summary says how far the build came.
+                    self.update(|s| s.note = Some(summary));
+                    return Ok(false);
+                }
+                let integrator: Arc<dyn Integrator + Send> = Arc::from(integrator);
+                let _ = self.integrator.set(integrator.clone());
+                self.update(|s| {
+                    s.phase = Phase::Rendering;
+                    s.note = Some(summary);
+                });
+                integrator
+            }
+        };
+        Ok(self.render_eyes(integrator.as_ref(), &options))
+    }
+
+    fn stopped(&self) -> bool {
+        self.stop.load(Ordering::Relaxed)
+    }
+
+    /// Every eye at once, each on a thread (and a pool) of its own; true if
+    /// every one rendered every sample.
+    fn render_eyes(&self, integrator: &dyn Integrator, options: &RenderOptions) -> bool {
+        if let [scene] = self.scenes.as_slice() {
+            return self.render_eye(0, scene, integrator, options);
+        }
+        std::thread::scope(|s| {
+            let threads: Vec<_> = self
+                .scenes
+                .iter()
+                .enumerate()
+                .map(|(eye, scene)| {
+                    std::thread::Builder::new()
+                        .name(format!("lab-render-{}-{eye}", self.id))
+                        .spawn_scoped(s, move || self.render_eye(eye, scene, integrator, options))
+                        .map_err(|_| (eye, scene))
+                })
+                .collect();
+            let complete: Vec<bool> = threads
+                .into_iter()
+                .map(|t| match t {
+                    Ok(thread) => thread.join().unwrap_or(false),
+                    // No thread to be had: render that eye here.
+                    Err((eye, scene)) => self.render_eye(eye, scene, integrator, options),
+                })
+                .collect();
+            complete.into_iter().all(|c| c)
+        })
+    }
+
+    /// One eye's render, publishing snapshots as it goes and the film at
+    /// the end; true if it rendered every sample.
+    fn render_eye(
         &self,
         eye: usize,
         scene: &Scene,
         integrator: &dyn Integrator,
         options: &RenderOptions,
-    ) {
+    ) -> bool {
         let (w, h) = (scene.camera.width, scene.camera.height);
-        let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
-        let options = &RenderOptions {
-            threads: Some(cores),
-            ..options.clone()
-        };
         let mut last: Option<Instant> = None;
         let mut watch = |p: &Progress| {
             if last.is_some_and(|t| t.elapsed() < SNAPSHOT_EVERY) {
@@ -185,9 +376,9 @@ impl Job {
                     samples: p.film.total_samples(),
                     complete_spp: p.complete_spp,
                     elapsed: p.elapsed,
-                    interrupted: false,
                     nonfinite: p.film.nonfinite_count(),
                 },
+                None,
             );
         };
         let result = render_pixels_watched(
@@ -210,25 +401,167 @@ impl Job {
                 samples: result.stats.samples,
                 complete_spp: complete,
                 elapsed: result.stats.elapsed,
-                interrupted: result.stats.interrupted,
                 nonfinite: result.stats.nonfinite,
             },
+            None,
         );
-        let mut state = lock(&self.state);
-        state.running -= 1;
-        if state.running == 0 {
-            state.stopped_after = state.cancelled_at.map(|t| t.elapsed());
+        !result.stats.interrupted
+    }
+
+    /// SPPM, a snapshot after a pass (at most about 4 a second) and the
+    /// image of the finished passes at the end; true if every pass ran.
+    fn render_sppm(&self, settings: &SppmSettings, options: &RenderOptions) -> bool {
+        let scene = &self.scenes[0];
+        let pixels = self.width as u64 * self.height as u64;
+        let note = |passes: u32| {
+            format!(
+                "SPPM: {passes} of {} passes of {} photon paths",
+                options.spp, settings.photons
+            )
+        };
+        let mut last: Option<Instant> = None;
+        let mut watch = |p: &SppmProgress| {
+            if last.is_some_and(|t| t.elapsed() < SNAPSHOT_EVERY) {
+                return;
+            }
+            last = Some(Instant::now());
+            self.publish(
+                0,
+                Snapshot {
+                    image: Some(Arc::new(p.image())),
+                    samples: pixels * p.passes as u64,
+                    complete_spp: p.passes,
+                    elapsed: p.elapsed,
+                    nonfinite: 0,
+                },
+                Some(note(p.passes)),
+            );
+        };
+        let r = render_sppm_watched(scene, settings, options, &self.stop, &mut watch);
+        if r.passes > 0 {
+            let line = format!(
+                "{}, radius {:.4} → {:.4}, peak {:.1} MiB",
+                note(r.passes),
+                r.initial_radius,
+                r.final_radius,
+                r.peak_bytes as f64 / (1 << 20) as f64
+            );
+            self.publish(
+                0,
+                Snapshot {
+                    image: Some(Arc::new(r.image)),
+                    samples: r.stats.samples,
+                    complete_spp: r.passes,
+                    elapsed: r.stats.elapsed,
+                    nonfinite: 0,
+                },
+                Some(line),
+            );
         }
+        !r.stats.interrupted
+    }
+
+    /// Metropolis light transport over `bdpt`: a snapshot as chains are
+    /// merged (at most about 4 a second; the bootstrap comes first and
+    /// shows no picture) and the film of the merged chains at the end; true
+    /// if every mutation was made.
+    fn render_metropolis(
+        &self,
+        bdpt: &Bdpt,
+        metropolis: &Metropolis,
+        options: &RenderOptions,
+    ) -> bool {
+        let scene = &self.scenes[0];
+        let pixels = (self.width as u64 * self.height as u64).max(1);
+        let note = |p: &MetropolisProgress| {
+            format!(
+                "Metropolis: b = {:.5} ± {:.2} % from {} bootstrap paths; {} of {} chains merged, \
+                 acceptance {:.0} %",
+                p.bootstrap.b,
+                100.0 * p.bootstrap.relative_error(),
+                p.bootstrap.paths,
+                p.chains,
+                metropolis.chains,
+                100.0 * p.accepted as f64 / p.mutations.max(1) as f64
+            )
+        };
+        let mut last: Option<Instant> = None;
+        let mut final_note = None;
+        let mut watch = |p: &MetropolisProgress| {
+            final_note = Some(note(p));
+            if p.chains == 0 {
+                // The bootstrap is done, the chains start.
+                self.update(|s| s.note = final_note.clone());
+                return;
+            }
+            if last.is_some_and(|t| t.elapsed() < SNAPSHOT_EVERY) {
+                return;
+            }
+            last = Some(Instant::now());
+            self.publish(
+                0,
+                Snapshot {
+                    image: Some(Arc::new(p.film.image())),
+                    samples: p.mutations,
+                    complete_spp: (p.mutations / pixels) as u32,
+                    elapsed: p.elapsed,
+                    nonfinite: 0,
+                },
+                final_note.clone(),
+            );
+        };
+        let r = render_metropolis_watched(scene, bdpt, options, metropolis, &self.stop, &mut watch);
+        if r.chains > 0 {
+            self.publish(
+                0,
+                Snapshot {
+                    image: Some(Arc::new(r.film.image())),
+                    samples: r.stats.samples,
+                    complete_spp: if r.stats.interrupted {
+                        (r.stats.samples / pixels) as u32
+                    } else {
+                        options.spp
+                    },
+                    elapsed: r.stats.elapsed,
+                    nonfinite: r.stats.nonfinite,
+                },
+                final_note,
+            );
+        }
+        !r.stats.interrupted
+    }
+
+    /// The end of the job's thread: the lab's count first (a page that sees
+    /// the job done sees it no longer running), then the state.
+    fn finish(&self, outcome: Result<bool, String>, running: &AtomicUsize) {
+        running.fetch_sub(1, Ordering::SeqCst);
+        self.update(|s| {
+            s.phase = Phase::Done;
+            s.ended = Some(Instant::now());
+            match outcome {
+                Ok(complete) => s.interrupted = !complete,
+                Err(e) => s.error = Some(e),
+            }
+            s.stopped_after = s.cancelled_at.map(|t| t.elapsed());
+        });
+    }
+
+    /// Changes the state as `change` says and tells the waiting pages.
+    fn update(&self, change: impl FnOnce(&mut State)) {
+        let mut state = lock(&self.state);
+        change(&mut state);
+        state.version += 1;
         drop(state);
         self.changed.notify_all();
     }
 
-    fn publish(&self, eye: usize, snapshot: Snapshot) {
-        let mut state = lock(&self.state);
-        state.eyes[eye] = snapshot;
-        state.version += 1;
-        drop(state);
-        self.changed.notify_all();
+    fn publish(&self, eye: usize, snapshot: Snapshot, note: Option<String>) {
+        self.update(|s| {
+            s.eyes[eye] = snapshot;
+            if note.is_some() {
+                s.note = note;
+            }
+        });
     }
 
     /// The scene of a plain render (the Render tab), which the inspector traces.
@@ -236,32 +569,48 @@ impl Job {
         (self.kind == "render").then(|| self.scenes[0].clone())
     }
 
-    /// The integrator that renders the picture.
-    pub fn integrator(&self) -> &dyn Integrator {
-        self.integrator.as_ref()
+    /// The integrator whose samples make the picture, or why the inspector
+    /// cannot have it (SPPM and Metropolis have none; a build is under way).
+    pub fn integrator(&self) -> Result<Arc<dyn Integrator + Send>, String> {
+        if let Some(i) = self.integrator.get() {
+            return Ok(i.clone());
+        }
+        if let Some(reason) = self.no_samples {
+            return Err(reason.into());
+        }
+        let what = self.building.unwrap_or("its integrator");
+        Err(if lock(&self.state).phase == Phase::Done {
+            format!("the render stopped before it had built {what}: start it again")
+        } else {
+            format!(
+                "the render is still building {what}: the inspector can trace a sample once that is done"
+            )
+        })
     }
 
     pub fn seed(&self) -> u64 {
         self.seed
     }
 
-    /// Asks the render threads to stop (they end within moments).
+    /// Asks the job's thread to stop, whatever it is doing (it ends within
+    /// moments).
     pub fn cancel(&self) {
         let mut state = lock(&self.state);
-        if state.cancelled_at.is_none() && state.running > 0 {
+        if state.cancelled_at.is_none() && state.phase != Phase::Done {
             state.cancelled_at = Some(Instant::now());
+            state.cancelled_in = Some(state.phase);
         }
         self.stop.store(true, Ordering::SeqCst);
     }
 
-    /// Waits until a snapshot newer than `version` is out, the job has
-    /// ended, or `timeout` passed (a long poll: the page hears of a new
-    /// picture at once, without asking over and over).
+    /// Waits until a change newer than `version` is out, the job has ended,
+    /// or `timeout` passed (a long poll: the page hears of a new picture at
+    /// once, without asking over and over).
     pub fn wait_newer(&self, version: u64, timeout: Duration) {
         let state = lock(&self.state);
-        let _ = self
-            .changed
-            .wait_timeout_while(state, timeout, |s| s.version <= version && s.running > 0);
+        let _ = self.changed.wait_timeout_while(state, timeout, |s| {
+            s.version <= version && s.phase != Phase::Done
+        });
     }
 
     /// The latest pictures, one per eye (`None` before the first snapshot).
@@ -284,13 +633,17 @@ impl Job {
             .cloned()
             .unwrap_or_default();
         let samples: u64 = state.eyes.iter().map(|e| e.samples).sum();
-        let elapsed = state
+        let rendering = state
             .eyes
             .iter()
             .map(|e| e.elapsed)
             .max()
             .unwrap_or_default()
             .as_secs_f64();
+        let elapsed = state
+            .ended
+            .unwrap_or_else(Instant::now)
+            .saturating_duration_since(self.started);
         JobStatus {
             id: self.id,
             kind: self.kind,
@@ -298,19 +651,26 @@ impl Job {
             width: self.width,
             height: self.height,
             target_spp: self.target_spp,
+            unit: self.units.0,
+            samples_unit: self.units.1,
             spp: behind.samples as f64 / pixels,
             complete_spp: behind.complete_spp,
             samples,
-            samples_per_second: if elapsed > 0.0 {
-                samples as f64 / elapsed
+            samples_per_second: if rendering > 0.0 {
+                samples as f64 / rendering
             } else {
                 0.0
             },
-            elapsed,
-            done: state.running == 0,
-            interrupted: state.eyes.iter().any(|e| e.interrupted),
+            elapsed: elapsed.as_secs_f64(),
+            phase: state.phase,
+            picture: state.eyes.iter().any(|e| e.image.is_some()),
+            note: state.note.clone(),
+            error: state.error.clone(),
+            done: state.phase == Phase::Done,
+            interrupted: state.interrupted,
             nonfinite: state.eyes.iter().map(|e| e.nonfinite).sum(),
             version: state.version,
+            cancelled_in: state.cancelled_in,
             stopped_after_ms: state.stopped_after.map(|d| d.as_secs_f64() * 1e3),
         }
     }

@@ -30,7 +30,7 @@ struct Page {
 pub struct Pages {
     pages: Mutex<HashMap<String, Page>>,
     next_id: AtomicU64,
-    /// Render threads running in the whole lab.
+    /// Renders (their jobs' threads) running in the whole lab.
     pub running: Arc<AtomicUsize>,
 }
 

@@ -14,7 +14,7 @@
 //! | `POST /api/stereo?page=P&…&separation=…&convergence=…&toe-in=1` | starts both eyes |
 //! | `POST /api/brdf-sphere?page=P&model=…&spp=…` | starts a ball of that BRDF |
 //! | `POST /api/stop?page=P` | stops the page's render |
-//! | `GET /api/status?page=P&after=V` | the render's progress, once a snapshot newer than V is out (at most 2 s) |
+//! | `GET /api/status?page=P&after=V` | the render's phase (building, rendering, done) and progress, once a change newer than V is out (at most 2 s) |
 //! | `GET /api/image.png?page=P&exposure=E` / `image.exr?page=P&eye=0` | the picture so far |
 //! | `GET /api/stereo.png?page=P&mode=…&desaturate=…&exposure=E` | the pair, composed |
 //! | `GET /api/brdf?model=…&albedo=…&exponent=…&theta=…` | lobe, albedo, verdict |
@@ -249,7 +249,8 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
                     setup.options_line
                 ),
                 eyes: vec![setup.scene],
-                integrator: setup.integrator,
+                build_for: None,
+                plan: setup.plan,
                 options: setup.options,
             };
             started(state.pages.start(q.page()?, spec)?)
@@ -390,6 +391,9 @@ struct Catalogue {
     scenes: Vec<super::settings::SceneEntry>,
     /// `[name, what it does]` of every `--integrator` value.
     integrators: Vec<[String; 2]>,
+    /// The integrators that render whole images (SPPM, Metropolis): the
+    /// Render tab has them, the Stereo tab (pixel samples) not.
+    whole_image: Vec<String>,
     composites: Vec<&'static str>,
     max_pixels: u64,
     max_spp: u32,
@@ -407,6 +411,12 @@ fn catalogue(state: &State) -> Catalogue {
                     v.get_help().map(|h| h.to_string()).unwrap_or_default(),
                 ]
             })
+            .collect(),
+        whole_image: IntegratorKind::value_variants()
+            .iter()
+            .filter(|k| !k.renders_pixel_samples())
+            .filter_map(|k| k.to_possible_value())
+            .map(|v| v.get_name().to_string())
             .collect(),
         composites: stereo::composite_names(),
         max_pixels: MAX_PIXELS,
@@ -435,6 +445,7 @@ fn paths(state: &State, q: &Query) -> Result<Reply, String> {
     let Some(scene) = job.scene() else {
         return Err("the inspector shows the paths of the Render tab's picture".into());
     };
-    let record = super::paths::record(job.integrator(), &scene, [x, y], sample, job.seed())?;
+    let integrator = job.integrator()?;
+    let record = super::paths::record(integrator.as_ref(), &scene, [x, y], sample, job.seed())?;
     Ok(Reply::json(&record))
 }

@@ -2,9 +2,11 @@
 //! `lesson11 render` reads its command line: the query's parameters become
 //! that command's options (`spp=64` is `--spp 64`) and go through the same
 //! parser and the same checks ([`RenderArgs`], `SceneArgs::load`,
-//! `IntegratorKind::build`). So the lab refuses what the command refuses,
-//! with the same reason, and renders what it renders: the lab's picture at
-//! N spp is `lesson11 render`'s picture with the same options, bit for bit.
+//! `IntegratorKind::plan`). So the lab refuses what the command refuses,
+//! with the same reason, and renders what it renders, from the same plan:
+//! the lab's picture at N spp is `lesson11 render`'s picture with the same
+//! options, bit for bit. What takes long (photon maps and the like) is
+//! built later, on the render's own thread (`job.rs`).
 //!
 //! The lab adds caps of its own (it serves a page, not a batch job): at most
 //! [`MAX_PIXELS`] pixels and [`MAX_SPP`] samples per pixel, so that a few
@@ -13,13 +15,13 @@
 use std::path::{Path, PathBuf};
 
 use clap::{Args, FromArgMatches};
-use raytracer::integrator::Integrator;
 use raytracer::render::RenderOptions;
 use raytracer::scene::{BUILTIN_SCENES, Scene};
 use serde::Serialize;
 
 use super::query::Query;
 use crate::commands::render::RenderArgs;
+use crate::integrators::IntegratorPlan;
 
 /// The most pixels of one picture (one eye of a stereo pair): 0.48
 /// megapixels, 800×600 (a film takes about 100 bytes a pixel).
@@ -44,11 +46,11 @@ pub const RENDER_PARAMS: &[&str] = &[
     "ao-distance",
 ];
 
-/// A checked render: what to render, how, and the command line that
-/// renders the same picture.
+/// A checked render: what to render, how (checked, not built yet), and the
+/// command line that renders the same picture.
 pub struct RenderSetup {
     pub scene: Scene,
-    pub integrator: Box<dyn Integrator + Send>,
+    pub plan: IntegratorPlan,
     pub options: RenderOptions,
     /// The options of `lesson11 render` (and of `lesson11 stereo`) that give
     /// the same picture, e.g. `--scene cornell --integrator path --spp 64`.
@@ -176,9 +178,9 @@ pub fn render_setup(
     options.progress = false;
     // The checks of `lesson11 render`; naive recursion's ray budget is for
     // batch renders (a lab render can be stopped at any time), hence `force`.
-    let integrator = args
+    let plan = args
         .integrator
-        .build(&args.integrator_args, &scene, &options, true)
+        .plan(&args.integrator_args, &scene, &options, true)
         .map_err(|e| one_line(&e))?;
     let options_line = words
         .iter()
@@ -190,7 +192,7 @@ pub fn render_setup(
         .join(" ");
     Ok(RenderSetup {
         scene,
-        integrator,
+        plan,
         options,
         options_line,
     })
@@ -241,7 +243,10 @@ mod tests {
         let s = setup("spp=8&seed=3&max-depth=-1&width=32&height=24").unwrap();
         assert_eq!((s.options.spp, s.options.seed), (8, 3));
         assert_eq!((s.scene.camera.width, s.scene.camera.height), (32, 24));
-        assert_eq!(s.integrator.name(), "path");
+        let IntegratorPlan::Ready(integrator) = &s.plan else {
+            panic!("path tracing is ready at once")
+        };
+        assert_eq!(integrator.name(), "path");
         assert_eq!(
             s.options_line,
             "--scene cornell --integrator path --height 24 --max-depth -1 --seed 3 --spp 8 --width 32"

@@ -11,7 +11,8 @@ use raytracer::stereo::{Composite, StereoRig};
 
 use super::job::JobSpec;
 use super::query::Query;
-use super::settings::{SceneFolder, render_setup};
+use super::settings::{SceneFolder, one_line, render_setup};
+use crate::integrators::IntegratorPlan;
 
 /// The parameters of the rig.
 pub const RIG_PARAMS: &[&str] = &["separation", "convergence", "toe-in"];
@@ -23,6 +24,8 @@ pub const COMPOSITE_PARAMS: &[&str] = &["mode", "desaturate"];
 /// tracing unless it says otherwise).
 pub fn stereo_job(q: &Query, folder: &SceneFolder) -> Result<JobSpec, String> {
     let setup = render_setup(q, folder, "stereo", "path")?;
+    // `lesson11 stereo` renders pixel samples only.
+    setup.plan.check_pixel_samples().map_err(|e| one_line(&e))?;
     let convergence = match q.get("convergence") {
         None | Some("") => None,
         Some(_) => Some(q.in_range("convergence", 1.0, 1e-3..=1e4)?),
@@ -52,11 +55,15 @@ pub fn stereo_job(q: &Query, folder: &SceneFolder) -> Result<JobSpec, String> {
         command += " --toe-in";
     }
     command += " --lf-views 0";
+    // A build (the irradiance cache) is made for the rig's centre, as
+    // `lesson11 stereo` makes it.
+    let build_for = matches!(setup.plan, IntegratorPlan::Biased(_)).then_some(setup.scene);
     Ok(JobSpec {
         kind: "stereo",
         command,
         eyes,
-        integrator: setup.integrator,
+        build_for,
+        plan: setup.plan,
         options: setup.options,
     })
 }

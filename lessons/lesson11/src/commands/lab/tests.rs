@@ -1,6 +1,7 @@
 //! The lab in process: the path inspector's endpoint answers the recorded
-//! sample with every vertex projected into the picture, and a page that
-//! stops asking has its render stopped.
+//! sample with every vertex projected into the picture, a page that stops
+//! asking has its render stopped, and a biased integrator is built on its
+//! render's thread.
 
 use std::io::{Read, Write};
 use std::net::{SocketAddr, TcpStream};
@@ -99,5 +100,46 @@ fn the_render_of_a_closed_page_stops() {
     };
     assert!(done("gone"), "the render of the page that went away stops");
     assert!(!done("here"), "the render of the page that asks goes on");
+    lab.stop();
+}
+
+/// Photon mapping's maps are built on the render's own thread: the request
+/// that starts it answers at once, in the build phase; the inspector asks
+/// to wait until the maps are built, then records photon mapping's samples.
+#[test]
+fn a_biased_integrator_is_built_on_the_jobs_thread() {
+    let lab = start();
+    let render = "/api/render?page=b&width=16&height=16&spp=1&integrator=photon";
+    let (status, body) = request(&lab, "POST", render);
+    assert_eq!(status, 200, "{body}");
+    let s: Value = serde_json::from_str(&body).unwrap();
+    assert_eq!(s["phase"], "building", "{s}");
+    let inspect = "/api/paths?page=b&x=8&y=8&sample=0";
+    let (status, body) = request(&lab, "GET", inspect);
+    if status != 200 {
+        assert_eq!(status, 400, "{body}");
+        assert!(body.contains("still building the photon maps"), "{body}");
+    }
+    let end = std::time::Instant::now() + Duration::from_secs(60);
+    loop {
+        let (_, body) = request(&lab, "GET", "/api/status?page=b");
+        let s: Value = serde_json::from_str(&body).unwrap();
+        if s["job"]["done"] == true {
+            assert_eq!(s["job"]["interrupted"], false, "{s}");
+            assert!(
+                s["job"]["note"]
+                    .as_str()
+                    .unwrap()
+                    .starts_with("photon maps: ")
+            );
+            break;
+        }
+        assert!(std::time::Instant::now() < end, "not done: {s}");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let (status, body) = request(&lab, "GET", inspect);
+    assert_eq!(status, 200, "{body}");
+    let r: Value = serde_json::from_str(&body).unwrap();
+    assert_eq!(r["integrator"], "photon");
     lab.stop();
 }

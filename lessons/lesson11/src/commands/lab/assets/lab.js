@@ -152,7 +152,8 @@ const imageOf = { render: 'r-image', stereo: 's-image', brdf: 'b-image' };
 // (no flicker); one load at a time.
 function loadPicture() {
   const job = state.job;
-  if (!job || job.version === 0) return;
+  // A build (photon maps, …) or Metropolis's bootstrap shows no picture yet.
+  if (!job || job.version === 0 || !job.picture) return;
   if (state.loading) { state.again = true; return; }
   state.loading = true;
   const img = new Image();
@@ -180,16 +181,22 @@ function fmt(x) {
   return x.toFixed(0);
 }
 
+const escapeHtml = (t) => String(t).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' }[c]));
+
 function updateStats() {
   const job = state.job;
   if (!job) return;
   const spp = job.spp >= 10 ? job.spp.toFixed(0) : job.spp.toFixed(1);
-  let text = `<strong>${spp}</strong> of ${job.target_spp} spp · ${fmt(job.samples_per_second)} samples/s · ${job.elapsed.toFixed(1)} s · ${job.width}×${job.height}`;
-  if (job.done) text += job.interrupted ? ' · stopped' : ' · done';
+  // spp counts passes for SPPM and mutations per pixel for Metropolis.
+  let text = `<strong>${spp}</strong> of ${job.target_spp} ${job.unit || 'spp'} · ${fmt(job.samples_per_second)} ${job.samples_unit || 'samples'}/s · ${job.elapsed.toFixed(1)} s · ${job.width}×${job.height}`;
+  if (job.phase === 'building') text += ' · building';
+  if (job.done) text += job.error ? ' · failed' : job.interrupted ? ' · stopped' : ' · done';
   if (job.nonfinite > 0) text += ` · ${job.nonfinite} NaN/negative samples dropped`;
-  const ids = { render: ['r-stats', 'r-command'], stereo: ['s-stats', 's-command'], brdf: ['b-stats', null] };
-  const [stats, command] = ids[job.kind];
+  if (job.note) text += `<br><span class="note">${escapeHtml(job.note)}</span>`;
+  const ids = { render: ['r-stats', 'r-command', 'r-error'], stereo: ['s-stats', 's-command', 's-error'], brdf: ['b-stats', null, 'b-error'] };
+  const [stats, command, error] = ids[job.kind];
   $(stats).innerHTML = text;
+  if (job.error) showError(error, job.error);
   if (command) {
     let line = job.command;
     if (job.kind === 'render' && Number($('r-exposure').value) !== 0) line += ` --exposure ${$('r-exposure').value}`;
@@ -426,7 +433,9 @@ async function setup() {
   fill($('s-scene'), scenes, 'stereo');
   const integrators = r.body.integrators.map((i) => [i[0], i[0]]);
   fill($('r-integrator'), integrators, 'path');
-  fill($('s-integrator'), integrators, 'path');
+  // SPPM and Metropolis render whole images, not the pixel samples of a stereo pair.
+  const whole = r.body.whole_image || [];
+  fill($('s-integrator'), integrators.filter(([name]) => !whole.includes(name)), 'path');
   fill($('s-mode'), r.body.composites.map((c) => [c, c]), 'red-cyan');
   for (const el of document.querySelectorAll('select, input')) {
     const title = (r.body.scenes.find((s) => s.name === el.value) || {}).description;
