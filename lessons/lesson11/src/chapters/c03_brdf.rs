@@ -1,4 +1,5 @@
-//! Chapter 3 · BRDFs: lobes in the plane of incidence, directional albedo
+//! Chapter 3 · BRDFs: the hemisphere at a point (the lecture's figure of
+//! n, ω_i, ω_o, θ_i and dω_i), lobes in the plane of incidence, directional albedo
 //! (energy conservation) of normalized and unnormalized Phong, reciprocity,
 //! and a gallery of the lecture's BRDFs, path traced.
 
@@ -9,7 +10,10 @@ use raytracer::math::{Color, Vec2, Vec3A};
 use raytracer::sampling::Sampler;
 
 use crate::page::{Figure, Section, Table};
-use crate::plots::{Chart, Scale, Series, polar_svg};
+use crate::plots::{
+    Chart, HEMISPHERE_LANGS, Hemisphere, HemisphereWords, Scale, Series, hemisphere_svg,
+    polar_svg,
+};
 use crate::tour::{Chapter, ChapterOutput, Quality, Tour};
 
 pub const CHAPTER: Chapter = Chapter::new(
@@ -26,8 +30,9 @@ fn render(tour: &Tour) -> Result<Section> {
         "A BRDF f_r(x, ω_i, ω_o) says how much of the light arriving at x from direction ω_i is \
          reflected towards ω_o. Both directions point away from x: ω_o towards the viewer, ω_i \
          towards where the light comes from (the lecture's ω_i points the other way, into the \
-         surface, hence its factor (−ω_i·n) = cos θ_i). The lecture calls f_r \"how likely\" light \
-         from ω_i is reflected towards ω_o: a good intuition, but exactly it is a density over \
+         surface, hence its factor (−ω_i·n) = cos θ_i); the first figure shows them on the \
+         hemisphere above x. The lecture calls f_r \"how likely\" light from ω_i is reflected \
+         towards ω_o: a good intuition, but exactly it is a density over \
          directions, in sr⁻¹, the reflected radiance per unit of light arriving from a small cone \
          dω_i, and it can exceed 1 (Phong with n = 100 reaches 11.09 in the reciprocity table \
          below, and (n+2)/2π ≈ 16.2 at its peak). What may not exceed 1 is its integral, the \
@@ -40,6 +45,7 @@ fn render(tour: &Tour) -> Result<Section> {
          Lambert, normalized Phong with n = 1, 10, 100 and 1000, a perfect mirror and glass, path \
          traced: as n grows the highlight narrows and brightens.",
     )?;
+    hemisphere(&mut s, tour)?;
     plots_and_tables(&mut s, tour)?;
     let (scene, options) = tour.scene("brdf-gallery", 32)?;
     let pt = PathTracer::default();
@@ -55,6 +61,31 @@ fn render(tour: &Tour) -> Result<Section> {
     Ok(s.section)
 }
 
+/// The lecture's figure of the hemisphere at x, one SVG per language of the
+/// slides (`hemisphere-en.svg`, `hemisphere-bg.svg`); the page shows the English one.
+fn hemisphere(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
+    let h = Hemisphere::default();
+    for lang in HEMISPHERE_LANGS {
+        let words = HemisphereWords::for_lang(lang).expect("the figure's languages have words");
+        raytracer::film::output::write_file(
+            c.dir.join(format!("hemisphere-{lang}.svg")),
+            hemisphere_svg(&h, &words),
+        )?;
+    }
+    c.section.figures.push(Figure::plot(
+        &tour.out,
+        &c.dir.join("hemisphere-en.svg"),
+        &format!(
+            "The hemisphere Ω above a point x, drawn from the directions themselves: both unit \
+             vectors leave x, ω_i towards the light ({}° from the normal n) and ω_o towards the \
+             viewer ({}°); θ_i is the angle between ω_i and n, cos θ_i = ω_i·n; dω_i is a small \
+             cone of directions around ω_i. Dashed: the way the light travels, −ω_i, the \
+             lecture's ω_i. With Bulgarian labels: hemisphere-bg.svg.",
+            h.theta_i_deg, h.theta_o_deg
+        ),
+    ));
+    Ok(())
+}
 
 fn phong(n: f32) -> Brdf {
     Brdf::Phong(Phong {

@@ -195,10 +195,7 @@ pub fn check_parallel(decks: &[Deck]) -> Result<()> {
 pub fn build(args: &SlidesArgs) -> Result<Vec<PathBuf>> {
     let src = source_dir(args.src.as_deref())?;
     let decks = load_decks(&src, &args.lang)?;
-    let mut pictures: Vec<String> = decks
-        .iter()
-        .flat_map(|d| d.images().into_iter().map(String::from))
-        .collect();
+    let mut pictures: Vec<String> = decks.iter().flat_map(|d| d.files()).collect();
     pictures.sort();
     pictures.dedup();
 

@@ -1,6 +1,8 @@
-//! Plots as SVG files: line charts (linear or log–log axes), stacked bars and
-//! polar plots of BRDF lobes. SVG needs no fonts or libraries at build time and every browser
-//! shows it, so the lesson's page stays self-contained. One plot is an image
+//! Plots as SVG files: line charts (linear or log–log axes), stacked bars,
+//! polar plots of BRDF lobes and the lecture's figure of the hemisphere at a
+//! point (in each language of the slides). SVG needs no fonts or libraries at
+//! build time and every browser shows it, so the lesson's page stays
+//! self-contained. One plot is an image
 //! instead, because it lies over a rendered picture pixel for pixel: the tile
 //! z-map of two renders. Path figures are SVG drawn over a render, which they
 //! embed.
@@ -8,6 +10,7 @@
 mod bars;
 mod chart;
 mod data_uri;
+mod hemisphere;
 mod path_figure;
 mod polar;
 mod series;
@@ -15,6 +18,7 @@ mod zmap;
 
 pub use bars::Bars;
 pub use chart::{Chart, Scale};
+pub use hemisphere::{Hemisphere, HemisphereWords, LANGS as HEMISPHERE_LANGS, hemisphere_svg};
 pub use path_figure::{Labels, in_picture, path_figure_svg, pick_sample};
 pub use polar::polar_svg;
 pub use series::Series;

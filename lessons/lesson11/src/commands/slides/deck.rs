@@ -3,7 +3,9 @@
 //! One file per chapter of the tour (`01-stereo.md` … `09-biased.md`);
 //! slides are separated by a line `---`; each slide starts with `# Title`.
 //! A line of images (`![caption](02-gi-effects/cornell-path.png) …`, paths
-//! relative to `out/lesson11`) becomes the slide's figures; the lines
+//! relative to `out/lesson11`; `{lang}` in a path stands for the deck's
+//! language, for a figure drawn with words in each language, e.g.
+//! `03-brdf/hemisphere-{lang}.svg`) becomes the slide's figures; the lines
 //! `> command: lesson11 …` and `> exercise: 9` say which command renders the
 //! picture and which exercise goes with it. Everything else is Markdown with
 //! `$…$` and `$$…$$` formulas.
@@ -16,8 +18,16 @@ use anyhow::{Context, Result, bail};
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Image {
     pub caption: String,
-    /// Relative to the tour's output folder, e.g. `05-path/cornell-mis.png`.
+    /// Relative to the tour's output folder, e.g. `05-path/cornell-mis.png`,
+    /// as written: the same in every language (see [`Image::file`]).
     pub path: String,
+}
+
+impl Image {
+    /// The file a deck in `lang` shows: the path with `{lang}` replaced.
+    pub fn file(&self, lang: &str) -> String {
+        self.path.replace("{lang}", lang)
+    }
 }
 
 /// One slide.
@@ -84,10 +94,19 @@ impl Deck {
         self.chapters.iter().flat_map(|c| &c.slides)
     }
 
-    /// Every image path in slide order (repeats kept).
+    /// Every image path as written, in slide order (repeats kept): the same
+    /// in every language.
+    #[cfg(test)]
     pub fn images(&self) -> Vec<&str> {
         self.slides()
             .flat_map(|s| s.images.iter().map(|i| i.path.as_str()))
+            .collect()
+    }
+
+    /// Every file this deck's language shows, in slide order (repeats kept).
+    pub fn files(&self) -> Vec<String> {
+        self.slides()
+            .flat_map(|s| s.images.iter().map(|i| i.file(&self.lang)))
             .collect()
     }
 }

@@ -172,6 +172,7 @@ fn slide_html(
     id: usize,
     total: usize,
     words: &Words,
+    lang: &str,
     img_prefix: &str,
 ) -> Result<()> {
     let body = markdown_to_html(&slide.body).with_context(|| slide.origin.clone())?;
@@ -198,7 +199,7 @@ fn slide_html(
                 "<figure data-missing=\"{missing}: {src}\"><img src=\"{p}{src}\" alt=\"{cap}\" \
                  onerror=\"this.parentNode.classList.add('missing')\"><figcaption>{cap}</figcaption></figure>",
                 p = img_prefix,
-                src = escape(&img.path),
+                src = escape(&img.file(lang)),
                 cap = escape(&img.caption),
                 missing = escape(words.missing),
             );
@@ -372,7 +373,7 @@ pub fn deck_html(deck: &Deck, img_prefix: &str) -> Result<String> {
         total - 1
     );
     for (id, slide) in (1..).zip(deck.slides()) {
-        slide_html(&mut h, slide, id, total - 1, &words, img_prefix)?;
+        slide_html(&mut h, slide, id, total - 1, &words, &deck.lang, img_prefix)?;
     }
     let _ = write!(h, "<script>{SCRIPT}</script>\n</body></html>\n");
     Ok(h)
