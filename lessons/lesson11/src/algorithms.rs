@@ -152,6 +152,7 @@ impl Algorithm {
                     max_depth,
                     rr_depth,
                     seed,
+                    gradients: false,
                 },
                 &never,
             )?)),

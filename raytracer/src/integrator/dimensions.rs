@@ -23,6 +23,7 @@
 //! | occlusion ray (ambient occlusion) | [`AO_DIRECTION`] (2) |
 //! | visible point ([`super::visible_point::visible_point`]) | camera ray, then a continuation per mirror or glass bounce |
 //! | irradiance-cache ray ([`super::irradiance_cache`]) | [`IC_DIRECTION`] (2), then per surface: light sample (not at delta surfaces), continuation, roulette |
+//! | irradiance-cache ray with gradients | [`IC_STRATUM`] (2) instead of [`IC_DIRECTION`], the rest alike; a record's rays go cell by cell, `θ` band `j` outer, `φ` sector `k` inner |
 //!
 //! # Layouts
 //!
@@ -54,7 +55,8 @@
 //!   the visible point; there, below the maximum depth: light sample. Then
 //!   `photon` with final gathering, for each gather ray: continuation and a
 //!   continuation per delta bounce; `irradiance-cache` at a point no record
-//!   covers: its record rays, and at a Phong surface: continuation and an
+//!   covers: its record rays (`rays` of them, or with gradients one per
+//!   cell of its `M × N` strata), and at a Phong surface: continuation and an
 //!   irradiance-cache ray's path. Their light paths (photons, VPLs) and the
 //!   cache's records draw from streams of their own (sample indices `2^48 +
 //!   stream` and `2^47`), each light path as a light path's start and per
@@ -84,6 +86,9 @@ pub const ROULETTE: Draw<1> = Draw::new("Russian roulette");
 pub const AO_DIRECTION: Draw<2> = Draw::new("direction of an occlusion ray");
 /// The cosine-distributed direction of an irradiance-cache ray.
 pub const IC_DIRECTION: Draw<2> = Draw::new("direction of an irradiance-cache ray");
+/// The point within its `(θ, φ)` cell of a stratified irradiance-cache ray
+/// (with gradients: `sin²θ = (j + u_x)/M`, `φ = 2π(k + u_y)/N`).
+pub const IC_STRATUM: Draw<2> = Draw::new("point within a cell of an irradiance-cache record");
 
 #[cfg(test)]
 mod tests {
@@ -245,6 +250,23 @@ mod tests {
             dimensions_used(&tiny, &ic),
             camera_ray + light_sample,
             "irradiance-cache"
+        );
+        let ic = crate::integrator::IrradianceCache::build(
+            &tiny,
+            crate::integrator::IrradianceCacheSettings {
+                rays: 12,
+                error: 0.9,
+                max_depth: d,
+                gradients: true,
+                ..Default::default()
+            },
+            &never,
+        )
+        .unwrap();
+        assert_eq!(
+            dimensions_used(&tiny, &ic),
+            camera_ray + light_sample,
+            "irradiance-cache with gradients"
         );
         // Roulette adds its one number per bounce once it plays (from the
         // first bounce on here; the path may end after one or two).

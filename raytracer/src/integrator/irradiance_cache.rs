@@ -1,4 +1,5 @@
-//! Irradiance caching (Ward, Rubinstein & Clear 1988): the
+//! Irradiance caching (Ward, Rubinstein & Clear 1988), with Ward &
+//! Heckbert's irradiance gradients (1992) as an option: the
 //! `irradiance-cache` integrator.
 //!
 //! Lecture topic: "Algorithms for Global Illumination" — the second biased
@@ -28,6 +29,82 @@
 //! disk, and light smeared across changes it should follow. As `a` shrinks
 //! the cache approaches the path tracer's indirect light.
 //!
+//! # Irradiance gradients (`gradients`, `--ic-gradients`)
+//!
+//! Averaging treats every record as flat: a record at a wall's foot says
+//! nothing about the wall getting brighter towards the corner. Ward &
+//! Heckbert read, from the very rays that made `E_i`, how `E` changes when
+//! the normal turns (rotational gradient `∇_r E_i`) and when the point moves
+//! in its tangent plane (translational gradient `∇_t E_i`), and interpolate
+//! first-order extrapolations instead of constants (each channel clamped at
+//! zero, a first-order guess can go below):
+//!
+//! ```text
+//!   E(x) = Σ w_i max(0, E_i + (n_i × n)·∇_r E_i + (x − x_i)·∇_t E_i) / Σ w_i
+//! ```
+//!
+//! For that the hemisphere is sampled *stratified*, in `M × N` cells that
+//! each hold the same projected solid angle `π/(MN)`: `M` bands in `θ`
+//! uniform in `sin²θ` (cosine-distributed) and `N` sectors in `φ`, one ray
+//! per cell (`N ≈ πM` keeps the cells square: [`Strata::for_rays`]). Ray
+//! `(j, k)` leaves at `sin²θ = (j + ξ₁)/M`, `φ = 2π(k + ξ₂)/N`, brings back
+//! `L_jk` and the distance `r_jk` to what it hit, and `E_i = (π/MN) Σ L_jk`
+//! as before. With the band edges `sin²θ_j− = j/M` (`θ_j+ = θ_(j+1)−`),
+//! the cell centres `θ_j` (`sin²θ_j = (j + ½)/M`) and `φ_k = 2π(k + ½)/N`,
+//! the sector edges `φ_k− = 2πk/N`, and in the tangent plane
+//! `u(φ) = (cos φ, sin φ, 0)`, `v(φ) = (−sin φ, cos φ, 0)`:
+//!
+//! - **Rotation.** Turning the normal by a small rotation `α` (axis times
+//!   angle) changes `cos θ = n·ω` by `α·(n × ω)`, so
+//!   `∇_r E = ∫ L(ω) (n × ω) dω`, with `n × ω = sin θ v(φ)`: divided by
+//!   the density `cos θ/π`, each cell's `L_jk` counts with `tan θ v(φ)`.
+//!   Ward & Heckbert take `tan θ_j` at the cell's centre (at the ray's own
+//!   `θ` the variance would be infinite: `∫ tan²θ cos θ dω` diverges at the
+//!   horizon), and write `−tan θ_j` with `v` pointing the other way. The
+//!   centre's value is low, as `tan` is convex and steep near the horizon
+//!   (7% low on the half-plane of this module's test, even at `M = 36`), so
+//!   here each cell counts with the *mean* of `tan θ v(φ)` over it under
+//!   the cosine density, exact when `L` is constant over the cell and as
+//!   bounded as Ward's:
+//!
+//!   ```text
+//!     ∇_r E ≈ (π/MN) Σ_k s_N v(φ_k) Σ_j t_j L_jk,
+//!     t_j = 2M ∫_{θ_j−}^{θ_j+} sin²θ dθ = M [θ − sin θ cos θ]_{θ_j−}^{θ_j+},
+//!     s_N = sin(π/N) / (π/N)   (the mean of v(φ) over a sector is s_N v(φ_k))
+//!   ```
+//!
+//! - **Translation.** Moving `x` by `δ` leaves the radiance inside each
+//!   cell as it is, but slides the scene across the cells' edges: a surface
+//!   at distance `r` drifts by `δ·e_θ / r` in `θ` and by
+//!   `δ·v(φ) / (r sin θ)` in `φ`. Across an edge between cells of radiance
+//!   `L_a` and `L_b` the projected solid angle `cos θ sin θ dθ dφ` of the
+//!   strip that changes hands times `L_b − L_a` is the change of `E`; taking
+//!   for `r` the nearer of the two cells' distances (the nearer surface is
+//!   the one that moves, and occludes), and summing the `θ` edges (between
+//!   bands `j − 1` and `j`) and the `φ` edges (between sectors `k − 1` and
+//!   `k`, cyclic):
+//!
+//!   ```text
+//!     ∇_t E ≈ Σ_k [ u(φ_k) (2π/N) Σ_{j=1}^{M−1} sin θ_j− cos²θ_j− (L_jk − L_(j−1)k) / min(r_jk, r_(j−1)k)
+//!                  + v(φ_k−) Σ_{j=0}^{M−1} (sin θ_j+ − sin θ_j−) (L_jk − L_j(k−1)) / min(r_jk, r_j(k−1)) ]
+//!   ```
+//!
+//!   (the `θ` edge integrates `cos(φ − φ_δ)` over the sector, ≈ `(2π/N)
+//!   cos(φ_k − φ_δ)`, which is used exactly here: `2 sin(π/N)` for `2π/N`;
+//!   the `φ` edge `cos θ` over the band). It lies in the tangent plane; `r_jk` is
+//!   clamped below as `R_i` is, so that a contact does not make it
+//!   explode.
+//!
+//! Both come free: no extra rays, only `M × N` stored `(L, r)` pairs per
+//! record while it is made, and six vectors per record kept. At the same
+//! `a` the image is smoother and closer to the path tracer: on the Cornell
+//! box (`raytracer/tests/biased.rs`) the RMSE falls by a quarter at
+//! `a = 1`, by 12–15% at `a = 0.4–0.6`. Later
+//! refinements (Křivánek et al.'s gradient limiting and neighbour clamping,
+//! Jarosz et al.'s improved gradients) are left out. Off by default: the
+//! lecture meets the 1988 cache first, and off the sampling is the 1988
+//! one, so its images stay what they were bit for bit.
+//!
 //! **Determinism.** Records are made level by level on a grid of pixel
 //! centres, every 16th pixel, then every 8th, …, every pixel: at each level
 //! the pixels whose visible point no record covers yet make a record each
@@ -39,9 +116,6 @@
 //! Surfaces that are not Lambert (Phong) get their indirect light from one
 //! BRDF sample continued as above; mirrors and glass are followed to the
 //! visible point ([`super::visible_point`]).
-//!
-//! Not done (documented): Ward & Heckbert's irradiance gradients, which
-//! would let a record extrapolate instead of only average.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
@@ -49,7 +123,7 @@ use std::time::{Duration, Instant};
 use rayon::prelude::*;
 
 use super::continuation::sample_continuation;
-use super::dimensions::IC_DIRECTION;
+use super::dimensions::{IC_DIRECTION, IC_STRATUM};
 use super::grid::Grid;
 use super::roulette::russian_roulette;
 use super::visible_point::{VisiblePoint, follow_delta_chain, visible_point};
@@ -73,6 +147,9 @@ pub struct IrradianceCacheSettings {
     pub max_depth: Option<u32>,
     pub rr_depth: u32,
     pub seed: u64,
+    /// Ward & Heckbert's irradiance gradients: stratified record rays and
+    /// first-order extrapolation (see the module doc). Off by default.
+    pub gradients: bool,
 }
 
 impl Default for IrradianceCacheSettings {
@@ -83,6 +160,7 @@ impl Default for IrradianceCacheSettings {
             max_depth: None,
             rr_depth: 5,
             seed: 0,
+            gradients: false,
         }
     }
 }
@@ -98,6 +176,13 @@ impl IrradianceCacheSettings {
         }
         if self.rays == 0 {
             return Err("--ic-rays must be at least 1 (hemisphere rays per record)".into());
+        }
+        if self.gradients && self.rays < Strata::MIN_RAYS {
+            return Err(format!(
+                "--ic-gradients needs --ic-rays of at least {} (M × N strata, at least 2 in θ and 6 in φ), got {}",
+                Strata::MIN_RAYS,
+                self.rays
+            ));
         }
         Ok(())
     }
@@ -117,6 +202,147 @@ pub struct Record {
     pub depth: u32,
 }
 
+/// Ward & Heckbert's gradients of a record's `E_i`, one vector per colour
+/// channel (in world space).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Gradients {
+    /// `∇_r E_i`: turning the normal from `n_i` to `n` changes `E` by
+    /// `(n_i × n)·∇_r E_i`.
+    pub rotation: [Vec3A; 3],
+    /// `∇_t E_i`, in the record's tangent plane: moving from `x_i` to `x`
+    /// changes `E` by `(x − x_i)·∇_t E_i`.
+    pub translation: [Vec3A; 3],
+}
+
+impl Gradients {
+    /// `max(0, E_i + axis·∇_r E_i + d·∇_t E_i)` per channel, with `axis =
+    /// n_i × n` and `d = x − x_i`.
+    pub fn extrapolate(&self, e: Color, axis: Vec3A, d: Vec3A) -> Color {
+        let channel =
+            |c: usize| (e[c] + axis.dot(self.rotation[c]) + d.dot(self.translation[c])).max(0.0);
+        Color::new(channel(0), channel(1), channel(2))
+    }
+
+    /// The gradients turned from a local frame (normal `z`) to the world.
+    fn to_world(self, frame: &Frame) -> Gradients {
+        Gradients {
+            rotation: self.rotation.map(|g| frame.to_world(g)),
+            translation: self.translation.map(|g| frame.to_world(g)),
+        }
+    }
+}
+
+/// The `M × N` cells of a stratified record: `M` bands in `θ`, uniform in
+/// `sin²θ` (so that every cell holds the projected solid angle `π/(MN)`),
+/// and `N` sectors in `φ`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Strata {
+    pub m: u32,
+    pub n: u32,
+}
+
+impl Strata {
+    /// The fewest rays for which gradients are made (`2 × 6` strata).
+    pub const MIN_RAYS: u32 = 12;
+
+    /// Square-ish cells from at most `rays` rays: a band is `π/2M` high at
+    /// the zenith and a sector `2π/N` wide, so `N ≈ πM`:
+    /// `M = round(√(rays/π))`, `N = ⌊rays/M⌋` (128 rays: 6 × 21 = 126).
+    pub fn for_rays(rays: u32) -> Strata {
+        let m = ((rays as f32 / PI).sqrt().round() as u32).max(1);
+        Strata {
+            m,
+            n: (rays / m).max(1),
+        }
+    }
+
+    /// The rays used: `M·N`.
+    pub fn rays(&self) -> u32 {
+        self.m * self.n
+    }
+
+    /// The local direction (normal `z`) of the ray of cell `(j, k)` at the
+    /// point `u` within it: `sin²θ = (j + u_x)/M`, `φ = 2π(k + u_y)/N`.
+    pub fn direction(&self, j: u32, k: u32, u: Vec2) -> Vec3A {
+        let sin2 = ((j as f32 + u.x) / self.m as f32).min(1.0);
+        let (sin_t, cos_t) = (sin2.sqrt(), (1.0 - sin2).max(0.0).sqrt());
+        let phi = 2.0 * PI * (k as f32 + u.y) / self.n as f32;
+        Vec3A::new(sin_t * phi.cos(), sin_t * phi.sin(), cos_t)
+    }
+
+    /// `(E, R, gradients)` in the local frame (normal `z`) from one ray per
+    /// cell: `trace(j, k)` returns the cell's `(L_jk, r_jk)`, called for
+    /// `j = 0..M` and within each `k = 0..N`, in that order. Distances
+    /// below `r_min` count as `r_min` in the translational gradient. The
+    /// formulas are the module doc's.
+    pub fn estimate(
+        &self,
+        r_min: f32,
+        mut trace: impl FnMut(u32, u32) -> (Color, f32),
+    ) -> (Color, f32, Gradients) {
+        let (m, n) = (self.m as usize, self.n as usize);
+        let mut cells = Vec::with_capacity(m * n);
+        for j in 0..self.m {
+            for k in 0..self.n {
+                cells.push(trace(j, k));
+            }
+        }
+        let cell = |j: usize, k: usize| cells[j * n + k];
+        // 1/min(r_a, r_b): a ray that escaped (r = ∞) adds nothing.
+        let inv_min = |a: f32, b: f32| 1.0 / a.min(b).max(r_min);
+        let u = |phi: f32| Vec3A::new(phi.cos(), phi.sin(), 0.0);
+        let v = |phi: f32| Vec3A::new(-phi.sin(), phi.cos(), 0.0);
+        let (mf, nf) = (m as f32, n as f32);
+        // t_j = M [θ − sin θ cos θ] between the band's edges, sin²θ_j− = j/M.
+        let band_tan = |j: usize| {
+            let f = |s2: f32| {
+                let s2 = s2.min(1.0);
+                s2.sqrt().asin() - (s2 * (1.0 - s2)).sqrt()
+            };
+            mf * (f((j + 1) as f32 / mf) - f(j as f32 / mf))
+        };
+        let s_n = (PI / nf).sin() / (PI / nf);
+        let (mut e, mut inv_dist) = (Color::ZERO, 0.0f32);
+        let mut g = Gradients::default();
+        let add = |to: &mut [Vec3A; 3], dir: Vec3A, l: Color| {
+            for (c, t) in to.iter_mut().enumerate() {
+                *t += dir * l[c];
+            }
+        };
+        for k in 0..n {
+            let phi_k = 2.0 * PI * (k as f32 + 0.5) / nf;
+            let phi_edge = 2.0 * PI * k as f32 / nf;
+            let (u_k, v_k, v_edge) = (u(phi_k), v(phi_k), v(phi_edge));
+            let prev = (k + n - 1) % n;
+            for j in 0..m {
+                let (l, r) = cell(j, k);
+                e += l;
+                inv_dist += 1.0 / r.max(1e-4);
+                // Rotation: the cell's mean of tan θ v(φ), s_N t_j v(φ_k).
+                add(&mut g.rotation, v_k, l * (s_n * band_tan(j)));
+                // Translation across the θ edge sin²θ_j− = j/M (to band j − 1).
+                if j > 0 {
+                    let (l_up, r_up) = cell(j - 1, k);
+                    let s2 = j as f32 / mf;
+                    let w = 2.0 * (PI / nf).sin() * s2.sqrt() * (1.0 - s2) * inv_min(r, r_up);
+                    add(&mut g.translation, u_k, (l - l_up) * w);
+                }
+                // Translation across the φ edge φ_k− (to sector k − 1).
+                let (l_side, r_side) = cell(j, prev);
+                let band = ((j + 1) as f32 / mf).sqrt() - (j as f32 / mf).sqrt();
+                add(
+                    &mut g.translation,
+                    v_edge,
+                    (l - l_side) * (band * inv_min(r, r_side)),
+                );
+            }
+        }
+        let scale = PI / (mf * nf);
+        g.rotation = g.rotation.map(|r| r * scale);
+        (e * scale, (mf * nf) / inv_dist.max(1e-6), g)
+    }
+}
+
 /// The sample index of the cache's own random numbers (far above pixel samples).
 const CACHE_SAMPLE: u64 = 1 << 47;
 
@@ -125,6 +351,8 @@ const CACHE_SAMPLE: u64 = 1 << 47;
 pub struct IrradianceCache {
     pub settings: IrradianceCacheSettings,
     records: Vec<Record>,
+    /// The records' gradients, in the same order (empty without `gradients`).
+    gradients: Vec<Gradients>,
     grid: Grid,
     /// `R_i` is clamped to this range (from the scene's size).
     r_range: (f32, f32),
@@ -153,6 +381,7 @@ impl IrradianceCache {
         let mut cache = IrradianceCache {
             settings,
             records: Vec::new(),
+            gradients: Vec::new(),
             grid: Grid::empty(),
             r_range: (0.005 * diag, 0.25 * diag),
             building: Duration::ZERO,
@@ -172,11 +401,14 @@ impl IrradianceCache {
                         .map(move |x| UVec2::new(x, y))
                 })
                 .collect();
-            let new: Vec<Record> = pixels
+            let new: Vec<(Record, Option<Gradients>)> = pixels
                 .par_iter()
                 .filter_map(|&pixel| cache.record_for_pixel(scene, pixel))
                 .collect();
-            cache.records.extend(new);
+            for (record, gradients) in new {
+                cache.records.push(record);
+                cache.gradients.extend(gradients);
+            }
             cache.rebuild_grid();
         }
         cache.building = start.elapsed();
@@ -188,20 +420,46 @@ impl IrradianceCache {
         &self.records
     }
 
+    /// The records' gradients, in the order of [`Self::records`] (empty
+    /// without `gradients`).
+    pub fn gradients(&self) -> &[Gradients] {
+        &self.gradients
+    }
+
+    /// Bytes one record holds (with its gradients, if any).
+    fn record_bytes(&self) -> usize {
+        std::mem::size_of::<Record>()
+            + if self.settings.gradients {
+                std::mem::size_of::<Gradients>()
+            } else {
+                0
+            }
+    }
+
     /// Bytes the records and their grid hold.
     pub fn bytes(&self) -> usize {
-        self.records.len() * std::mem::size_of::<Record>() + self.grid.bytes()
+        self.records.len() * self.record_bytes() + self.grid.bytes()
     }
 
     /// One line on the cache.
     pub fn summary(&self) -> String {
         format!(
-            "irradiance cache: a = {}, {} records × {} bytes = {:.2} MiB ({} rays each, built in {:.2} s){}",
+            "irradiance cache: a = {}, {} records × {} bytes = {:.2} MiB ({}, built in {:.2} s){}",
             self.settings.error,
             self.records.len(),
-            std::mem::size_of::<Record>(),
+            self.record_bytes(),
             self.bytes() as f64 / (1 << 20) as f64,
-            self.settings.rays,
+            if self.settings.gradients {
+                let s = Strata::for_rays(self.settings.rays);
+                format!(
+                    "{} rays each in {} × {} strata, with gradients",
+                    s.rays(),
+                    s.m,
+                    s.n
+                )
+            } else {
+                format!("{} rays each", self.settings.rays)
+            },
             self.building.as_secs_f64(),
             if self.interrupted {
                 ", INTERRUPTED"
@@ -229,7 +487,7 @@ impl IrradianceCache {
 
     /// The record a pixel centre's visible point needs, if no record covers
     /// it yet and it is a Lambert surface.
-    fn record_for_pixel(&self, scene: &Scene, pixel: UVec2) -> Option<Record> {
+    fn record_for_pixel(&self, scene: &Scene, pixel: UVec2) -> Option<(Record, Option<Gradients>)> {
         let index = pixel.y as u64 * scene.camera.width as u64 + pixel.x as u64;
         let mut sampler = Sampler::new(self.settings.seed, index, CACHE_SAMPLE);
         let ray = scene
@@ -265,27 +523,45 @@ impl IrradianceCache {
         x: &Interaction,
         depth: u32,
         sampler: &mut Sampler,
-    ) -> Record {
-        let (e, r) = self.irradiance(scene, x, depth, sampler);
-        Record {
+    ) -> (Record, Option<Gradients>) {
+        let (e, r, gradients) = self.irradiance(scene, x, depth, sampler);
+        let record = Record {
             p: x.p,
             n: facing_normal(x),
             e,
             r: r.clamp(self.r_range.0, self.r_range.1),
             depth,
-        }
+        };
+        (record, gradients)
     }
 
-    /// `(E_ind, R)` at `x` by the cache's hemisphere rays. Draws, per ray,
-    /// [`IC_DIRECTION`] and then the path's numbers.
+    /// `(E_ind, R, gradients)` at `x` by the cache's hemisphere rays:
+    /// with `gradients`, one per cell of [`Strata::for_rays`] (drawing, per
+    /// ray, [`IC_STRATUM`] and then the path's numbers); without, `rays`
+    /// cosine-distributed ones (drawing [`IC_DIRECTION`] and then the path's).
     fn irradiance(
         &self,
         scene: &Scene,
         x: &Interaction,
         depth: u32,
         sampler: &mut Sampler,
-    ) -> (Color, f32) {
+    ) -> (Color, f32, Option<Gradients>) {
         let frame = Frame::from_normal(facing_normal(x));
+        if self.settings.gradients {
+            let strata = Strata::for_rays(self.settings.rays);
+            let (e, r, g) = strata.estimate(self.r_range.0, |j, k| {
+                let w = strata.direction(j, k, IC_STRATUM.draw(sampler));
+                incoming_indirect(
+                    scene,
+                    x.spawn_ray(frame.to_world(w)),
+                    depth + 1,
+                    self.settings.max_depth,
+                    self.settings.rr_depth,
+                    sampler,
+                )
+            });
+            return (e, r, Some(g.to_world(&frame)));
+        }
         let n = self.settings.rays;
         let (mut sum, mut inv_dist) = (Color::ZERO, 0.0f32);
         for _ in 0..n {
@@ -303,10 +579,12 @@ impl IrradianceCache {
             inv_dist += 1.0 / t.max(1e-4);
         }
         // E = ∫ L cos θ dω ≈ (1/N) Σ L cos θ / (cos θ / π) = (π/N) Σ L.
-        (sum * (PI / n as f32), n as f32 / inv_dist.max(1e-6))
+        (sum * (PI / n as f32), n as f32 / inv_dist.max(1e-6), None)
     }
 
-    /// `E(x)` from the records that cover `x` (`None` if none does).
+    /// `E(x)` from the records that cover `x` (`None` if none does): the
+    /// weighted mean of their `E_i`, or with gradients of their clamped
+    /// extrapolations `max(0, E_i + (n_i × n)·∇_r E_i + (x − x_i)·∇_t E_i)`.
     pub fn interpolate(&self, x: &Interaction, depth: u32) -> Option<Color> {
         let n = facing_normal(x);
         let a = self.settings.error;
@@ -326,7 +604,11 @@ impl IrradianceCache {
                 continue;
             }
             let w = 1.0 / eps.max(1e-6);
-            sum += r.e * w;
+            let e = match self.gradients.get(i as usize) {
+                Some(g) => g.extrapolate(r.e, r.n.cross(n), d),
+                None => r.e,
+            };
+            sum += e * w;
             weights += w;
         }
         (weights > 0.0).then(|| sum / weights)
@@ -453,5 +735,165 @@ fn diffuse_towards_viewer(brdf: &Brdf, x: &Interaction) -> bool {
             matches!(**inner, Brdf::Lambert(_)) && x.frame.to_local(x.wo).z > 0.0
         }
         _ => false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A record at the origin (normal `z`) under a ceiling at height `h`
+    /// whose half `y > −s` shines with radiance `L₀` (per channel `c`) and
+    /// whose other half is black: the receiver is `s` past the edge, on the
+    /// bright side if `s > 0`. With `ρ = √(s² + h²)`, integrating
+    /// `cos θ cos θ' / d²` over the bright half-plane gives
+    ///
+    /// ```text
+    ///   E = (π L₀/2) (1 + s/ρ),   ∂E/∂y = (π L₀/2) h²/ρ³,   ∂E/∂x = 0,
+    /// ```
+    ///
+    /// and `∇_r E = z × F` with `F = ∫ L ω dω = (0, (π L₀/2) h/ρ, E)`:
+    /// `∇_r E = (−(π L₀/2) h/ρ, 0, 0)`.
+    fn half_plane(s: f32, h: f32, l0: Color, strata: Strata, seed: u64) -> (Color, Gradients) {
+        let mut sampler = Sampler::new(seed, 0, 0);
+        let (e, _, g) = strata.estimate(0.0, |j, k| {
+            let w = strata.direction(j, k, IC_STRATUM.draw(&mut sampler));
+            let t = h / w.z;
+            let bright = w.y * t > -s;
+            (if bright { l0 } else { Color::ZERO }, t)
+        });
+        (e, g)
+    }
+
+    /// Ward & Heckbert's estimators against the half-plane's closed form,
+    /// at 36 × 113 = 4068 rays, for a receiver half a height onto the
+    /// bright side, above the edge, and a height into the dark side (where
+    /// `E` and `∇_t E` have the sizes of a corner's), each at 16 seeds, on
+    /// three channels of different `L₀`. Every estimate must be within
+    /// 3% of the channel's largest closed-form value (`E` of the bright
+    /// side `π L₀`, `∂E/∂y` at the edge `π L₀ / 2h`, `|∇_r E|` at the edge
+    /// `π L₀/2`), and the components that vanish must stay below 3% of it.
+    /// Measured over 2000 seeds per position (`measure_half_plane_errors`):
+    /// bias below 0.01% for `E`, 0.1% for `∇_r E` and 0.7% for `∇_t E` (the
+    /// estimator is first order in the cells' size), standard deviations
+    /// below 0.1%, 0.17% and 0.2%, worst errors 0.4%, 0.65% and 1.3%. The
+    /// errors are sums over the thousands of cells the edge crosses, nearly
+    /// normal, so 3% is more than 11 standard deviations beyond the bias: a
+    /// false failure with other seeds has probability far below 1e-20. Ward &
+    /// Heckbert's `tan θ_j` at the cells' centres fails it (`∇_r E` 7% low).
+    #[test]
+    fn gradients_match_the_half_plane_closed_form() {
+        let strata = Strata::for_rays(4096);
+        assert_eq!((strata.m, strata.n), (36, 113));
+        let h = 1.0f32;
+        let l0 = Color::new(1.0, 0.5, 0.25);
+        let mut worst = [0.0f32; 3];
+        for s in [0.5f32, 0.0, -1.0] {
+            let rho = (s * s + h * h).sqrt();
+            let half = PI / 2.0;
+            for seed in 0..16 {
+                let (e, g) = half_plane(s, h, l0, strata, seed);
+                for c in 0..3 {
+                    let l = l0[c];
+                    let exact_e = half * l * (1.0 + s / rho);
+                    let exact_t = Vec3A::new(0.0, half * l * h * h / (rho * rho * rho), 0.0);
+                    let exact_r = Vec3A::new(-half * l * h / rho, 0.0, 0.0);
+                    let errors = [
+                        (e[c] - exact_e).abs() / (PI * l),
+                        (g.translation[c] - exact_t).abs().max_element() / (half * l / h),
+                        (g.rotation[c] - exact_r).abs().max_element() / (half * l),
+                    ];
+                    for (w, err) in worst.iter_mut().zip(errors) {
+                        *w = w.max(err);
+                    }
+                    assert!(
+                        errors.iter().all(|&err| err < 0.03),
+                        "s = {s}, seed {seed}, channel {c}: relative errors (E, ∇_t, ∇_r) {errors:?}; \
+                         E {} vs {exact_e}, ∇_t {} vs {exact_t}, ∇_r {} vs {exact_r}",
+                        e[c],
+                        g.translation[c],
+                        g.rotation[c]
+                    );
+                }
+            }
+        }
+        eprintln!("half plane: worst relative errors (E, ∇_t, ∇_r) {worst:?}");
+    }
+
+    /// The measurement behind the tolerance above (run with `--ignored`).
+    #[test]
+    #[ignore]
+    fn measure_half_plane_errors() {
+        let strata = Strata::for_rays(4096);
+        let h = 1.0f32;
+        for s in [0.5f32, 0.0, -1.0] {
+            let rho = (s * s + h * h).sqrt();
+            let half = PI / 2.0;
+            let exact = [
+                half * (1.0 + s / rho),
+                half * h * h / (rho * rho * rho),
+                -half * h / rho,
+            ];
+            let mut stats = [(0.0f64, 0.0f64, 0.0f64); 3];
+            let n = 2000;
+            for seed in 0..n {
+                let (e, g) = half_plane(s, h, Color::ONE, strata, seed);
+                let errs = [
+                    (e.x - exact[0]) / PI,
+                    (g.translation[0].y - exact[1]) / (half / h),
+                    (g.rotation[0].x - exact[2]) / half,
+                ];
+                for (st, err) in stats.iter_mut().zip(errs) {
+                    st.0 += err as f64;
+                    st.1 += (err * err) as f64;
+                    st.2 = st.2.max(err.abs() as f64);
+                }
+            }
+            for (name, st) in ["E", "∇_t", "∇_r"].iter().zip(stats) {
+                let mean = st.0 / n as f64;
+                let sd = (st.1 / n as f64 - mean * mean).sqrt();
+                eprintln!(
+                    "s = {s}: {name} bias {mean:.5}, sd {sd:.5}, worst {:.5}",
+                    st.2
+                );
+            }
+        }
+    }
+
+    /// `M × N` keeps to the rays given, near `N = πM`, and from
+    /// [`Strata::MIN_RAYS`] on has at least 2 bands and 6 sectors.
+    #[test]
+    fn strata_fit_the_rays() {
+        assert_eq!(Strata::for_rays(128), Strata { m: 6, n: 21 });
+        for rays in Strata::MIN_RAYS..20_000 {
+            let s = Strata::for_rays(rays);
+            assert!(s.rays() <= rays && s.m >= 2 && s.n >= 6, "{rays}: {s:?}");
+            assert!(s.rays() as f32 > 0.85 * rays as f32, "{rays}: {s:?}");
+        }
+    }
+
+    /// Gradients need cells on both sides of an edge: too few rays are refused.
+    #[test]
+    fn gradients_refuse_too_few_rays() {
+        let s = IrradianceCacheSettings {
+            rays: 8,
+            gradients: true,
+            ..Default::default()
+        };
+        let e = s.check().unwrap_err();
+        assert!(
+            e.starts_with("--ic-gradients needs --ic-rays of at least 12"),
+            "{e}"
+        );
+        assert!(IrradianceCacheSettings { rays: 8, ..s }.check().is_err());
+        assert!(IrradianceCacheSettings { rays: 12, ..s }.check().is_ok());
+        assert!(
+            IrradianceCacheSettings {
+                gradients: false,
+                ..s
+            }
+            .check()
+            .is_ok()
+        );
     }
 }

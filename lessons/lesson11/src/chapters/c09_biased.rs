@@ -609,6 +609,7 @@ fn irradiance_records(
                 max_depth: Some(max_depth),
                 rr_depth: scene.settings.rr_depth,
                 seed: base.seed,
+                gradients: false,
             },
             &AtomicBool::new(false),
         )

@@ -56,6 +56,9 @@ pub struct BiasedArgs {
     /// irradiance-cache: hemisphere rays per record (default 128).
     #[arg(long)]
     pub ic_rays: Option<u32>,
+    /// irradiance-cache: Ward & Heckbert's gradients: records extrapolate E_i + (n_i × n)·∇_r E_i + (x − x_i)·∇_t E_i from their stratified rays instead of only averaging.
+    #[arg(long)]
+    pub ic_gradients: bool,
 }
 
 /// The biased integrators, as `--integrator` names them.
@@ -84,7 +87,7 @@ impl BiasedArgs {
     /// `name`) does not use.
     pub fn check(&self, kind: Option<BiasedKind>, name: &str) -> Result<()> {
         use BiasedKind::{IrradianceCache, Photon, Sppm, Vpl};
-        let given: [(&str, bool, &[BiasedKind]); 9] = [
+        let given: [(&str, bool, &[BiasedKind]); 10] = [
             ("--photons", self.photons.is_some(), &[Photon, Sppm]),
             ("--k", self.k.is_some(), &[Photon]),
             ("--radius", self.radius.is_some(), &[Photon, Sppm]),
@@ -94,6 +97,7 @@ impl BiasedArgs {
             ("--clamp", self.clamp.is_some(), &[Vpl]),
             ("--ic-error", self.ic_error.is_some(), &[IrradianceCache]),
             ("--ic-rays", self.ic_rays.is_some(), &[IrradianceCache]),
+            ("--ic-gradients", self.ic_gradients, &[IrradianceCache]),
         ];
         for (option, set, users) in given {
             if set && !kind.is_some_and(|k| users.contains(&k)) {
@@ -175,6 +179,7 @@ impl BiasedArgs {
             max_depth,
             rr_depth,
             seed,
+            gradients: self.ic_gradients,
         };
         s.check().map_err(anyhow::Error::msg)?;
         Ok(s)
