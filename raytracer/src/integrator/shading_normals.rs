@@ -18,7 +18,9 @@
 //! i.e. the light path's usual factor times [`importance_correction`].
 //! Without it, light tracing and the light-side strategies of bidirectional
 //! tracing converge to a different image of a smooth mesh than path tracing
-//! (`tests/shading_normals.rs` shows it on the torus of `stereo`). Where the
+//! (`tests/shading_normals.rs` shows it on a low-poly ball shaded smooth,
+//! where the difference is |z| ≈ 54 in the worst tile; on the finely
+//! tessellated torus of `stereo` it is 0.02 % of the mean, too small to see). Where the
 //! shading normal is the geometric one (every quad and sphere, flat meshes)
 //! the factor is exactly 1.
 
