@@ -122,12 +122,25 @@ impl Brdf {
     /// `wo` and `wi` lie on different sides (they do not transmit).
     #[inline]
     pub fn eval(&self, wo: Vec3A, wi: Vec3A, uv: Vec2) -> Color {
-        match self {
+        let (model, one_sided) = self.model();
+        if one_sided && !(wo.z > 0.0 && wi.z > 0.0) {
+            return Color::ZERO;
+        }
+        match model {
             Brdf::Lambert(m) => two_sided(wo, wi, Color::ZERO, |wo, wi| m.eval(wo, wi, uv)),
             Brdf::Phong(m) => two_sided(wo, wi, Color::ZERO, |wo, wi| m.eval(wo, wi)),
-            Brdf::Mirror(_) | Brdf::Glass(_) => Color::ZERO,
-            Brdf::OneSided(m) if wo.z > 0.0 && wi.z > 0.0 => m.eval(wo, wi, uv),
-            Brdf::OneSided(_) => Color::ZERO,
+            Brdf::Mirror(_) | Brdf::Glass(_) | Brdf::OneSided(_) => Color::ZERO,
+        }
+    }
+
+    /// The model itself and whether it is seen from the front only: the
+    /// one-sided wrapper is a test before the model's own `match`, not a
+    /// call of its own (its recursion kept the models' code out of line).
+    #[inline(always)]
+    fn model(&self) -> (&Brdf, bool) {
+        match self {
+            Brdf::OneSided(m) => (m, true),
+            m => (m, false),
         }
     }
 
@@ -145,12 +158,16 @@ impl Brdf {
         u: Vec2,
         mode: TransportMode,
     ) -> Option<BrdfSample> {
-        let s = match self {
+        let (model, one_sided) = self.model();
+        if one_sided && wo.z <= 0.0 {
+            return None;
+        }
+        let s = match model {
             Brdf::Lambert(m) => sample_two_sided(wo, |wo| m.sample(wo, uv, u)),
             Brdf::Phong(m) => sample_two_sided(wo, |wo| m.sample(wo, u)),
             Brdf::Mirror(m) => sample_two_sided(wo, |wo| m.sample(wo)),
             Brdf::Glass(m) => m.sample(wo, u_lobe, mode).filter(|s| s.wi.z != 0.0),
-            Brdf::OneSided(m) if wo.z > 0.0 => m.sample(wo, uv, u_lobe, u, mode),
+            // `Brdf::one_sided` never wraps a one-sided model.
             Brdf::OneSided(_) => None,
         }?;
         let valid = s.pdf_w > 0.0
@@ -164,16 +181,17 @@ impl Brdf {
     /// Density per solid angle with which [`Brdf::sample`] returns `wi`
     /// (zero for delta lobes and for directions the model never samples).
     /// `uv` is part of the contract (a textured model's density may depend on
-    /// it); today only the one-sided wrapper passes it on.
+    /// it); no model's density uses it today.
     #[inline]
-    #[allow(clippy::only_used_in_recursion)]
-    pub fn pdf(&self, wo: Vec3A, wi: Vec3A, uv: Vec2) -> f32 {
-        match self {
+    pub fn pdf(&self, wo: Vec3A, wi: Vec3A, _uv: Vec2) -> f32 {
+        let (model, one_sided) = self.model();
+        if one_sided && !(wo.z > 0.0 && wi.z > 0.0) {
+            return 0.0;
+        }
+        match model {
             Brdf::Lambert(m) => two_sided(wo, wi, 0.0, |wo, wi| m.pdf(wo, wi)),
             Brdf::Phong(m) => two_sided(wo, wi, 0.0, |wo, wi| m.pdf(wo, wi)),
-            Brdf::Mirror(_) | Brdf::Glass(_) => 0.0,
-            Brdf::OneSided(m) if wo.z > 0.0 && wi.z > 0.0 => m.pdf(wo, wi, uv),
-            Brdf::OneSided(_) => 0.0,
+            Brdf::Mirror(_) | Brdf::Glass(_) | Brdf::OneSided(_) => 0.0,
         }
     }
 

@@ -113,49 +113,87 @@ impl AreaLight {
 
     /// Next event estimation from the receiver `p` (see [`crate::light::Light::sample_li`]).
     pub fn sample_li(&self, p: Vec3A, u: Vec2) -> Option<LightSample> {
-        let (q, n, pdf_w) = match &self.shape {
-            AreaShape::Sphere(s) if !Self::inside_sphere(s, p) => {
-                // Uniform in the cone of directions the sphere subtends. The
-                // cone's axis points to the centre; θ is measured from it.
-                let to_c = s.center - p;
-                let dc2 = to_c.length_squared();
-                let dc = dc2.sqrt();
-                let (one_minus_cos_max, _) = cone_of_sphere(s.radius, dc2);
-                // 1 − cos θ is uniform in [0, 1 − cos θ_max] (the solid angle
-                // of a cap grows linearly in 1 − cos θ); then
-                // sin²θ = (1 − cos θ)(1 + cos θ) without cancellation.
-                let one_minus_cos = u.x * one_minus_cos_max;
-                let cos_t = 1.0 - one_minus_cos;
-                let sin2_t = (one_minus_cos * (2.0 - one_minus_cos)).max(0.0);
-                let sin_t = sin2_t.sqrt();
-                let (sin_phi, cos_phi) = sincos_turn(u.y);
-                let frame = Frame::from_normal(to_c / dc);
-                let wi = frame.to_world(Vec3A::new(sin_t * cos_phi, sin_t * sin_phi, cos_t));
-                // Nearest intersection of p + t·wi with the sphere:
-                // t = dc cos θ − sqrt(r² − dc² sin²θ) (clamped: rounding may
-                // put θ a hair outside the cone, where the ray grazes it).
-                let t = dc * cos_t - (s.radius * s.radius - dc2 * sin2_t).max(0.0).sqrt();
-                let n = (p + t * wi - s.center).normalize();
-                // Re-project onto the sphere so the point lies on its surface.
-                let q = s.center + s.radius * n;
-                (q, n, 1.0 / (2.0 * PI * one_minus_cos_max))
+        let s = match &self.shape {
+            AreaShape::Quad(q) => return self.sample_li_quad(q, p, u),
+            AreaShape::Sphere(s) => s,
+        };
+        let (q, n, pdf_w) = if !Self::inside_sphere(s, p) {
+            // Uniform in the cone of directions the sphere subtends. The
+            // cone's axis points to the centre; θ is measured from it.
+            let to_c = s.center - p;
+            let dc2 = to_c.length_squared();
+            let dc = dc2.sqrt();
+            let (one_minus_cos_max, _) = cone_of_sphere(s.radius, dc2);
+            // 1 − cos θ is uniform in [0, 1 − cos θ_max] (the solid angle
+            // of a cap grows linearly in 1 − cos θ); then
+            // sin²θ = (1 − cos θ)(1 + cos θ) without cancellation.
+            let one_minus_cos = u.x * one_minus_cos_max;
+            let cos_t = 1.0 - one_minus_cos;
+            let sin2_t = (one_minus_cos * (2.0 - one_minus_cos)).max(0.0);
+            let sin_t = sin2_t.sqrt();
+            let (sin_phi, cos_phi) = sincos_turn(u.y);
+            let frame = Frame::from_normal(to_c / dc);
+            let wi = frame.to_world(Vec3A::new(sin_t * cos_phi, sin_t * sin_phi, cos_t));
+            // Nearest intersection of p + t·wi with the sphere:
+            // t = dc cos θ − sqrt(r² − dc² sin²θ) (clamped: rounding may
+            // put θ a hair outside the cone, where the ray grazes it).
+            let t = dc * cos_t - (s.radius * s.radius - dc2 * sin2_t).max(0.0).sqrt();
+            let n = (p + t * wi - s.center).normalize();
+            // Re-project onto the sphere so the point lies on its surface.
+            let q = s.center + s.radius * n;
+            (q, n, 1.0 / (2.0 * PI * one_minus_cos_max))
+        } else {
+            // Uniform by area, converted to solid angle at p:
+            // p_ω = (1/A) · r² / |cos θ_y|.
+            let (q, n) = self.shape.sample_area(u);
+            let d = q - p;
+            let dist2 = d.length_squared();
+            let cos_l = n.dot(-d) / dist2.sqrt();
+            if cos_l.abs() <= 1e-7 {
+                return None;
             }
-            shape => {
-                // Uniform by area, converted to solid angle at p:
-                // p_ω = (1/A) · r² / |cos θ_y|.
-                let (q, n) = shape.sample_area(u);
-                let d = q - p;
-                let dist2 = d.length_squared();
-                let cos_l = n.dot(-d) / dist2.sqrt();
-                if cos_l.abs() <= 1e-7 {
-                    return None;
-                }
-                (q, n, dist2 / (cos_l.abs() * shape.area()))
-            }
+            (q, n, dist2 / (cos_l.abs() * self.shape.area()))
         };
         let d = q - p;
         let dist = d.length();
+        self.light_sample(d / dist, dist, q, n, pdf_w)
+    }
+
+    /// [`Self::sample_li`] on a quad: a point `y = origin + u.x e1 + u.y e2`
+    /// uniform by area and `p_ω = r² / (A |cos θ_y|)`. The area vector
+    /// `e1 × e2 = A n` gives both the area and the normal, and
+    /// `A |cos θ_y| = |(e1 × e2)·(p − y)| / r`: one cross product and two
+    /// square roots (A and r) per sample.
+    #[inline]
+    fn sample_li_quad(&self, quad: &Quad, p: Vec3A, u: Vec2) -> Option<LightSample> {
+        let y = quad.origin + u.x * quad.e1 + u.y * quad.e2;
+        let area_n = quad.e1.cross(quad.e2);
+        let area = area_n.length();
+        let d = y - p;
+        let dist2 = d.length_squared();
+        let dist = dist2.sqrt();
         let wi = d / dist;
+        let n = area_n / area;
+        // A cos θ_y, signed: positive when the light faces the receiver.
+        let area_cos = -area_n.dot(wi);
+        if area_cos.abs() <= 1e-7 * area {
+            return None;
+        }
+        self.light_sample(wi, dist, y, n, dist2 / area_cos.abs())
+    }
+
+    /// The sample in direction `wi` towards the light point `q` (normal
+    /// `n`) at distance `dist`, with density `pdf_w`, or `None` where the
+    /// light sends nothing that way or the density is unusable.
+    #[inline]
+    fn light_sample(
+        &self,
+        wi: Vec3A,
+        dist: f32,
+        q: Vec3A,
+        n: Vec3A,
+        pdf_w: f32,
+    ) -> Option<LightSample> {
         let li = self.le(n, -wi);
         if li == Color::ZERO || !(pdf_w > 0.0 && pdf_w.is_finite()) || dist == 0.0 {
             // Behind a one-sided light (or inside a one-sided sphere): the

@@ -295,6 +295,8 @@ impl Scene {
             return None;
         }
         let (i, pmf) = match &self.light_power {
+            // One light (the Cornell box): no search.
+            _ if n == 1 => (0, 1.0),
             Some(power) => power.sample_discrete(u),
             None => (((u * n as f32) as usize).min(n - 1), 1.0 / n as f32),
         };
@@ -312,6 +314,7 @@ impl Scene {
         let n = self.lights.len();
         match &self.light_power {
             _ if index as usize >= n => 0.0,
+            _ if n == 1 => 1.0,
             Some(power) => power.discrete_pdf(index as usize),
             None => 1.0 / n as f32,
         }
