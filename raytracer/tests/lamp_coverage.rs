@@ -18,7 +18,7 @@
 //! a lamp of the wrong size, a wrong importance or a shifted camera ray
 //! fail in both boxes.
 
-mod common;
+use crate::common;
 
 use raytracer::film::Film;
 use raytracer::geometry::Quad;

@@ -18,7 +18,7 @@
 //! in segments of one row by 16 pixels (path tracing), where the lamp's
 //! gap to the ceiling is.
 
-mod common;
+use crate::common;
 
 use raytracer::film::Film;
 use raytracer::integrator::{Bdpt, Integrator, PathTracer};

@@ -1,5 +1,4 @@
-//! Helpers shared by the integration tests (each test file that needs them
-//! says `mod common;`).
+//! Helpers shared by the integration tests (`use crate::common;`).
 
 #![allow(dead_code)]
 
