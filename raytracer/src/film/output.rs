@@ -18,17 +18,33 @@
 //! with the same seed can be compared file by file.
 //!
 //! **No file is ever left half-written.** Every file goes first to a hidden
-//! temporary file in the destination's folder (`.NAME.PID-N.tmp`) and is
-//! renamed over the destination once complete ([`StagedFile`]). A rename
-//! within one folder replaces the file in one step: a reader, a kill -9 or a
-//! full disk sees the old file or the new one, never a truncated one. Files
-//! that belong together (a render's PNG, EXR and variance EXR) are all
-//! written to temporary files first and only then renamed, in order, by
-//! [`commit_all`]: if any of them cannot be written (a full disk, a
-//! permission), none is replaced. A crash *between* two renames, a window of
-//! microseconds, leaves the files renamed so far new and the others old; a
-//! crash while writing the temporaries leaves every old file in place and a
-//! stale hidden `.tmp` file beside them.
+//! temporary file in the destination's folder (`.NAME.PID-N.tmp`), is
+//! flushed to the disk (`fsync`), and is renamed over the destination once
+//! complete ([`StagedFile`]). A rename within one folder replaces the file
+//! in one step: a reader, a kill -9 or a full disk sees the old file or the
+//! new one, never a truncated one.
+//!
+//! Files that belong together (a render's EXR, variance EXR and PNG) are
+//! all written and synced first and only then renamed, in the order given,
+//! by [`commit_all`]. What holds, exactly:
+//!
+//! - an error while writing them (a full disk, a permission) replaces none;
+//! - a kill (kill -9, a crash of the program) before the first rename
+//!   leaves every old file in place, with stale hidden `.tmp` files beside
+//!   them;
+//! - a kill *between* two renames, a window of microseconds, leaves the
+//!   files renamed so far new and the rest old (a prefix of the order
+//!   given), with the complete temporaries of the rest beside them;
+//! - in every case each name holds the whole old file or the whole new one
+//!   — after a power loss too, since the data is synced before the rename
+//!   (which renames survive a power loss is then up to the file system: the
+//!   folder itself is not synced).
+//!
+//! Nothing finishes or removes the leftovers later. The set is not replaced
+//! atomically as a whole: no file system call renames several names at
+//! once, and the indirections that would (a folder or symlink per picture
+//! swapped in one rename, or a journal replayed by every reader) would
+//! change the flat output folders that pages and students rely on.
 //!
 //! Errors are `std::io::Error`s whose message names the file. Creating the
 //! parent directory is the caller's job; a missing one is reported as such.
@@ -169,7 +185,8 @@ impl Drop for StagedFile {
 }
 
 /// Puts files that belong together in place, in the order given, once all of
-/// them were written (see the module doc for what a crash in between leaves).
+/// them were written and synced (see the module doc for what a crash in
+/// between leaves: a prefix of them new, the rest old).
 pub fn commit_all(files: impl IntoIterator<Item = StagedFile>) -> io::Result<()> {
     files.into_iter().try_for_each(StagedFile::commit)
 }
