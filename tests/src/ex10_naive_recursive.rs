@@ -88,34 +88,66 @@ pub fn depth_message(d: u32, more: bool) -> String {
     )
 }
 
+/// The usual mistakes, as what each converges to in the emitting furnace at
+/// max depth `d` with branching `n` (`None`: the mistake does not change the
+/// answer there), with the message that names it.
+fn mistakes(d: u32, n: u32) -> Vec<(Option<f64>, String)> {
+    vec![
+        (Some(series(d, -RHO)), signed_cosine_message(d)),
+        (Some(series(d + 1, RHO)), depth_message(d, true)),
+        (
+            Some(series(d, n as f64 * RHO)),
+            format!(
+                "your mean is L_e(1 + Nρ + (Nρ)² + …): the N = {n} branches are summed — divide their sum by N"
+            ),
+        ),
+        // One bounce too few: at D = 1 a stop at `depth + 2 ≥ max_depth`
+        // still gives L_e, so the mistake is seen from D = 2 on.
+        ((d > 1).then(|| series(d - 1, RHO)), depth_message(d, false)),
+        (
+            Some(LE),
+            "your mean is L_e alone: only the camera ray's hit adds its emission — every level of the recursion adds the L_e of its own hit".to_string(),
+        ),
+    ]
+}
+
+/// The furnace cases: (max depth D, branching N).
+const CASES: [(u32, u32); 4] = [(1, 3), (2, 3), (3, 3), (4, 2)];
+
 pub fn check(f: NaiveFn) -> Result<(), String> {
     let furnace = small_scene("furnace")?;
-    for (d, n) in [(1u32, 3u32), (2, 3), (3, 3), (4, 2)] {
+    // Every case first: at D = 2 one bounce too few and emission only at the
+    // camera's hit both give L_e = 0.5, and only D = 3 (0.75 against 0.5)
+    // tells them apart. A mistake is named only if the means of all cases
+    // agree with it (where it predicts one).
+    let all: Vec<_> = CASES
+        .iter()
+        .map(|&(d, n)| {
+            camera_estimates(&furnace, 80 + d as u64, ESTIMATES, |ray, s| {
+                f(&furnace, &ray, 0, d, n, s)
+            })
+        })
+        .collect();
+    let explains = |mistake: usize| {
+        CASES.iter().zip(&all).all(|(&(d, n), stats)| {
+            mistakes(d, n)[mistake]
+                .0
+                .is_none_or(|v| stats.matches(Color::splat(v as f32)))
+        })
+    };
+    for (&(d, n), stats) in CASES.iter().zip(&all) {
         let exact = series(d, RHO);
-        let stats = camera_estimates(&furnace, 80 + d as u64, ESTIMATES, |ray, s| {
-            f(&furnace, &ray, 0, d, n, s)
-        });
-        let mut named = vec![
-            (series(d, -RHO), signed_cosine_message(d)),
-            (series(d + 1, RHO), depth_message(d, true)),
-            (
-                series(d, n as f64 * RHO),
-                format!(
-                    "your mean is L_e(1 + Nρ + (Nρ)² + …): the N = {n} branches are summed — divide their sum by N"
-                ),
-            ),
-        ];
-        if d > 1 {
-            named.push((series(d - 1, RHO), depth_message(d, false)));
-            named.push((
-                LE,
-                "your mean is L_e alone: only the camera ray's hit adds its emission — every level of the recursion adds the L_e of its own hit".to_string(),
-            ));
-        }
-        let advice = named
+        let here: Vec<_> = mistakes(d, n)
             .into_iter()
-            .find(|(v, _)| stats.matches(Color::splat(*v as f32)))
-            .map(|(_, why)| why);
+            .enumerate()
+            .filter(|(_, (v, _))| v.is_some_and(|v| stats.matches(Color::splat(v as f32))))
+            .collect();
+        // The mistake that fits every case, else the first that fits this one.
+        let advice = here
+            .iter()
+            .find(|(i, _)| explains(*i))
+            .or(here.first())
+            .map(|(_, (_, why))| why.clone());
         stats.check(
             &format!("emitting furnace (L_e = 0.5, ρ = 0.5), max_depth {d}, branching {n}: L = L_e(1 + ρ + … + ρ^(D−1))"),
             Color::splat(exact as f32),

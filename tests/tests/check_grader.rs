@@ -286,6 +286,19 @@ fn ex10_naive_recursive() {
         ex10_naive_recursive::check(wrong::naive_one_bounce_more),
         "max_depth D counts the segments",
     );
+    // Both give 0.5 at max_depth 2; max_depth 3 (0.75 against 0.5) tells
+    // which mistake it is.
+    fails(
+        "one bounce too few",
+        ex10_naive_recursive::check(wrong::naive_one_bounce_fewer),
+        "your mean is that of max_depth 1",
+    );
+    let e = ex10_naive_recursive::check(wrong::naive_emission_only_at_camera).unwrap_err();
+    assert!(
+        e.contains("max_depth 2") && e.contains("only the camera ray's hit adds its emission"),
+        "emission only at the camera's hit: {e}"
+    );
+    assert!(!e.contains("that of max_depth 1"), "{e}");
 }
 
 #[test]
@@ -729,4 +742,54 @@ fn render_student_puts_the_same_estimator_beside() {
         a > 2.0 * b,
         "BRDF sampling {a} vs MIS {b}: MIS is the unlike reference"
     );
+}
+
+/// An estimator whose estimates do not vary (or vary only by f32 rounding)
+/// is told its relative error, not a z of millions or "|z| = inf": its
+/// difference from the answer is no noise.
+#[test]
+fn zero_variance_failures_give_a_relative_error_not_a_z() {
+    use grading::stats::MeanVar;
+    use raytracer::math::Color;
+    let constant = |values: &[f32]| {
+        let mut m = MeanVar::default();
+        for i in 0..1000 {
+            m.add(Color::splat(values[i % values.len()]));
+        }
+        m
+    };
+    // Exactly constant (standard error 0, |z| would be inf), and constant
+    // up to the last bits of an f32 (|z| would be ~10⁸).
+    let near = f32::from_bits(0.5f32.to_bits() + 1);
+    for (name, stats) in [
+        ("constant", constant(&[0.5])),
+        ("f32 rounding", constant(&[0.5, near])),
+    ] {
+        let e = stats
+            .check("zero variance", Color::splat(0.4), |_| None)
+            .unwrap_err();
+        assert!(
+            e.contains("your mean is 0.5000, expected 0.4000 (relative error +25.00%")
+                && e.contains("your estimates barely vary")
+                && e.contains("so this is no noise"),
+            "{name}: {e}"
+        );
+        assert!(
+            !e.contains("inf") && !e.contains("standard errors of your own"),
+            "{name}: {e}"
+        );
+    }
+    // An exact answer of 0 has no relative error: the error itself.
+    let e = constant(&[0.5])
+        .check("zero variance at 0", Color::ZERO, |_| None)
+        .unwrap_err();
+    assert!(
+        e.contains("(error +0.5000; your estimates barely vary"),
+        "{e}"
+    );
+    // A noisy estimator keeps its |z|.
+    let e = constant(&[0.3, 0.7])
+        .check("noisy", Color::splat(0.4), |_| None)
+        .unwrap_err();
+    assert!(e.contains("standard errors of your own"), "{e}");
 }

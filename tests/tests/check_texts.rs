@@ -118,21 +118,66 @@ fn stub_problems(e: &exercises::Exercise, text: &str, api: &Api) -> Vec<String> 
     out
 }
 
-/// The stub checks are the instructor's: a solved file fails them (so they
-/// must not, and do not, run in the student's `cargo test`), and the old
-/// texts' mistakes are caught.
+/// The stub checks are the instructor's, and each one bites: a pristine
+/// stub (built here from the registry, so that this test needs no stub
+/// file) has no problem, and each single change a student or an old text
+/// makes to it is reported by the check that names it — a solved body (no
+/// `todo!()` left), one of two functions solved, the `// TODO` line gone,
+/// another opening, another slide, an API name that does not exist.
 #[test]
-fn stub_checks_catch_solved_files_and_wrong_names() {
+fn each_stub_check_catches_its_own_change() {
     let api = Api::of_repository().expect("sources");
     let reg = exercises::registry();
     let e = &reg[2];
-    let solved =
-        std::fs::read_to_string(exercises::crate_dir().join(e.solution_file())).expect("solution");
-    assert!(!stub_problems(e, &solved, &api).is_empty());
-    let old = "//! Exercise 3 — the Lambertian BRDF.\n//!\n//! Slides: \"Path tracing (II)\" (\"Path tracing (II)\").\n//!\n//! `f_r = texture.sample(x) / π`, see `Texture::sample`.\n\npub fn f() {\n    // TODO\n    todo!()\n}\n";
-    let problems = stub_problems(e, old, &api).join("\n");
-    assert!(problems.contains("cites the slides"), "{problems}");
-    assert!(problems.contains("Texture::sample"), "{problems}");
+    assert_eq!(e.number(), Some(3), "{}", e.name);
+    let cites: Vec<String> = e
+        .slides
+        .iter()
+        .zip(&e.slides_bg)
+        .map(|(en, bg)| format!("\"{en}\" (\"{bg}\")"))
+        .collect();
+    let pristine = format!(
+        "//! Exercise 3 — the Lambertian BRDF.\n//!\n//! Slides: {}.\n//!\n\
+         //! Receives the albedo (its colour is `Texture::eval`).\n\n\
+         pub fn f_r() -> f32 {{\n    // TODO: the constant.\n    todo!()\n}}\n",
+        cites.join(", ")
+    );
+    assert_eq!(
+        stub_problems(e, &pristine, &api),
+        Vec::<String>::new(),
+        "a pristine stub has problems:\n{pristine}"
+    );
+    let only = |text: String, expected: &str| {
+        let problems = stub_problems(e, &text, &api);
+        assert!(
+            problems.len() == 1 && problems[0].contains(expected),
+            "expected only {expected:?}, got {problems:?} for:\n{text}"
+        );
+    };
+    only(
+        pristine.replace("    todo!()\n", "    1.0 / std::f32::consts::PI\n"),
+        "1 functions but 0 todo!() bodies",
+    );
+    only(
+        pristine.clone() + "\npub fn g() -> f32 {\n    // TODO: another.\n    0.0\n}\n",
+        "2 functions but 1 todo!() bodies",
+    );
+    only(
+        pristine.replace("    // TODO: the constant.\n", ""),
+        "no `// TODO` line",
+    );
+    only(
+        pristine.replace("//! Exercise 3 — ", "//! The exercise — "),
+        "opens with \"//! Exercise 3 — \"",
+    );
+    only(
+        pristine.replace(&format!("\"{}\"", e.slides[0]), "\"Path tracing (II)\""),
+        "cites the slides",
+    );
+    only(
+        pristine.replace("`Texture::eval`", "`Texture::sample`"),
+        "`Texture::sample` names [\"Texture::sample\"]",
+    );
 }
 
 #[cfg(feature = "solutions")]
