@@ -78,23 +78,47 @@ impl ImageTexture {
         })
     }
 
-    /// Loads a PNG, converting its sRGB values to linear RGB.
+    /// Loads a PNG (any colour type and bit depth), converting its sRGB
+    /// values to linear RGB; alpha is ignored.
     pub fn load(path: &std::path::Path) -> Result<ImageTexture, String> {
-        let image = image::open(path)
-            .map_err(|e| format!("cannot load texture '{}': {e}", path.display()))?;
-        let rgb = image.to_rgb32f();
-        let (width, height) = rgb.dimensions();
-        let pixels = rgb
-            .pixels()
-            .map(|p| {
+        let named = |e: &dyn std::fmt::Display| format!("cannot load texture '{}': {e}", path.display());
+        let file = std::fs::File::open(path).map_err(|e| named(&e))?;
+        let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
+        // Palettes and grey below 8 bits become 8-bit samples.
+        decoder.set_transformations(png::Transformations::EXPAND);
+        let mut reader = decoder.read_info().map_err(|e| named(&e))?;
+        let size = reader
+            .output_buffer_size()
+            .ok_or_else(|| named(&"the image is too large"))?;
+        let mut buf = vec![0u8; size];
+        let frame = reader.next_frame(&mut buf).map_err(|e| named(&e))?;
+        let channels = frame.color_type.samples();
+        let wide = frame.bit_depth == png::BitDepth::Sixteen;
+        // Sample k of a row-major buffer, in [0, 1].
+        let sample = |k: usize| -> f32 {
+            if wide {
+                u16::from_be_bytes([buf[2 * k], buf[2 * k + 1]]) as f32 / 65535.0
+            } else {
+                buf[k] as f32 / 255.0
+            }
+        };
+        let pixels = (0..frame.width as usize * frame.height as usize)
+            .map(|i| {
+                let k = i * channels;
+                // Grey (with or without alpha) has one colour sample.
+                let [r, g, b] = if channels < 3 {
+                    [k; 3]
+                } else {
+                    [k, k + 1, k + 2]
+                };
                 Color::new(
-                    srgb_to_linear(p.0[0]),
-                    srgb_to_linear(p.0[1]),
-                    srgb_to_linear(p.0[2]),
+                    srgb_to_linear(sample(r)),
+                    srgb_to_linear(sample(g)),
+                    srgb_to_linear(sample(b)),
                 )
             })
             .collect();
-        ImageTexture::new(width, height, pixels)
+        ImageTexture::new(frame.width, frame.height, pixels)
             .map_err(|e| format!("texture '{}': {e}", path.display()))
     }
 
@@ -184,16 +208,49 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("brdf-texture-test-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("two.png");
-        // 2×1 sRGB: mid grey (128) and (255, 0, 64).
-        let data: Vec<u8> = vec![128, 128, 128, 255, 0, 64];
-        image::save_buffer(&path, &data, 2, 1, image::ColorType::Rgb8).unwrap();
-        let t = ImageTexture::load(&path).unwrap();
-        std::fs::remove_dir_all(&dir).ok();
-        assert_eq!((t.width, t.height), (2, 1));
+        let write = |color: png::ColorType, depth: png::BitDepth, data: &[u8]| {
+            let file = std::fs::File::create(&path).unwrap();
+            let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), 2, 1);
+            encoder.set_color(color);
+            encoder.set_depth(depth);
+            let mut writer = encoder.write_header().unwrap();
+            writer.write_image_data(data).unwrap();
+            writer.finish().unwrap();
+        };
         let g = srgb_to_linear(128.0 / 255.0);
         assert!((g - 0.2158).abs() < 1e-4);
-        assert!((t.pixels[0] - Color::splat(g)).length() < 1e-6);
-        assert!((t.pixels[1] - Color::new(1.0, 0.0, srgb_to_linear(64.0 / 255.0))).length() < 1e-6);
+        let second = Color::new(1.0, 0.0, srgb_to_linear(64.0 / 255.0));
+        // 2×1 sRGB: mid grey (128) and (255, 0, 64), as RGB, as RGBA, and as
+        // 16-bit RGB (128·257 is 128/255 exactly); grey alone as 8-bit grey.
+        for (color, depth, data) in [
+            (png::ColorType::Rgb, png::BitDepth::Eight, vec![128, 128, 128, 255, 0, 64]),
+            (
+                png::ColorType::Rgba,
+                png::BitDepth::Eight,
+                vec![128, 128, 128, 7, 255, 0, 64, 9],
+            ),
+            (
+                png::ColorType::Rgb,
+                png::BitDepth::Sixteen,
+                [128u16 * 257, 128 * 257, 128 * 257, 65535, 0, 64 * 257]
+                    .iter()
+                    .flat_map(|v| v.to_be_bytes())
+                    .collect(),
+            ),
+        ] {
+            write(color, depth, &data);
+            let t = ImageTexture::load(&path).unwrap();
+            assert_eq!((t.width, t.height), (2, 1));
+            assert!((t.pixels[0] - Color::splat(g)).length() < 1e-6, "{color:?} {depth:?}");
+            assert!((t.pixels[1] - second).length() < 1e-6, "{color:?} {depth:?}");
+        }
+        write(png::ColorType::Grayscale, png::BitDepth::Eight, &[128, 255]);
+        let t = ImageTexture::load(&path).unwrap();
+        assert_eq!(t.pixels, vec![Color::splat(g), Color::ONE]);
+        std::fs::write(&path, b"not a png").unwrap();
+        let err = ImageTexture::load(&path).unwrap_err();
+        assert!(err.contains("two.png"), "{err}");
+        std::fs::remove_dir_all(&dir).ok();
 
         let missing = std::path::Path::new("/nonexistent/dir/albedo.png");
         let err = ImageTexture::load(missing).unwrap_err();

@@ -51,7 +51,6 @@
 
 use super::Image;
 use crate::math::Color;
-use image::ImageEncoder;
 use std::fs::{File, OpenOptions};
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
@@ -231,17 +230,18 @@ impl Image {
 
     fn encode_png(&self, w: impl Write, exposure_stops: f32) -> io::Result<()> {
         let bytes = self.to_srgb8(exposure_stops);
-        image::codecs::png::PngEncoder::new(w)
-            .write_image(
-                &bytes,
-                self.width,
-                self.height,
-                image::ExtendedColorType::Rgb8,
-            )
-            .map_err(|e| match e {
-                image::ImageError::IoError(e) => e,
-                e => io::Error::other(e),
-            })
+        let as_io = |e: png::EncodingError| match e {
+            png::EncodingError::IoError(e) => e,
+            e => io::Error::other(e),
+        };
+        let mut encoder = png::Encoder::new(w, self.width, self.height);
+        encoder.set_color(png::ColorType::Rgb);
+        encoder.set_depth(png::BitDepth::Eight);
+        // The values are sRGB-encoded: say so in the file (its sRGB chunk).
+        encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
+        let mut writer = encoder.write_header().map_err(as_io)?;
+        writer.write_image_data(&bytes).map_err(as_io)?;
+        writer.finish().map_err(as_io)
     }
 
     /// Writes the image as a linear, unclamped float32 RGB OpenEXR file,
@@ -349,17 +349,27 @@ mod tests {
 
         let png = dir.join("a.png");
         img.write_png(&png, 0.0).unwrap();
-        let decoded = image::open(&png).unwrap().to_rgb8();
-        assert_eq!(decoded.dimensions(), (5, 3));
+        // The file's pixels as (width, height, RGB bytes).
+        let decode = |path: &Path| {
+            let file = std::fs::File::open(path).unwrap();
+            let mut reader = png::Decoder::new(std::io::BufReader::new(file))
+                .read_info()
+                .unwrap();
+            assert_eq!(reader.info().srgb, Some(png::SrgbRenderingIntent::Perceptual));
+            let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+            let frame = reader.next_frame(&mut buf).unwrap();
+            assert_eq!(frame.color_type, png::ColorType::Rgb);
+            (frame.width, frame.height, buf)
+        };
+        let (w, h, rgb) = decode(&png);
+        assert_eq!((w, h), (5, 3));
+        let pixel = |x: usize, y: usize| &rgb[3 * (y * 5 + x)..3 * (y * 5 + x) + 3];
         // 0.1 linear: 1.055 · 0.1^(1/2.4) − 0.055 = 0.3492 → 89.04 → 89.
-        assert_eq!(decoded.get_pixel(0, 0).0, [188, 0, 89]);
-        assert_eq!(decoded.get_pixel(4, 2).0, [188, 255, 0]);
+        assert_eq!(pixel(0, 0), [188, 0, 89]);
+        assert_eq!(pixel(4, 2), [188, 255, 0]);
         // One stop brighter: 0.5 → 1.0.
         img.write_png(&png, 1.0).unwrap();
-        assert_eq!(
-            image::open(&png).unwrap().to_rgb8().get_pixel(0, 0).0[0],
-            255
-        );
+        assert_eq!(decode(&png).2[0], 255);
         std::fs::remove_dir_all(&dir).unwrap();
     }
 
