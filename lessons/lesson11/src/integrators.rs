@@ -159,6 +159,7 @@ impl IntegratorKind {
             IntegratorKind::Sppm => {
                 return Ok(IntegratorPlan::Sppm(biased::sppm_plan(
                     &args.biased,
+                    scene,
                     max_depth,
                     rr_depth,
                     force,
@@ -174,6 +175,7 @@ impl IntegratorKind {
                 return Ok(IntegratorPlan::Biased(biased::plan(
                     kind,
                     &args.biased,
+                    scene,
                     options.seed,
                     max_depth,
                     rr_depth,

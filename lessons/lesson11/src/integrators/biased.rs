@@ -10,7 +10,7 @@ use std::sync::atomic::AtomicBool;
 
 use anyhow::{Result, bail};
 use clap::Args;
-use raytracer::integrator::photon::{Photon, PhotonKind};
+use raytracer::integrator::photon::{Photon, PhotonKind, PhotonTracing, trace_light_vertices};
 use raytracer::integrator::roulette::MAX_SURVIVAL;
 use raytracer::integrator::sppm::SppmSettings;
 use raytracer::integrator::vpl::Vpl;
@@ -195,10 +195,9 @@ impl BiasedArgs {
 /// one more survival, each with probability at most
 /// [`MAX_SURVIVAL`] = 0.95, so the expected count is at most
 /// `max(rr_depth, 1) + Σ_{j≥1} 0.95^j = max(rr_depth, 1) + 19` (a closed
-/// box of white walls at the default `rr_depth` 5 comes close: 24). For the
-/// millions of paths where memory
-/// matters, the total stays within a fraction of a percent of `N` times this
-/// mean (one path's count has a standard deviation below 20).
+/// box of white walls at the default `rr_depth` 5 comes close: 24). One
+/// path's count has a standard deviation below 20 (the tail after `rr_depth`
+/// is at most geometric with survival 0.95: √0.95/0.05 ≈ 19.5).
 fn vertices_per_path(max_depth: Option<u32>, rr_depth: u32) -> u64 {
     let roulette = (MAX_SURVIVAL as f64 / (1.0 - MAX_SURVIVAL as f64)).ceil() as u64;
     let by_roulette = (rr_depth.max(1) as u64).saturating_add(roulette);
@@ -220,22 +219,51 @@ const PHOTON_PEAK_BYTES: u64 = 4 * std::mem::size_of::<(PhotonKind, Photon)>() a
 /// vector up to twice its length; the scaling afterwards reuses the buffer).
 const VPL_PEAK_BYTES: u64 = 4 * std::mem::size_of::<Vpl>() as u64;
 
-/// What a tracing of `paths` light paths needs at its peak (`None`: more
-/// than 2⁶⁴ bytes), and the words that say so.
+/// Light paths of the pilot tracing that measures what a scene's light paths
+/// leave (a few milliseconds).
+const PILOT_PATHS: u64 = 8192;
+
+/// The photons (or VPLs) a light path of `scene` leaves on average, as a
+/// number memory can be planned with: the mean of a pilot of
+/// [`PILOT_PATHS`] light paths (random numbers of their own), plus 4
+/// standard errors of that mean (a path's count has a standard deviation
+/// below 20, see [`vertices_per_path`]: 4 · 20/√8192 < 0.9), and never more
+/// than the bound [`vertices_per_path`]. Open scenes leave far fewer than the
+/// bound (the Cornell box about 3 of its 24). For the `N` ≫ 8192 paths where
+/// memory matters, `N` paths then leave fewer than `N` times this number
+/// except with a probability below 1e-4.
+fn expected_vertices_per_path(scene: &Scene, max_depth: Option<u32>, rr_depth: u32) -> f64 {
+    let bound = vertices_per_path(max_depth, rr_depth) as f64;
+    let tracing = PhotonTracing {
+        paths: PILOT_PATHS,
+        max_depth,
+        rr_depth,
+        seed: 0x9170,
+        stream: u64::MAX,
+    };
+    let pilot = trace_light_vertices(scene, &tracing, &AtomicBool::new(false), |_| Some(()));
+    let mean = pilot.items.len() as f64 / pilot.paths.max(1) as f64;
+    (mean + 4.0 * 20.0 / (PILOT_PATHS as f64).sqrt()).min(bound)
+}
+
+/// What a tracing of `paths` light paths of `scene` needs at its peak
+/// (`None`: more than 2⁶⁴ bytes), and the words that say so.
 fn tracing_memory(
+    scene: &Scene,
     paths: u64,
     max_depth: Option<u32>,
     rr_depth: u32,
     what: &str,
     peak_bytes: u64,
 ) -> (String, Option<u64>) {
-    let per_path = vertices_per_path(max_depth, rr_depth);
-    let bytes = paths
-        .checked_mul(per_path)
-        .and_then(|n| n.checked_mul(peak_bytes));
+    let per_path = expected_vertices_per_path(scene, max_depth, rr_depth);
+    let bytes = paths as f64 * per_path * peak_bytes as f64;
     (
-        format!("tracing {paths} light paths (up to {per_path} {what} each on average)"),
-        bytes,
+        format!(
+            "tracing {paths} light paths (about {per_path:.1} {what} each on average, \
+             measured on {PILOT_PATHS})"
+        ),
+        (bytes < u64::MAX as f64).then_some(bytes.ceil() as u64),
     )
 }
 
@@ -262,6 +290,7 @@ pub enum BiasedPlan {
 pub fn plan(
     kind: BiasedKind,
     args: &BiasedArgs,
+    scene: &Scene,
     seed: u64,
     max_depth: Option<u32>,
     rr_depth: u32,
@@ -270,15 +299,21 @@ pub fn plan(
     Ok(match kind {
         BiasedKind::Photon => {
             let s = args.photon(max_depth, rr_depth, seed)?;
-            let (what, bytes) =
-                tracing_memory(s.photons, max_depth, rr_depth, "photons", PHOTON_PEAK_BYTES);
+            let (what, bytes) = tracing_memory(
+                scene,
+                s.photons,
+                max_depth,
+                rr_depth,
+                "photons",
+                PHOTON_PEAK_BYTES,
+            );
             check_memory(&what, bytes, "--photons (or --max-depth)", force)?;
             BiasedPlan::Photon(s)
         }
         BiasedKind::Vpl => {
             let s = args.vpl(max_depth, rr_depth, seed)?;
             let (what, bytes) =
-                tracing_memory(s.paths, max_depth, rr_depth, "VPLs", VPL_PEAK_BYTES);
+                tracing_memory(scene, s.paths, max_depth, rr_depth, "VPLs", VPL_PEAK_BYTES);
             check_memory(&what, bytes, "--vpl-paths (or --max-depth)", force)?;
             BiasedPlan::Vpl(s)
         }
@@ -293,12 +328,14 @@ pub fn plan(
 /// doubles with `force`).
 pub fn sppm_plan(
     args: &BiasedArgs,
+    scene: &Scene,
     max_depth: Option<u32>,
     rr_depth: u32,
     force: bool,
 ) -> Result<SppmSettings> {
     let settings = args.sppm(max_depth, rr_depth)?;
     let (what, bytes) = tracing_memory(
+        scene,
         settings.photons,
         settings.max_depth,
         settings.rr_depth,
