@@ -44,9 +44,14 @@ impl Merger {
         }
     }
 
-    /// Takes finished chain `c`, merges every chain now next in line, and
-    /// hands back a run to reuse.
-    pub(super) fn submit(&mut self, c: u64, run: ChainRun) -> ChainRun {
+    /// Takes finished chain `c`, merges every chain now next in line (calling
+    /// `merged` after each one, in chain order), and hands back a run to reuse.
+    pub(super) fn submit(
+        &mut self,
+        c: u64,
+        run: ChainRun,
+        mut merged: impl FnMut(&Merger),
+    ) -> ChainRun {
         let slot = (c - self.next) as usize;
         if self.pending.len() <= slot {
             self.pending.resize_with(slot + 1, || None);
@@ -57,6 +62,7 @@ impl Merger {
             self.merge(&run);
             self.spare.push(run);
             self.next += 1;
+            merged(self);
         }
         self.spare.pop().unwrap_or_default()
     }

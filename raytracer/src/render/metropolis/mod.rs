@@ -327,12 +327,7 @@ impl ChainJob<'_> {
                     std::thread::sleep(std::time::Duration::from_millis(1));
                 }
                 self.run(c, &mut run);
-                let mut merger = lock();
-                let merged = merger.next;
-                run = merger.submit(c, run);
-                if merger.next > merged {
-                    self.show(&merger);
-                }
+                run = lock().submit(c, run, |merger| self.show(merger));
             }
         });
     }
