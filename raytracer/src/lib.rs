@@ -16,7 +16,7 @@
 //! | 4 | [`brdf`] | Lambert, normalized Phong, mirror, glass | BRDFs |
 //! | 4 | [`light`] | area, point and environment lights | `L_e` of the rendering equation |
 //! | 5 | [`scene`] | the scene, its TOML format and the built-in scenes | Cornell box |
-//! | 6 | [`integrator`] | direct light, AO, naive recursion, path, light and bidirectional tracing | rendering equation, GI algorithms |
+//! | 6 | [`integrator`] | direct light, AO, naive recursion, path, light and bidirectional tracing; photon mapping, SPPM, instant radiosity, irradiance caching | rendering equation, GI algorithms: unbiased and biased |
 //! | 7 | [`render`] | the parallel, deterministic loop over pixels; BDPT's strategy images; Metropolis light transport's chains | GI algorithms: Metropolis |
 //! | 8 | [`stereo`] | stereo rig, anaglyphs, side-by-side, crosstalk, light fields | stereoscopy |
 //! | 8 | [`metrics`] | image statistics and comparisons for the lessons and the grader | — |
