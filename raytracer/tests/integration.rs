@@ -3,8 +3,8 @@
 //! `cargo test` within its time budget. `cargo test -p raytracer --test
 //! integration furnace` runs one file's tests.
 
-mod common;
 mod biased;
+mod common;
 mod cornell;
 mod determinism;
 mod direct_lighting;

@@ -81,7 +81,8 @@ impl ImageTexture {
     /// Loads a PNG (any colour type and bit depth), converting its sRGB
     /// values to linear RGB; alpha is ignored.
     pub fn load(path: &std::path::Path) -> Result<ImageTexture, String> {
-        let named = |e: &dyn std::fmt::Display| format!("cannot load texture '{}': {e}", path.display());
+        let named =
+            |e: &dyn std::fmt::Display| format!("cannot load texture '{}': {e}", path.display());
         let file = std::fs::File::open(path).map_err(|e| named(&e))?;
         let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
         // Palettes and grey below 8 bits become 8-bit samples.
@@ -223,7 +224,11 @@ mod tests {
         // 2×1 sRGB: mid grey (128) and (255, 0, 64), as RGB, as RGBA, and as
         // 16-bit RGB (128·257 is 128/255 exactly); grey alone as 8-bit grey.
         for (color, depth, data) in [
-            (png::ColorType::Rgb, png::BitDepth::Eight, vec![128, 128, 128, 255, 0, 64]),
+            (
+                png::ColorType::Rgb,
+                png::BitDepth::Eight,
+                vec![128, 128, 128, 255, 0, 64],
+            ),
             (
                 png::ColorType::Rgba,
                 png::BitDepth::Eight,
@@ -241,8 +246,14 @@ mod tests {
             write(color, depth, &data);
             let t = ImageTexture::load(&path).unwrap();
             assert_eq!((t.width, t.height), (2, 1));
-            assert!((t.pixels[0] - Color::splat(g)).length() < 1e-6, "{color:?} {depth:?}");
-            assert!((t.pixels[1] - second).length() < 1e-6, "{color:?} {depth:?}");
+            assert!(
+                (t.pixels[0] - Color::splat(g)).length() < 1e-6,
+                "{color:?} {depth:?}"
+            );
+            assert!(
+                (t.pixels[1] - second).length() < 1e-6,
+                "{color:?} {depth:?}"
+            );
         }
         write(png::ColorType::Grayscale, png::BitDepth::Eight, &[128, 255]);
         let t = ImageTexture::load(&path).unwrap();

@@ -355,7 +355,10 @@ mod tests {
             let mut reader = png::Decoder::new(std::io::BufReader::new(file))
                 .read_info()
                 .unwrap();
-            assert_eq!(reader.info().srgb, Some(png::SrgbRenderingIntent::Perceptual));
+            assert_eq!(
+                reader.info().srgb,
+                Some(png::SrgbRenderingIntent::Perceptual)
+            );
             let mut buf = vec![0; reader.output_buffer_size().unwrap()];
             let frame = reader.next_frame(&mut buf).unwrap();
             assert_eq!(frame.color_type, png::ColorType::Rgb);
