@@ -48,51 +48,53 @@ pub fn mis_weight(
         t >= 1 && s + t >= 2,
         "strategy ({s}, {t}) has no camera vertex"
     );
-    // Save what we change.
-    let saved_l: [Option<Vertex>; 2] = [
-        s.checked_sub(1).map(|i| light[i]),
-        s.checked_sub(2).map(|i| light[i]),
-    ];
-    let saved_c: [Option<Vertex>; 2] = [
-        t.checked_sub(1).map(|i| camera[i]),
-        t.checked_sub(2).map(|i| camera[i]),
-    ];
-    if let Some(v) = sampled {
-        // (1, 1) resamples the lens point, not the light point.
-        if t == 1 {
-            camera[0] = v;
-        } else if s == 1 {
-            light[0] = v;
-        }
-    }
+    // The sampled endpoint takes its subpath's place for the moment (and the
+    // vertex it replaces is put back at the end); everything else this
+    // changes is four reverse densities and two delta flags, saved as
+    // numbers: copying whole vertices took an eighth of BDPT's time.
+    let replaced = match sampled {
+        Some(v) if t == 1 => Some((true, std::mem::replace(&mut camera[0], v))),
+        Some(v) if s == 1 => Some((false, std::mem::replace(&mut light[0], v))),
+        _ => None,
+    };
     // Endpoints are connected deterministically: not deltas for the sums.
+    let saved_delta = (
+        s.checked_sub(1).map(|i| light[i].delta),
+        camera[t - 1].delta,
+    );
     if s > 0 {
         light[s - 1].delta = false;
     }
-    if t > 0 {
-        camera[t - 1].delta = false;
-    }
-    let qs = (s > 0).then(|| light[s - 1]);
-    let qs_minus = (s > 1).then(|| light[s - 2]);
-    let pt = camera[t - 1];
-    let pt_minus = (t > 1).then(|| camera[t - 2]);
-    // Reverse densities across the connection.
-    camera[t - 1].pdf_rev_a = match &qs {
-        Some(q) => q.pdf_a(scene, qs_minus.as_ref(), &pt),
-        None => pt.pdf_light_origin_a(scene),
+    camera[t - 1].delta = false;
+    // Reverse densities across the connection, all from the path as it is:
+    // of the camera endpoint and its predecessor, of the light endpoint and
+    // its predecessor.
+    let (pt_rev, pt_minus_rev, qs_rev, qs_minus_rev) = {
+        let qs = s.checked_sub(1).map(|i| &light[i]);
+        let qs_minus = s.checked_sub(2).map(|i| &light[i]);
+        let pt = &camera[t - 1];
+        let pt_minus = t.checked_sub(2).map(|i| &camera[i]);
+        (
+            match qs {
+                Some(q) => q.pdf_a(scene, qs_minus, pt),
+                None => pt.pdf_light_origin_a(scene),
+            },
+            pt_minus.map(|pm| match qs {
+                Some(q) => pt.pdf_a(scene, Some(q), pm),
+                None => pt.pdf_light_a(scene, pm),
+            }),
+            qs.map(|q| pt.pdf_a(scene, pt_minus, q)),
+            qs.zip(qs_minus).map(|(q, qm)| q.pdf_a(scene, Some(pt), qm)),
+        )
     };
-    if let Some(pm) = &pt_minus {
-        camera[t - 2].pdf_rev_a = match &qs {
-            Some(q) => pt.pdf_a(scene, Some(q), pm),
-            None => pt.pdf_light_a(scene, pm),
-        };
-    }
-    if let Some(q) = &qs {
-        light[s - 1].pdf_rev_a = pt.pdf_a(scene, pt_minus.as_ref(), q);
-        if let Some(qm) = &qs_minus {
-            light[s - 2].pdf_rev_a = q.pdf_a(scene, Some(&pt), qm);
-        }
-    }
+    // Set them, keeping the values they replace.
+    let set = |v: &mut Vertex, pdf: f32| std::mem::replace(&mut v.pdf_rev_a, pdf);
+    let saved_rev = (
+        set(&mut camera[t - 1], pt_rev),
+        pt_minus_rev.map(|p| set(&mut camera[t - 2], p)),
+        qs_rev.map(|p| set(&mut light[s - 1], p)),
+        qs_minus_rev.map(|p| set(&mut light[s - 2], p)),
+    );
     // The light point y_0 has the density of a light path's origin in every
     // strategy with s ≥ 2 and in (1, 1), which the stored densities use;
     // but (1, t ≥ 2) resamples it by next event estimation from its
@@ -131,17 +133,24 @@ pub fn mis_weight(
         }
     }
     // Restore.
-    if let Some(v) = saved_l[0] {
-        light[s - 1] = v;
+    camera[t - 1].pdf_rev_a = saved_rev.0;
+    if let Some(p) = saved_rev.1 {
+        camera[t - 2].pdf_rev_a = p;
     }
-    if let Some(v) = saved_l[1] {
-        light[s - 2] = v;
+    if let Some(p) = saved_rev.2 {
+        light[s - 1].pdf_rev_a = p;
     }
-    if let Some(v) = saved_c[0] {
-        camera[t - 1] = v;
+    if let Some(p) = saved_rev.3 {
+        light[s - 2].pdf_rev_a = p;
     }
-    if let Some(v) = saved_c[1] {
-        camera[t - 2] = v;
+    if let Some(d) = saved_delta.0 {
+        light[s - 1].delta = d;
+    }
+    camera[t - 1].delta = saved_delta.1;
+    match replaced {
+        Some((true, v)) => camera[0] = v,
+        Some((false, v)) => light[0] = v,
+        None => {}
     }
     let own = c(s) * c(s);
     let w = own / (own + sum);
