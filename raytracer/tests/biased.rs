@@ -267,14 +267,17 @@ fn mitsuba_32() -> Image {
 ///
 /// The bias is made visible with a large initial radius (0.5, a quarter of
 /// the box): then the blur dominates the noise. Each pass count is rendered
-/// with 4 seeds (3 000 photon paths per pass) and their tile means averaged
+/// with 8 seeds (3 000 photon paths per pass) and their tile means averaged
 /// (4×4 tiles of 8×8 pixels; the two tiles holding the light are left out,
 /// as their error is the anti-aliasing noise of the light's edge, 18.6 vs
 /// 0.5 in one pixel). The RMS of the tiles' relative errors must fall
-/// monotonically (measured 4.7%, 3.5%, 2.7%) and after 64 passes every tile
-/// must be within 9% (measured 6.3%). The seeds are fixed: the numbers do
-/// not change from run to run; the margins cover a change of the random
-/// numbers (the averaged noise is about 1% per tile).
+/// monotonically (measured 4.2%, 3.2%, 2.5%) and after 64 passes every tile
+/// must be within 9% (measured 5.4%). The seeds are fixed, so the numbers
+/// do not change from run to run; under other random numbers (10 other sets
+/// of 8 seeds measured) the first step fell by 1.04 ± 0.36 points and the
+/// second by 0.80 ± 0.14, the worst tile stayed below 5.5%: a false failure
+/// after a change of the random numbers has a probability of about 0.2%
+/// (the first step's 2.9 standard deviations).
 #[test]
 fn sppm_bias_falls_with_the_passes_on_mitsubas_cornell_box() {
     let scene = small("cornell", 32, 32);
@@ -302,10 +305,10 @@ fn sppm_bias_falls_with_the_passes_on_mitsubas_cornell_box() {
     let mut rms = Vec::new();
     for passes in [4, 16, 64] {
         let mut tiles = vec![Color::ZERO; 16];
-        for seed in 0..4u64 {
+        for seed in 0..8u64 {
             let img = sppm_image(&scene, &settings, passes, 100 + seed);
             for (a, t) in tiles.iter_mut().zip(tile_means(&img, 8)) {
-                *a += t / 4.0;
+                *a += t / 8.0;
             }
         }
         let errors: Vec<f64> = (0..16)
@@ -377,11 +380,16 @@ fn irradiance_caching_gives_the_furnace_within_its_noise() {
 /// As `a` shrinks, irradiance caching approaches the path tracer (Cornell
 /// box 32×32, D = 4, both with the same light sampling for direct light):
 /// the RMSE against a 1024-spp path tracer (off the light and its edge,
-/// where the anti-aliasing noise of an 18.6-bright pixel would dominate) falls from a = 1 to 0.4 to 0.1
-/// (more records, less interpolation), and the record count grows. With
-/// 256 rays per record the records' noise is below the interpolation error
-/// at these thresholds. Measured (fixed seeds): 88, 252, 793 records and
-/// RMSE 0.0145, 0.0084, 0.0073.
+/// where the anti-aliasing noise of an 18.6-bright pixel would dominate,
+/// and without the 1% largest pixel errors: the direct light's rare
+/// fireflies on the ceiling beside the lamp, the same for every `a`, took
+/// the RMSE to 0.085 for some seeds and hid the differences) falls from
+/// a = 1 to 0.4 to 0.1 (more records, less interpolation), and the record
+/// count grows. With 256 rays per record the records' noise is below the
+/// interpolation error at these thresholds. Measured (fixed seeds): 88,
+/// 252, 793 records and RMSE 0.0131, 0.0075, 0.0063; over 15 other seed
+/// pairs the last step fell by 0.00144 ± 0.00027, 5 standard deviations
+/// (a false failure under other random numbers: below 1e-6).
 #[test]
 fn irradiance_caching_approaches_the_path_tracer_as_a_shrinks() {
     let scene = small("cornell", 32, 32);
@@ -395,7 +403,7 @@ fn irradiance_caching_approaches_the_path_tracer_as_a_shrinks() {
     for a in [1.0f32, 0.4, 0.1] {
         let cache = ic(&scene, a, 256, depth, 1);
         let img = image(&scene, &cache, 16, 2);
-        let e = rmse_off_the_light(&img, &reference);
+        let e = trimmed_rmse_off_the_light(&img, &reference);
         eprintln!(
             "irradiance cache a = {a}: {} records, RMSE {e:.4}",
             cache.records().len()
@@ -524,6 +532,20 @@ fn irradiance_gradients_do_not_depend_on_the_threads() {
     );
 }
 
+/// [`rmse_off_the_light`] without the 1% largest pixel errors.
+fn trimmed_rmse_off_the_light(img: &Image, reference: &Image) -> f32 {
+    let mut errors: Vec<f64> = img
+        .pixels
+        .iter()
+        .zip(&reference.pixels)
+        .filter(|(_, b)| raytracer::math::luminance(**b) < 1.0)
+        .map(|(a, b)| (*a - *b).length_squared() as f64 / 3.0)
+        .collect();
+    errors.sort_by(f64::total_cmp);
+    let kept = &errors[..errors.len() - errors.len() / 100];
+    (kept.iter().sum::<f64>() / kept.len().max(1) as f64).sqrt() as f32
+}
+
 /// The RMSE over the pixels whose reference luminance is below 1 (not the
 /// light, nor pixels that partly see it).
 fn rmse_off_the_light(img: &Image, reference: &Image) -> f32 {
@@ -541,10 +563,15 @@ fn rmse_off_the_light(img: &Image, reference: &Image) -> f32 {
 /// does and a path tracer cannot (its paths would have to hit the point
 /// light after refracting): in the brightest 4×4 block of floor pixels of
 /// the photon-mapping image (64×48, 100 000 photon paths, k = 50), photon
-/// mapping is more than 3 times brighter than the path tracer (measured
-/// 0.79 vs 0.22), and holds more than 40% of what light tracing finds in
-/// the same block (measured 0.79 of 1.30: photon mapping blurs the spot
-/// over its search disk, the lecture's bias at a caustic's edge).
+/// mapping is more than 1.5 times brighter than the path tracer (measured
+/// 0.79 vs 0.22: 3.6×; a photon map without the caustic would be about as
+/// dark as the path tracer), and holds more than 30% of what light tracing
+/// finds in the same block (measured 0.79 of 1.30: photon mapping blurs the
+/// spot over its search disk, the lecture's bias at a caustic's edge). The
+/// seeds are fixed; under 11 other sets of seeds the two ratios ranged over
+/// 3.3–13.7 and 0.52–1.54, their logarithms 2.9 standard deviations above
+/// the thresholds' (a false failure under other random numbers: about 0.2%
+/// each).
 #[test]
 fn photon_mapping_finds_the_caustic() {
     use raytracer::integrator::LightTracer;
@@ -606,8 +633,8 @@ fn photon_mapping_finds_the_caustic() {
     let (v_pm, bx, by) = best;
     let (v_pt, v_lt) = (block(&i_pt, bx, by), block(&i_lt, bx, by));
     eprintln!("caustic block ({bx}, {by}): photon {v_pm:.3}, path {v_pt:.3}, light {v_lt:.3}");
-    assert!(v_pm > 3.0 * v_pt, "photon {v_pm} vs path {v_pt}");
-    assert!(v_pm > 0.4 * v_lt, "photon {v_pm} vs light {v_lt}");
+    assert!(v_pm > 1.5 * v_pt, "photon {v_pm} vs path {v_pt}");
+    assert!(v_pm > 0.3 * v_lt, "photon {v_pm} vs light {v_lt}");
 }
 
 /// Instant radiosity and irradiance caching give the same image bit for bit

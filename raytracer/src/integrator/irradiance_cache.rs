@@ -822,7 +822,7 @@ mod tests {
 
     /// The measurement behind the tolerance above (run with `--ignored`).
     #[test]
-    #[ignore]
+    #[ignore = "a measurement, not a test"]
     fn measure_half_plane_errors() {
         let strata = Strata::for_rays(4096);
         let h = 1.0f32;
