@@ -19,10 +19,12 @@
 //! listed picture that its command does make fails the test until its row is
 //! deleted.
 
+#[path = "support/chromium.rs"]
+mod chromium;
+
 use std::collections::BTreeMap;
-use std::io::Read as _;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Output};
 use std::sync::OnceLock;
 use std::time::{Duration, Instant};
 
@@ -433,69 +435,14 @@ fn every_command_run_at_tiny_size_writes_the_pictures_of_its_slide() {
     let _ = std::fs::remove_dir_all(&root);
 }
 
-/// Chromium, where a student or CI installed it: on PATH, else /usr/bin/chromium.
-fn chromium() -> Option<PathBuf> {
-    std::env::var_os("PATH")
-        .and_then(|paths| {
-            std::env::split_paths(&paths)
-                .map(|d| d.join("chromium"))
-                .find(|p| p.is_file())
-        })
-        .or_else(|| Some(PathBuf::from("/usr/bin/chromium")).filter(|p| p.is_file()))
-}
-
 /// The DOM of `url` after its load event, in headless Chromium with a window
 /// of `width`×`height` and a fresh profile; an error after a minute.
 fn dump_dom(chromium: &Path, url: &str, width: u32, height: u32) -> Result<String, String> {
-    static RUN: std::sync::atomic::AtomicU32 = std::sync::atomic::AtomicU32::new(0);
-    let n = RUN.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let profile = scratch(&format!("chromium-profile-{n}"));
-    let mut child = Command::new(chromium)
-        .args([
-            "--headless",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--disable-quic",
-            "--no-first-run",
-            "--disable-background-networking",
-            "--disable-component-update",
-            "--disable-sync",
-            "--hide-scrollbars",
-        ])
-        .arg(format!("--user-data-dir={}", profile.display()))
-        .arg(format!("--window-size={width},{height}"))
-        .arg("--dump-dom")
-        .arg(url)
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::null())
-        .spawn()
-        .map_err(|e| format!("cannot start {}: {e}", chromium.display()))?;
-    let mut stdout = child.stdout.take().unwrap();
-    let reader = std::thread::spawn(move || {
-        let mut s = String::new();
-        let _ = stdout.read_to_string(&mut s);
-        s
-    });
-    let deadline = Instant::now() + Duration::from_secs(60);
-    let status = loop {
-        if let Some(status) = child.try_wait().map_err(|e| e.to_string())? {
-            break status;
-        }
-        if Instant::now() > deadline {
-            let _ = child.kill();
-            let _ = child.wait();
-            let _ = std::fs::remove_dir_all(&profile);
-            return Err(format!("chromium did not finish {url} within a minute"));
-        }
-        std::thread::sleep(Duration::from_millis(50));
-    };
-    let dom = reader.join().unwrap_or_default();
-    let _ = std::fs::remove_dir_all(&profile);
-    if !status.success() {
-        return Err(format!("chromium failed on {url}: {status}"));
-    }
-    Ok(dom)
+    let extra = [
+        format!("--window-size={width},{height}"),
+        "--dump-dom".to_string(),
+    ];
+    chromium::run(chromium, url, &extra, Duration::from_secs(60))
 }
 
 /// The deck's `#check` report: the size the page had, how many slides it
@@ -549,7 +496,7 @@ fn check_deck(
 
 #[test]
 fn every_slide_fits_the_screen_at_three_sizes_in_chromium() {
-    let Some(chromium) = chromium() else {
+    let Some(chromium) = chromium::chromium() else {
         eprintln!(
             "skipped: no chromium on PATH or at /usr/bin/chromium, so the slides' fit was not \
              measured (install Debian's `chromium` package to run this test)"
@@ -616,7 +563,7 @@ fn every_slide_fits_the_screen_at_three_sizes_in_chromium() {
 
 #[test]
 fn the_check_mode_reports_a_slide_that_does_not_fit() {
-    let Some(chromium) = chromium() else {
+    let Some(chromium) = chromium::chromium() else {
         eprintln!("skipped: no chromium, so the #check mode itself was not tried");
         return;
     };

@@ -1,4 +1,4 @@
-//! Headless Chromium for the lab's browser tests: where it is installed,
+//! Headless Chromium for the browser tests (the lab, the slides): where it is installed,
 //! and the DOM or a screenshot of a page after its script ran. A test that
 //! finds no Chromium prints that it was skipped and passes, so a student's
 //! `cargo test` stays green with only Rust installed.
