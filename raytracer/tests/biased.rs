@@ -377,6 +377,19 @@ fn irradiance_caching_gives_the_furnace_within_its_noise() {
     }
 }
 
+/// The path tracer's Cornell box at 32×32, D = 4, 1024 spp (seed 9): the
+/// reference of the irradiance-cache tests, rendered once for all of them.
+fn cornell_32_d4_reference() -> &'static Image {
+    static REFERENCE: std::sync::OnceLock<Image> = std::sync::OnceLock::new();
+    REFERENCE.get_or_init(|| {
+        let pt = PathTracer {
+            max_depth: Some(4),
+            ..PathTracer::default()
+        };
+        image(&small("cornell", 32, 32), &pt, 1024, 9)
+    })
+}
+
 /// As `a` shrinks, irradiance caching approaches the path tracer (Cornell
 /// box 32×32, D = 4, both with the same light sampling for direct light):
 /// the RMSE against a 1024-spp path tracer (off the light and its edge,
@@ -394,16 +407,12 @@ fn irradiance_caching_gives_the_furnace_within_its_noise() {
 fn irradiance_caching_approaches_the_path_tracer_as_a_shrinks() {
     let scene = small("cornell", 32, 32);
     let depth = Some(4);
-    let pt = PathTracer {
-        max_depth: depth,
-        ..PathTracer::default()
-    };
-    let reference = image(&scene, &pt, 1024, 9);
+    let reference = cornell_32_d4_reference();
     let mut last = (f32::MAX, 0usize);
     for a in [1.0f32, 0.4, 0.1] {
         let cache = ic(&scene, a, 256, depth, 1);
         let img = image(&scene, &cache, 16, 2);
-        let e = trimmed_rmse_off_the_light(&img, &reference);
+        let e = trimmed_rmse_off_the_light(&img, reference);
         eprintln!(
             "irradiance cache a = {a}: {} records, RMSE {e:.4}",
             cache.records().len()
@@ -467,7 +476,7 @@ fn irradiance_gradients_vanish_in_the_furnace() {
 /// seeds): mean RMSE 0.0150 → 0.0113 (ratio 0.76) at a = 1, 0.0098 →
 /// 0.0084 (0.85) at a = 0.6, 0.0092 → 0.0081 (0.88) at a = 0.4; single runs'
 /// ratios 0.71–0.90. The gain shrinks with `a` because the error left at
-/// small `a` (0.0073 at a = 0.1) is not interpolation's, and gradients do
+/// small `a` (0.0073 at a = 0.1 by this untrimmed RMSE) is not interpolation's, and gradients do
 /// not remove it. The single runs' ratios spread by 0.06 (a = 1)
 /// to 0.02 (a = 0.4) from seed to seed (5 seeds measured), so each margin
 /// is at least 3 standard deviations of a 4-seed mean away (a false
@@ -476,17 +485,13 @@ fn irradiance_gradients_vanish_in_the_furnace() {
 fn irradiance_gradients_lower_the_error_at_equal_a() {
     let scene = small("cornell", 32, 32);
     let depth = Some(4);
-    let pt = PathTracer {
-        max_depth: depth,
-        ..PathTracer::default()
-    };
-    let reference = image(&scene, &pt, 1024, 9);
+    let reference = cornell_32_d4_reference();
     for (a, margin) in [(1.0f32, 0.85), (0.6, 0.95), (0.4, 0.95)] {
         let (mut sum_without, mut sum_with) = (0.0, 0.0);
         for seed in [11u64, 21, 31, 41] {
             let rmse = |gradients: bool| {
                 let cache = ic_with(&scene, a, 256, depth, seed, gradients);
-                rmse_off_the_light(&image(&scene, &cache, 16, seed + 1), &reference)
+                rmse_off_the_light(&image(&scene, &cache, 16, seed + 1), reference)
             };
             let (without, with) = (rmse(false), rmse(true));
             eprintln!(

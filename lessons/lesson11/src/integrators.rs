@@ -214,7 +214,6 @@ impl IntegratorPlan {
         options: &RenderOptions,
         stop: &AtomicBool,
     ) -> Result<Box<dyn Integrator + Send>> {
-        self.check_pixel_samples()?;
         match self {
             IntegratorPlan::Ready(integrator) => Ok(integrator),
             IntegratorPlan::Biased(plan) => Ok(plan.build(scene, options, stop)?.0),
