@@ -16,9 +16,10 @@
 //! (`A` the surface area of a box, `N` a primitive count) is compared with the
 //! cost of a leaf: `N` for primitives tested one by one, less for triangles,
 //! which a leaf of three or more tests four at a time ([`super::leaf`]), so
-//! leaves of triangles grow to fill their SIMD blocks. Binning is one pass over the primitives, so a level of
-//! the tree costs O(N); the two halves of a node are built in parallel (rayon)
-//! once they are large enough to pay for it.
+//! leaves of triangles grow to fill their SIMD blocks. Binning is one pass
+//! over the primitives, so a level of the tree costs O(N); the two halves of
+//! a node are built in parallel (rayon) once they are large enough to pay
+//! for it.
 //!
 //! # Layout
 //!
@@ -424,8 +425,8 @@ fn flatten(node: &BuildNode, nodes: &mut [BvhNode], at: usize, next: &mut usize)
 impl Bvh {
     /// Builds the tree over primitives given by their boxes; `grouped(i)`
     /// says whether primitive `i` is tested in SIMD blocks of four (a
-    /// triangle: see [`super::leaf`]), which makes leaves of up to four such
-    /// primitives cost one test in the surface area heuristic.
+    /// triangle: see [`super::leaf`]), which the surface area heuristic then
+    /// counts by the block when it weighs a leaf against a split.
     pub fn build(bounds: &[Aabb], grouped: impl Fn(usize) -> bool + Sync) -> Bvh {
         assert!(bounds.len() < u32::MAX as usize, "too many primitives");
         if bounds.is_empty() {

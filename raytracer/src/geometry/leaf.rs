@@ -3,9 +3,10 @@
 //! Lecture topic: none of its own (acceleration structures).
 //!
 //! A leaf is a range of [`PrimRecord`]s with its triangles first (the
-//! geometry orders each leaf so). The triangles are also packed four to a
-//! [`LeafBlock`], structure-of-arrays, and tested a block at a time in SIMD
-//! lanes ([`Triangle4`]); the leaf's other primitives (quads, spheres) are
+//! geometry orders each leaf so). A leaf of [`MIN_BLOCK`] triangles or more
+//! also packs them four to a [`LeafBlock`], structure-of-arrays, and tests
+//! them a block at a time in SIMD lanes ([`Triangle4`]); its other
+//! primitives (quads, spheres), and every primitive of a smaller leaf, are
 //! tested one by one from their records. Lane `k` of block `j` of a leaf
 //! is primitive `first + 4j + k`, so a hit names the same primitive, with
 //! the same distance and barycentrics bit for bit, as testing the records

@@ -10,10 +10,10 @@
 //! packets). Triangles use a watertight test ([`triangle`]): rays do not
 //! slip through the shared edges of a mesh; a single ray tests a leaf's
 //! triangles four at a time in SIMD lanes ([`leaf`], [`triangle4`]), with
-//! the same arithmetic. A [`Hit`] is what traversal returns (distance, primitive,
-//! two surface parameters); [`Geometry::surface_point`] turns it into a
-//! [`SurfacePoint`] with position, normals and texture coordinates only for the
-//! hit that is finally kept.
+//! the same arithmetic. A [`Hit`] is what traversal returns (distance,
+//! primitive, two surface parameters); [`Geometry::surface_point`] turns it
+//! into a [`SurfacePoint`] with position, normals and texture coordinates only
+//! for the hit that is finally kept.
 
 pub mod aabb;
 pub mod bvh;
