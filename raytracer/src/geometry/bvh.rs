@@ -14,12 +14,9 @@
 //! `C = C_trav + (A_L·N_L + A_R·N_R) / A`
 //!
 //! (`A` the surface area of a box, `N` a primitive count) is compared with the
-//! cost of a leaf: `N` for primitives tested one by one, less for triangles,
-//! which a leaf of three or more tests four at a time ([`super::leaf`]), so
-//! leaves of triangles grow to fill their SIMD blocks. Binning is one pass
-//! over the primitives, so a level of the tree costs O(N); the two halves of
-//! a node are built in parallel (rayon) once they are large enough to pay
-//! for it.
+//! cost `N` of a leaf. Binning is one pass over the primitives, so a level of
+//! the tree costs O(N); the two halves of a node are built in parallel (rayon)
+//! once they are large enough to pay for it.
 //!
 //! # Layout
 //!
@@ -49,18 +46,6 @@ use crate::math::{Vec3A, Vec4};
 pub const BINS: usize = 16;
 /// Cost of visiting a node, relative to one primitive test.
 const TRAVERSAL_COST: f32 = 1.0;
-/// Primitives a leaf tests at once (four-wide SIMD blocks).
-const LEAF_LANES: u32 = 4;
-/// Leaves with fewer grouped primitives test them one by one (a block
-/// test of one or two triangles costs more than testing them alone).
-pub const MIN_BLOCK: u32 = 3;
-/// Cost of testing one block of `LEAF_LANES` primitives, relative to one
-/// primitive alone. On the icosphere's single rays (the ignored
-/// `profile_primary_rays` measurement) 2 and 3 gave 179 and 182 ns a ray,
-/// 209 before blocks. Counting costs in blocks in the split search too (not
-/// only when choosing between a leaf and a split) made the Cornell box
-/// slower: its three walls ended in one leaf that every ray enters.
-const BLOCK_COST: f32 = 2.0;
 /// Largest leaf; larger groups are always split.
 const MAX_LEAF: usize = 8;
 /// Beyond this depth the build splits at the median, which bounds the depth
@@ -132,8 +117,7 @@ pub struct Bvh {
     pub order: Vec<u32>,
 }
 
-/// A primitive during the build: its box, with its index in `lo.w` and in
-/// `hi.w` 1 if it is tested in SIMD blocks of [`LEAF_LANES`], else 0.
+/// A primitive during the build: its box, with its index in `lo.w`.
 #[derive(Clone, Copy)]
 #[repr(C)]
 struct PrimRef {
@@ -149,11 +133,6 @@ impl PrimRef {
     #[inline]
     fn max(&self) -> Vec3A {
         Vec3A::from_vec4(self.hi)
-    }
-    /// 1 if the primitive is tested in blocks, else 0.
-    #[inline]
-    fn grouped(&self) -> u32 {
-        self.hi.w.to_bits()
     }
     /// Twice the centroid (the factor ½ cancels in every comparison).
     #[inline]
@@ -302,19 +281,6 @@ fn partition(refs: &mut [PrimRef], left: impl Fn(&PrimRef) -> bool) -> usize {
     }
 }
 
-/// Cost of a leaf holding `refs`: one per primitive tested alone, and
-/// [`BLOCK_COST`] per block of [`LEAF_LANES`] grouped primitives when there
-/// are at least [`MIN_BLOCK`] of them (the leaf then tests them in blocks).
-fn leaf_cost(refs: &[PrimRef]) -> f32 {
-    let grouped: u32 = refs.iter().map(PrimRef::grouped).sum();
-    let alone = (refs.len() as u32 - grouped) as f32;
-    if grouped < MIN_BLOCK {
-        alone + grouped as f32
-    } else {
-        alone + grouped.div_ceil(LEAF_LANES) as f32 * BLOCK_COST
-    }
-}
-
 fn build_node(refs: &mut [PrimRef], first: u32, depth: u32) -> BuildNode {
     let n = refs.len();
     let (bounds, centroids) = group_bounds(refs);
@@ -361,7 +327,7 @@ fn build_node(refs: &mut [PrimRef], first: u32, depth: u32) -> BuildNode {
         let (cost, axis, bin) = best;
         if cost.is_finite() {
             let split_cost = TRAVERSAL_COST + cost / bounds.surface_area().max(f32::MIN_POSITIVE);
-            if n > MAX_LEAF || split_cost < leaf_cost(refs) {
+            if n > MAX_LEAF || split_cost < n as f32 {
                 let mid = partition(refs, |r| binner.bin(r.centroid2())[axis] < bin);
                 split = Some((axis, mid));
             }
@@ -423,11 +389,8 @@ fn flatten(node: &BuildNode, nodes: &mut [BvhNode], at: usize, next: &mut usize)
 }
 
 impl Bvh {
-    /// Builds the tree over primitives given by their boxes; `grouped(i)`
-    /// says whether primitive `i` is tested in SIMD blocks of four (a
-    /// triangle: see [`super::leaf`]), which the surface area heuristic then
-    /// counts by the block when it weighs a leaf against a split.
-    pub fn build(bounds: &[Aabb], grouped: impl Fn(usize) -> bool + Sync) -> Bvh {
+    /// Builds the tree over primitives given by their boxes.
+    pub fn build(bounds: &[Aabb]) -> Bvh {
         assert!(bounds.len() < u32::MAX as usize, "too many primitives");
         if bounds.is_empty() {
             return Bvh::default();
@@ -437,7 +400,7 @@ impl Bvh {
             .enumerate()
             .map(|(i, b)| PrimRef {
                 lo: b.min.extend(f32::from_bits(i as u32)),
-                hi: b.max.extend(f32::from_bits(grouped(i) as u32)),
+                hi: b.max.extend(0.0),
             })
             .collect();
         let root = build_node(&mut refs, 0, 0);
@@ -590,7 +553,7 @@ mod tests {
     fn build_is_consistent() {
         for &n in &[1usize, 2, 7, 100, 20_000] {
             let boxes = random_boxes(n, n as u64);
-            let bvh = Bvh::build(&boxes, |_| false);
+            let bvh = Bvh::build(&boxes);
             let mut seen = bvh.order.clone();
             seen.sort_unstable();
             assert_eq!(seen, (0..n as u32).collect::<Vec<_>>());
@@ -604,7 +567,7 @@ mod tests {
         // All centroids equal: no SAH split exists, the median split must
         // still give small leaves and a bounded depth.
         let boxes = vec![Aabb::new(Vec3A::ZERO, Vec3A::ONE); 10_000];
-        let bvh = Bvh::build(&boxes, |_| false);
+        let bvh = Bvh::build(&boxes);
         let depth = check(&bvh, &boxes, 0, 1);
         assert!(depth < STACK);
         assert!(bvh.nodes.iter().all(|n| n.count() as usize <= MAX_LEAF));

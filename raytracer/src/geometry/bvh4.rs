@@ -17,10 +17,6 @@
 //! children a ray enters nearest first and skips those that start beyond the
 //! closest hit so far (closest hit); [`Bvh4::traverse_any`] visits them in
 //! any order and stops at the first blocker (shadow rays).
-//!
-//! What a leaf holds is the caller's: collapsing hands it each binary leaf's
-//! primitive range and stores the number it returns, which traversal passes
-//! back ([`super::leaf`] packs a leaf's triangles four to a SIMD block).
 
 use std::mem::MaybeUninit;
 
@@ -28,9 +24,10 @@ use super::aabb::InverseDirection;
 use super::bvh::{Bvh, BvhNode};
 use crate::math::{Vec3A, Vec4};
 
-/// Set in a child reference that points to a leaf: `LEAF | payload`, the
-/// number the caller gave for the leaf when the tree was collapsed.
+/// Set in a child reference that points to a leaf.
 const LEAF: u32 = 1 << 31;
+/// A leaf reference is `LEAF | first << COUNT_BITS | count`.
+const COUNT_BITS: u32 = 4;
 /// Traversal stack size (enough: pending subtrees are siblings of the nodes
 /// on the binary path from the root, whose depth the build keeps below 64).
 const STACK: usize = 64;
@@ -55,47 +52,35 @@ pub struct Bvh4 {
     pub nodes: Vec<Bvh4Node>,
 }
 
-/// The reference to a leaf: `leaf(first, count)` of its primitive range.
-fn leaf_ref(node: &BvhNode, leaf: &mut impl FnMut(u32, u32) -> u32) -> u32 {
-    let payload = leaf(node.offset(), node.count());
-    assert!(
-        payload < LEAF,
-        "leaf payload {payload} does not fit in 31 bits"
-    );
-    LEAF | payload
+fn leaf_ref(node: &BvhNode) -> u32 {
+    LEAF | node.offset() << COUNT_BITS | node.count()
 }
 
 impl Bvh4 {
-    /// Collapses a binary tree; each binary leaf becomes the payload
-    /// `leaf(first, count)` (below 2³¹) of its primitive range.
-    pub fn from_binary(bvh: &Bvh, mut leaf: impl FnMut(u32, u32) -> u32) -> Bvh4 {
+    /// Collapses a binary tree (which must have leaves of at most 15
+    /// primitives and fewer than 2²⁷ primitives in all).
+    pub fn from_binary(bvh: &Bvh) -> Bvh4 {
         let bin = &bvh.nodes[..];
         if bin.is_empty() {
             return Bvh4::default();
         }
+        assert!(
+            bvh.order.len() < 1 << (31 - COUNT_BITS),
+            "too many primitives for Bvh4"
+        );
         let mut nodes = Vec::with_capacity(bin.len() / 2);
         if bin[0].count() > 0 {
             // A single leaf: a root with one child.
             let mut root = empty_node();
-            let child = leaf_ref(&bin[0], &mut leaf);
-            set_lane(&mut root, 0, &bin[0], child);
+            set_lane(&mut root, 0, &bin[0], leaf_ref(&bin[0]));
             nodes.push(root);
         } else {
-            collapse(bin, 0, &mut nodes, &mut leaf);
+            collapse(bin, 0, &mut nodes);
         }
         Bvh4 { nodes }
     }
 
-    /// The payloads of all leaves.
-    pub fn leaves(&self) -> impl Iterator<Item = u32> + '_ {
-        self.nodes
-            .iter()
-            .flat_map(|n| n.child)
-            .filter(|&c| c != NONE && c & LEAF != 0)
-            .map(|c| c & !LEAF)
-    }
-
-    /// As [`Bvh::traverse`]: calls `leaf(payload, &mut t_max)` for the
+    /// As [`Bvh::traverse`]: calls `leaf(first, count, &mut t_max)` for the
     /// leaves the ray `o + t·d`, `t ∈ (0, t_max)`, enters, nearest first.
     #[inline(always)]
     pub fn traverse(
@@ -103,7 +88,7 @@ impl Bvh4 {
         o: Vec3A,
         d: Vec3A,
         mut t_max: f32,
-        mut leaf: impl FnMut(u32, &mut f32) -> bool,
+        mut leaf: impl FnMut(u32, u32, &mut f32) -> bool,
     ) {
         let nodes = &self.nodes[..];
         if nodes.is_empty() {
@@ -114,7 +99,8 @@ impl Bvh4 {
         let mut current = 0u32;
         loop {
             if current & LEAF != 0 {
-                if leaf(current & !LEAF, &mut t_max) {
+                let (first, count) = leaf_range(current);
+                if leaf(first, count, &mut t_max) {
                     return;
                 }
             } else {
@@ -172,7 +158,7 @@ impl Bvh4 {
         }
     }
 
-    /// Any-hit traversal for shadow rays: calls `leaf(payload)` for the
+    /// Any-hit traversal for shadow rays: calls `leaf(first, count)` for the
     /// leaves the ray `o + t·d`, `t ∈ (0, t_max)`, enters, in no particular
     /// order, until it returns `true` (something blocks the ray); returns
     /// whether it did. Since any blocker ends the walk, the children a ray
@@ -184,7 +170,7 @@ impl Bvh4 {
         o: Vec3A,
         d: Vec3A,
         t_max: f32,
-        mut leaf: impl FnMut(u32) -> bool,
+        mut leaf: impl FnMut(u32, u32) -> bool,
     ) -> bool {
         let nodes = &self.nodes[..];
         if nodes.is_empty() {
@@ -195,7 +181,8 @@ impl Bvh4 {
         let mut current = 0u32;
         loop {
             if current & LEAF != 0 {
-                if leaf(current & !LEAF) {
+                let (first, count) = leaf_range(current);
+                if leaf(first, count) {
                     return true;
                 }
             } else {
@@ -218,6 +205,15 @@ impl Bvh4 {
             current = c;
         }
     }
+}
+
+/// First primitive and count of a leaf reference.
+#[inline(always)]
+fn leaf_range(reference: u32) -> (u32, u32) {
+    (
+        (reference & !LEAF) >> COUNT_BITS,
+        reference & ((1 << COUNT_BITS) - 1),
+    )
 }
 
 /// A ray prepared for the slab tests of four boxes at once.
@@ -318,12 +314,7 @@ fn set_lane(node: &mut Bvh4Node, lane: usize, from: &BvhNode, child: u32) {
 
 /// Writes the four-wide node for the binary interior node `at` and its
 /// subtree; returns its index.
-fn collapse(
-    bin: &[BvhNode],
-    at: usize,
-    out: &mut Vec<Bvh4Node>,
-    leaf: &mut impl FnMut(u32, u32) -> u32,
-) -> u32 {
+fn collapse(bin: &[BvhNode], at: usize, out: &mut Vec<Bvh4Node>) -> u32 {
     // Start from the two children; open the interior child with the largest
     // surface area (the one most rays enter) until there are four.
     let c = bin[at].offset() as usize;
@@ -353,9 +344,9 @@ fn collapse(
     let mut node = empty_node();
     for (lane, &k) in kids[..n].iter().enumerate() {
         let child = if bin[k].count() > 0 {
-            leaf_ref(&bin[k], leaf)
+            leaf_ref(&bin[k])
         } else {
-            collapse(bin, k, out, leaf)
+            collapse(bin, k, out)
         };
         set_lane(&mut node, lane, &bin[k], child);
     }

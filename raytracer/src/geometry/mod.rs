@@ -8,19 +8,15 @@
 //! All primitives of a scene (triangles of every mesh, spheres, quads) live in
 //! one binned-SAH BVH ([`bvh`], traversed four-wide by [`bvh4`], or by ray
 //! packets). Triangles use a watertight test ([`triangle`]): rays do not
-//! slip through the shared edges of a mesh; a single ray tests a leaf's
-//! triangles four at a time in SIMD lanes ([`leaf`], [`triangle4`]), with
-//! the same arithmetic. A [`Hit`] is what traversal returns (distance,
-//! primitive, two surface parameters); [`Geometry::surface_point`] turns it
-//! into a [`SurfacePoint`] with position, normals and texture coordinates only
-//! for the hit that is finally kept.
+//! slip through the shared edges of a mesh. A [`Hit`] is what traversal returns (distance, primitive,
+//! two surface parameters); [`Geometry::surface_point`] turns it into a
+//! [`SurfacePoint`] with position, normals and texture coordinates only for the
+//! hit that is finally kept.
 
 pub mod aabb;
 pub mod bvh;
 pub mod bvh4;
 mod interaction;
-mod lanes;
-pub mod leaf;
 pub mod mesh;
 mod packet;
 pub mod primitive;
@@ -28,7 +24,6 @@ pub mod quad;
 pub mod sphere;
 pub mod transform;
 pub mod triangle;
-pub mod triangle4;
 
 #[cfg(test)]
 mod tests;
@@ -114,9 +109,6 @@ pub struct Geometry {
     /// The binary tree (its `order` dropped), traversed by ray packets.
     binary: Bvh,
     bvh: Bvh4,
-    /// The four-wide tree's leaves: their triangles in SIMD blocks.
-    leaves: leaf::Leaves,
-    /// Every primitive, each leaf's triangles first.
     prims: Vec<primitive::PrimRecord>,
     sources: Vec<PrimSource>,
 }
@@ -192,19 +184,8 @@ impl Geometry {
             }
         }
         let bounds: Vec<Aabb> = records.par_iter().map(padded_bounds).collect();
-        let mut binary = Bvh::build(&bounds, |i| records[i].kind() == primitive::KIND_TRIANGLE);
-        // Each leaf's triangles first (in their order), for the SIMD blocks.
-        let leaf_ranges: Vec<(usize, usize)> = binary
-            .nodes
-            .iter()
-            .filter(|n| n.count() > 0)
-            .map(|n| (n.offset() as usize, n.count() as usize))
-            .collect();
-        for (first, count) in leaf_ranges {
-            binary.order[first..first + count]
-                .sort_by_key(|&i| records[i as usize].kind() != primitive::KIND_TRIANGLE);
-        }
-        let prims: Vec<primitive::PrimRecord> = binary
+        let mut binary = Bvh::build(&bounds);
+        let prims = binary
             .order
             .par_iter()
             .map(|&i| records[i as usize])
@@ -214,15 +195,13 @@ impl Geometry {
             .par_iter()
             .map(|&i| sources[i as usize])
             .collect();
-        let mut leaves = leaf::Leaves::default();
-        let bvh = Bvh4::from_binary(&binary, |first, count| leaves.push(&prims, first, count));
+        let bvh = Bvh4::from_binary(&binary);
         binary.order = Vec::new();
         Geometry {
             shapes,
             bounds: binary.bounds(),
             binary,
             bvh,
-            leaves,
             prims,
             sources,
         }
@@ -252,10 +231,19 @@ impl Geometry {
     #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
         let (o, d) = (ray.o, ray.d);
+        let prims = &self.prims[..];
         let mut best: Option<Hit> = None;
-        self.bvh.traverse(o, d, ray.t_max, |leaf, t_max| {
-            if let Some(hit) = self.leaves.closest(leaf, &self.prims, o, d, t_max) {
-                best = Some(hit);
+        self.bvh.traverse(o, d, ray.t_max, |first, count, t_max| {
+            let leaf = &prims[first as usize..(first + count) as usize];
+            for (k, prim) in leaf.iter().enumerate() {
+                if let Some((t, uv)) = prim.intersect(o, d, *t_max) {
+                    *t_max = t;
+                    best = Some(Hit {
+                        t,
+                        prim: first + k as u32,
+                        uv,
+                    });
+                }
             }
             false
         });
@@ -266,9 +254,13 @@ impl Geometry {
     /// the first primitive found, in no particular order).
     #[inline]
     pub fn occluded(&self, ray: &Ray) -> bool {
-        let (o, d, t_max) = (ray.o, ray.d, ray.t_max);
-        self.bvh.traverse_any(o, d, t_max, |leaf| {
-            self.leaves.any(leaf, &self.prims, o, d, t_max)
+        let (o, d) = (ray.o, ray.d);
+        let prims = &self.prims[..];
+        let t_max = ray.t_max;
+        self.bvh.traverse_any(o, d, t_max, |first, count| {
+            prims[first as usize..(first + count) as usize]
+                .iter()
+                .any(|prim| prim.intersect(o, d, t_max).is_some())
         })
     }
 

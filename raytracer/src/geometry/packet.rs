@@ -15,7 +15,6 @@
 
 use super::aabb::InverseDirection;
 use super::bvh::BvhNode;
-use super::lanes::{add, cross, dot, splat, sub};
 use super::primitive::KIND_TRIANGLE;
 use super::{Geometry, Hit};
 use crate::math::{Ray, Vec2, Vec3A, Vec4};
@@ -47,12 +46,42 @@ fn enter4(node: &BvhNode, r: &Rays4, t_max: Vec4) -> Vec4 {
     Vec4::select(near.cmple(far), near, Vec4::INFINITY)
 }
 
+/// `(x·x' + y·y') + z·z'`, the order of glam's `Vec3A::dot`, lane by lane.
+#[inline(always)]
+fn dot(a: &[Vec4; 3], b: &[Vec4; 3]) -> Vec4 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+#[inline(always)]
+fn cross(a: &[Vec4; 3], b: &[Vec4; 3]) -> [Vec4; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+#[inline(always)]
+fn sub(a: &[Vec4; 3], b: &[Vec4; 3]) -> [Vec4; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+#[inline(always)]
+fn add(a: &[Vec4; 3], b: &[Vec4; 3]) -> [Vec4; 3] {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
 /// The watertight triangle test of [`super::triangle::intersect_triangle`]
 /// for four rays against one triangle: `(t, b1, b2)` per lane and the mask
 /// of lanes that hit with `t ∈ (0, t_max)`.
 #[inline(always)]
 fn triangle4(v: [Vec3A; 3], r: &Rays4, t_max: Vec4) -> (BVec4A, Vec4, Vec4, Vec4) {
-    let rel = |p: Vec3A| sub(&splat(p), &r.o);
+    let rel = |p: Vec3A| {
+        sub(
+            &[Vec4::splat(p.x), Vec4::splat(p.y), Vec4::splat(p.z)],
+            &r.o,
+        )
+    };
     let (a, b, c) = (rel(v[0]), rel(v[1]), rel(v[2]));
     let (e_ca, e_ab, e_bc) = (sub(&c, &a), sub(&a, &b), sub(&b, &c));
     let w1 = dot(&r.d, &cross(&e_ca, &add(&c, &a)));

@@ -74,20 +74,6 @@ fn bvh_matches_brute_force() {
         }
         let g = Geometry::new(shapes);
         assert_eq!(g.primitive_count(), n + 10);
-        if n >= 1000 {
-            // Leaves of three or more triangles test them in SIMD blocks:
-            // the comparison below covers both kinds of leaf.
-            let blocks = g
-                .bvh
-                .leaves()
-                .filter(|&l| leaf::Leaves::in_blocks(l))
-                .count();
-            let alone = g.bvh.leaves().count() - blocks;
-            assert!(
-                blocks > 0 && alone > 0,
-                "n={n}: {blocks} blocked, {alone} other leaves"
-            );
-        }
         let mut hits = 0;
         for i in 0..rays {
             let mut s = Sampler::new(7, i as u64, n as u64);
@@ -201,7 +187,7 @@ fn signed_zero_directions_match_brute_force_in_every_traversal() {
     }));
     let g = Geometry::new(shapes);
     let bounds: Vec<Aabb> = g.prims.iter().map(padded_bounds).collect();
-    let binary = Bvh::build(&bounds, |_| false);
+    let binary = Bvh::build(&bounds);
     let binary_closest = |ray: &Ray| {
         let mut best: Option<f32> = None;
         binary.traverse(ray.o, ray.d, ray.t_max, |first, count, t_max| {
@@ -539,7 +525,7 @@ fn transformed_cube_matches_mitsuba() {
 fn binary_bvh_matches_brute_force() {
     let g = Geometry::new(vec![Shape::Mesh(Arc::new(soup(5000, 0.05, 1)))]);
     let bounds: Vec<Aabb> = g.prims.iter().map(padded_bounds).collect();
-    let bvh = Bvh::build(&bounds, |_| false);
+    let bvh = Bvh::build(&bounds);
     for i in 0..500u64 {
         let mut s = Sampler::new(9, i, 0);
         let o = uniform_box(&mut s, 1.5);
@@ -633,9 +619,9 @@ fn profile_primary_rays() {
     for _ in 0..5 {
         let t0 = std::time::Instant::now();
         for r in &rays {
-            g.bvh.traverse(r.o, r.d, r.t_max, |leaf, _| {
+            g.bvh.traverse(r.o, r.d, r.t_max, |_, c, _| {
                 leaves += 1;
-                tris += g.leaves.primitive_count(leaf) as usize;
+                tris += c as usize;
                 false
             });
         }
