@@ -666,13 +666,6 @@ mod tests {
         Color::new(acc, s.next_1d(), pixel.x as f32 * s.next_1d())
     }
 
-    fn bits(img: &crate::film::Image) -> Vec<u32> {
-        img.pixels
-            .iter()
-            .flat_map(|c| c.to_array().map(f32::to_bits))
-            .collect()
-    }
-
     #[test]
     fn same_image_on_any_number_of_threads() {
         // 23×17 is not a multiple of the tile; 20 spp is a full and a partial pass.
@@ -687,10 +680,10 @@ mod tests {
             assert_eq!(r.stats.samples, 23 * 17 * 20);
             assert_eq!(r.stats.nonfinite, runs[0].stats.nonfinite);
             assert!(r.film == runs[0].film, "the films' sums differ");
-            assert_eq!(bits(&r.film.image()), bits(&runs[0].film.image()));
+            assert_eq!(r.film.image().bits(), runs[0].film.image().bits());
             assert_eq!(
-                bits(&r.film.variance_image()),
-                bits(&runs[0].film.variance_image())
+                r.film.variance_image().bits(),
+                runs[0].film.variance_image().bits()
             );
         }
         assert!(runs[0].stats.nonfinite > 0);
@@ -700,7 +693,7 @@ mod tests {
             ..options(20, 2, 8)
         };
         let r = render_pixels_with_stop(23, 17, &other, &AtomicBool::new(false), toy);
-        assert_ne!(bits(&r.film.image()), bits(&runs[0].film.image()));
+        assert_ne!(r.film.image().bits(), runs[0].film.image().bits());
     }
 
     /// A watcher sees the film grow; at every complete pass it is the film of

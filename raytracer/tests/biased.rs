@@ -662,11 +662,7 @@ fn vpl_and_irradiance_cache_do_not_depend_on_the_threads() {
             threads: Some(threads),
             ..options(4, 5)
         };
-        let img = render(&scene, integrator, &options).film.image();
-        img.pixels
-            .iter()
-            .flat_map(|c| c.to_array().map(f32::to_bits))
-            .collect()
+        render(&scene, integrator, &options).film.image().bits()
     };
     let (v1, v3) = (
         pool(1).install(|| vpl(&scene, 2000, 0.0, Some(4), 1)),

@@ -13,14 +13,7 @@ fn bits(scene: &Scene, integrator: &dyn Integrator, threads: usize) -> (Vec<u32>
         ..RenderOptions::default()
     };
     let film = render(scene, integrator, &options).film;
-    let flat = |img: raytracer::film::Image| {
-        img.pixels
-            .iter()
-            .flat_map(|c| c.to_array())
-            .map(f32::to_bits)
-            .collect()
-    };
-    (flat(film.image()), flat(film.variance_image()))
+    (film.image().bits(), film.variance_image().bits())
 }
 
 #[test]

@@ -25,6 +25,16 @@ impl Image {
         }
     }
 
+    /// Every channel of every pixel as its bit pattern, in pixel order: two
+    /// images are the same bit for bit when these are equal (unlike `==` on
+    /// the values, which takes −0 for 0 and no NaN for itself).
+    pub fn bits(&self) -> Vec<u32> {
+        self.pixels
+            .iter()
+            .flat_map(|c| c.to_array().map(f32::to_bits))
+            .collect()
+    }
+
     /// An image whose pixel `(x, y)` is `f(x, y)`.
     pub fn from_fn(width: u32, height: u32, mut f: impl FnMut(u32, u32) -> Color) -> Self {
         let mut pixels = Vec::with_capacity(width as usize * height as usize);

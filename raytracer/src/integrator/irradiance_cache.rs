@@ -293,15 +293,28 @@ impl Strata {
         let u = |phi: f32| Vec3A::new(phi.cos(), phi.sin(), 0.0);
         let v = |phi: f32| Vec3A::new(-phi.sin(), phi.cos(), 0.0);
         let (mf, nf) = (m as f32, n as f32);
-        // t_j = M [θ − sin θ cos θ] between the band's edges, sin²θ_j− = j/M.
-        let band_tan = |j: usize| {
-            let f = |s2: f32| {
-                let s2 = s2.min(1.0);
-                s2.sqrt().asin() - (s2 * (1.0 - s2)).sqrt()
-            };
-            mf * (f((j + 1) as f32 / mf) - f(j as f32 / mf))
+        // Per band j, computed once (every sector uses them): t_j = M [θ −
+        // sin θ cos θ] between the band's edges (sin²θ_j− = j/M); the weight
+        // of its upper θ edge but for 1/min(r), 2 sin(π/N) sin θ_j− cos²θ_j−;
+        // the width sin θ_j+ − sin θ_j− of its φ edges.
+        let sin_pi_n = (PI / nf).sin();
+        let f = |s2: f32| {
+            let s2 = s2.min(1.0);
+            s2.sqrt().asin() - (s2 * (1.0 - s2)).sqrt()
         };
-        let s_n = (PI / nf).sin() / (PI / nf);
+        let band_tan: Vec<f32> = (0..m)
+            .map(|j| mf * (f((j + 1) as f32 / mf) - f(j as f32 / mf)))
+            .collect();
+        let theta_edge: Vec<f32> = (0..m)
+            .map(|j| {
+                let s2 = j as f32 / mf;
+                2.0 * sin_pi_n * s2.sqrt() * (1.0 - s2)
+            })
+            .collect();
+        let band_width: Vec<f32> = (0..m)
+            .map(|j| ((j + 1) as f32 / mf).sqrt() - (j as f32 / mf).sqrt())
+            .collect();
+        let s_n = sin_pi_n / (PI / nf);
         let (mut e, mut inv_dist) = (Color::ZERO, 0.0f32);
         let mut g = Gradients::default();
         let add = |to: &mut [Vec3A; 3], dir: Vec3A, l: Color| {
@@ -319,21 +332,19 @@ impl Strata {
                 e += l;
                 inv_dist += 1.0 / r.max(1e-4);
                 // Rotation: the cell's mean of tan θ v(φ), s_N t_j v(φ_k).
-                add(&mut g.rotation, v_k, l * (s_n * band_tan(j)));
+                add(&mut g.rotation, v_k, l * (s_n * band_tan[j]));
                 // Translation across the θ edge sin²θ_j− = j/M (to band j − 1).
                 if j > 0 {
                     let (l_up, r_up) = cell(j - 1, k);
-                    let s2 = j as f32 / mf;
-                    let w = 2.0 * (PI / nf).sin() * s2.sqrt() * (1.0 - s2) * inv_min(r, r_up);
+                    let w = theta_edge[j] * inv_min(r, r_up);
                     add(&mut g.translation, u_k, (l - l_up) * w);
                 }
                 // Translation across the φ edge φ_k− (to sector k − 1).
                 let (l_side, r_side) = cell(j, prev);
-                let band = ((j + 1) as f32 / mf).sqrt() - (j as f32 / mf).sqrt();
                 add(
                     &mut g.translation,
                     v_edge,
-                    (l - l_side) * (band * inv_min(r, r_side)),
+                    (l - l_side) * (band_width[j] * inv_min(r, r_side)),
                 );
             }
         }

@@ -261,13 +261,6 @@ mod tests {
         }
     }
 
-    fn bits(img: &Image) -> Vec<u32> {
-        img.pixels
-            .iter()
-            .flat_map(|c| c.to_array().map(f32::to_bits))
-            .collect()
-    }
-
     /// The watcher sees every pass in order, and the image it is shown after
     /// pass `k` is, bit for bit, the image of a `k`-pass render (on another
     /// number of threads, too).
@@ -282,13 +275,13 @@ mod tests {
         let never = AtomicBool::new(false);
         let mut seen = Vec::new();
         let full = render_sppm_watched(&scene, &settings, &options(3, 2), &never, &mut |p| {
-            seen.push((p.passes, bits(&p.image())))
+            seen.push((p.passes, p.image().bits()))
         });
         let passes: Vec<u32> = seen.iter().map(|s| s.0).collect();
         assert_eq!(passes, [1, 2, 3]);
         let two = render_sppm_with_stop(&scene, &settings, &options(2, 1), &never);
-        assert_eq!(seen[1].1, bits(&two.image));
-        assert_eq!(seen[2].1, bits(&full.image));
+        assert_eq!(seen[1].1, two.image.bits());
+        assert_eq!(seen[2].1, full.image.bits());
         assert_ne!(seen[1].1, seen[2].1);
     }
 
@@ -307,7 +300,7 @@ mod tests {
         let b = render_sppm_with_stop(&scene, &settings, &options(3, 3), &never);
         assert_eq!(a.passes, 3);
         assert!(a.final_radius < a.initial_radius);
-        assert_eq!(bits(&a.image), bits(&b.image));
+        assert_eq!(a.image.bits(), b.image.bits());
         assert!(crate::metrics::mean(&a.image).x > 0.0);
         let s = render_sppm_with_stop(&scene, &settings, &options(3, 2), &AtomicBool::new(true));
         assert!(s.stats.interrupted && s.passes == 0);
