@@ -61,6 +61,11 @@ pub fn srgb_to_linear(c: f32) -> f32 {
     }
 }
 
+/// The most pixels an image texture may have (8192 × 8192; 768 MiB as
+/// linear RGB): a PNG's header is read before its pixels, and a larger
+/// claim is refused before anything is allocated.
+pub const MAX_TEXTURE_PIXELS: u64 = 1 << 26;
+
 impl ImageTexture {
     /// An image from linear pixels, top row first; checks the size.
     pub fn new(width: u32, height: u32, pixels: Vec<Color>) -> Result<ImageTexture, String> {
@@ -78,7 +83,8 @@ impl ImageTexture {
         })
     }
 
-    /// Loads a PNG (any colour type and bit depth), converting its sRGB
+    /// Loads a PNG (any colour type and bit depth) of at most
+    /// [`MAX_TEXTURE_PIXELS`] pixels, converting its sRGB
     /// values to linear RGB; alpha is ignored.
     pub fn load(path: &std::path::Path) -> Result<ImageTexture, String> {
         let named =
@@ -88,6 +94,16 @@ impl ImageTexture {
         // Palettes and grey below 8 bits become 8-bit samples.
         decoder.set_transformations(png::Transformations::EXPAND);
         let mut reader = decoder.read_info().map_err(|e| named(&e))?;
+        // The header alone says how big the image is: a file of a few bytes
+        // may claim billions of pixels, so they are counted before anything
+        // is allocated.
+        let (w, h) = (reader.info().width, reader.info().height);
+        if w as u64 * h as u64 > MAX_TEXTURE_PIXELS {
+            return Err(named(&format!(
+                "{w} × {h} pixels, more than a texture may have ({MAX_TEXTURE_PIXELS} pixels, \
+                 e.g. 8192 × 8192, 768 MiB in linear RGB)"
+            )));
+        }
         let size = reader
             .output_buffer_size()
             .ok_or_else(|| named(&"the image is too large"))?;
@@ -266,5 +282,53 @@ mod tests {
         let missing = std::path::Path::new("/nonexistent/dir/albedo.png");
         let err = ImageTexture::load(missing).unwrap_err();
         assert!(err.contains("/nonexistent/dir/albedo.png"), "{err}");
+    }
+
+    /// A PNG whose header claims a huge image (here 40 000 × 40 000, 4.8 GB
+    /// of samples, in a file of a few dozen bytes) is refused with a line
+    /// naming the file, before its pixels are allocated.
+    #[test]
+    fn a_huge_png_is_refused_before_it_is_allocated() {
+        let crc = |bytes: &[u8]| {
+            let mut c = !0u32;
+            for &b in bytes {
+                c ^= b as u32;
+                for _ in 0..8 {
+                    c = if c & 1 != 0 {
+                        (c >> 1) ^ 0xEDB8_8320
+                    } else {
+                        c >> 1
+                    };
+                }
+            }
+            !c
+        };
+        let chunk = |kind: &[u8], data: &[u8]| {
+            let mut body = kind.to_vec();
+            body.extend_from_slice(data);
+            let mut out = (data.len() as u32).to_be_bytes().to_vec();
+            out.extend_from_slice(&body);
+            out.extend_from_slice(&crc(&body).to_be_bytes());
+            out
+        };
+        let mut ihdr = 40_000u32.to_be_bytes().to_vec();
+        ihdr.extend_from_slice(&40_000u32.to_be_bytes());
+        ihdr.extend_from_slice(&[8, 2, 0, 0, 0]); // 8-bit RGB
+        let mut file = b"\x89PNG\r\n\x1a\n".to_vec();
+        file.extend(chunk(b"IHDR", &ihdr));
+        // The start of the pixel data (a zlib stream with one empty block):
+        // a decoder reads up to here before it says the image's size.
+        file.extend(chunk(b"IDAT", &[0x78, 0x01, 0x01, 0x00, 0x00, 0xff, 0xff]));
+        file.extend(chunk(b"IEND", &[]));
+        let dir = std::env::temp_dir().join(format!("huge_png_{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("huge.png");
+        std::fs::write(&path, &file).unwrap();
+        let err = ImageTexture::load(&path).unwrap_err();
+        std::fs::remove_dir_all(&dir).ok();
+        assert!(
+            err.contains("huge.png") && err.contains("40000 × 40000 pixels"),
+            "{err}"
+        );
     }
 }
