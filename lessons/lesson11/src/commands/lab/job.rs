@@ -43,6 +43,24 @@ use crate::integrators::{BiasedPlan, IntegratorPlan};
 /// How often a running render publishes its picture (about 4 times a second).
 pub const SNAPSHOT_EVERY: Duration = Duration::from_millis(250);
 
+/// Lets a render's watcher publish at most once per [`SNAPSHOT_EVERY`].
+#[derive(Default)]
+struct Throttle {
+    last: Option<Instant>,
+}
+
+impl Throttle {
+    /// True the first time and whenever `SNAPSHOT_EVERY` has passed since
+    /// the last true (the clock then starts again).
+    fn due(&mut self) -> bool {
+        if self.last.is_some_and(|t| t.elapsed() < SNAPSHOT_EVERY) {
+            return false;
+        }
+        self.last = Some(Instant::now());
+        true
+    }
+}
+
 /// What to render: one scene per eye (one for a plain picture), one
 /// integrator's plan, one set of options.
 pub struct JobSpec {
@@ -363,12 +381,11 @@ impl Job {
         options: &RenderOptions,
     ) -> bool {
         let (w, h) = (scene.camera.width, scene.camera.height);
-        let mut last: Option<Instant> = None;
+        let mut throttle = Throttle::default();
         let mut watch = |p: &Progress| {
-            if last.is_some_and(|t| t.elapsed() < SNAPSHOT_EVERY) {
+            if !throttle.due() {
                 return;
             }
-            last = Some(Instant::now());
             self.publish(
                 eye,
                 Snapshot {
@@ -419,12 +436,11 @@ impl Job {
                 options.spp, settings.photons
             )
         };
-        let mut last: Option<Instant> = None;
+        let mut throttle = Throttle::default();
         let mut watch = |p: &SppmProgress| {
-            if last.is_some_and(|t| t.elapsed() < SNAPSHOT_EVERY) {
+            if !throttle.due() {
                 return;
             }
-            last = Some(Instant::now());
             self.publish(
                 0,
                 Snapshot {
@@ -485,7 +501,7 @@ impl Job {
                 100.0 * p.accepted as f64 / p.mutations.max(1) as f64
             )
         };
-        let mut last: Option<Instant> = None;
+        let mut throttle = Throttle::default();
         let mut final_note = None;
         let mut watch = |p: &MetropolisProgress| {
             final_note = Some(note(p));
@@ -494,10 +510,9 @@ impl Job {
                 self.update(|s| s.note = final_note.clone());
                 return;
             }
-            if last.is_some_and(|t| t.elapsed() < SNAPSHOT_EVERY) {
+            if !throttle.due() {
                 return;
             }
-            last = Some(Instant::now());
             self.publish(
                 0,
                 Snapshot {
