@@ -35,7 +35,9 @@ pub struct Comparison {
     pub tile: u32,
     /// Samples per pixel of the student's render.
     pub spp: u32,
-    pub reference: PathTracer,
+    /// The renderer's integrator that renders the reference at
+    /// [`REFERENCE_SPP`] (any integrator: a path tracer, a light tracer, …).
+    pub reference: fn() -> Box<dyn Integrator>,
 }
 
 /// Exercise 11: the path tracer (the student samples BRDFs only). The
@@ -53,10 +55,12 @@ pub const EX11_CORNELL: Comparison = Comparison {
     size: 32,
     tile: 16,
     spp: 256,
-    reference: PathTracer {
-        max_depth: Some(5),
-        rr_depth: 3,
-        strategy: DirectStrategy::Mis,
+    reference: || {
+        Box::new(PathTracer {
+            max_depth: Some(5),
+            rr_depth: 3,
+            strategy: DirectStrategy::Mis,
+        })
     },
 };
 
@@ -68,10 +72,12 @@ pub const EX12_CORNELL_DIRECT: Comparison = Comparison {
     size: 32,
     tile: 8,
     spp: 32,
-    reference: PathTracer {
-        max_depth: Some(2),
-        rr_depth: 1000,
-        strategy: DirectStrategy::Mis,
+    reference: || {
+        Box::new(PathTracer {
+            max_depth: Some(2),
+            rr_depth: 1000,
+            strategy: DirectStrategy::Mis,
+        })
     },
 };
 
@@ -110,7 +116,7 @@ pub fn reference_paths(c: &Comparison) -> (PathBuf, PathBuf) {
 pub fn render_reference(c: &Comparison, progress: bool) -> Result<PathBuf, String> {
     let result = render(
         &scene(c)?,
-        &c.reference,
+        (c.reference)().as_ref(),
         &options(REFERENCE_SPP, 1, progress, c.name),
     );
     let (mean, variance) = reference_paths(c);
