@@ -1,103 +1,9 @@
 //! The registry of the exercises: `info.toml`, in lecture order, with the
-//! title, the slides and the hints of each (rustlings' `info.toml`).
+//! title, the slides and the hints of each. It lives in the small `hint`
+//! crate (so that hints come without building the renderer); this module
+//! re-exports it and checks it against the exercises of this crate.
 
-use serde::Deserialize;
-
-/// One exercise of the registry.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Exercise {
-    /// The module name, e.g. `ex03_lambert` (the grader's key).
-    pub name: String,
-    /// The student's file, relative to the `exercises` crate.
-    pub file: String,
-    pub title: String,
-    /// The slides it belongs to, for messages: the English titles and, in
-    /// parentheses, the Bulgarian ones (`slides` and `slides_bg` joined).
-    pub slide: String,
-    /// Titles of the slides in the English deck (`slides/en/*.md`), exactly
-    /// as their `# ` lines read.
-    pub slides: Vec<String>,
-    /// The same slides in the Bulgarian deck (`slides/bg/*.md`), in the same order.
-    pub slides_bg: Vec<String>,
-    /// Hints, shown one at a time: a direction first, then the key identity,
-    /// then the formula.
-    pub hints: Vec<String>,
-}
-
-/// An entry of `info.toml` as written.
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct Entry {
-    name: String,
-    file: String,
-    title: String,
-    slides: Vec<String>,
-    slides_bg: Vec<String>,
-    hints: Vec<String>,
-}
-
-impl Exercise {
-    /// The number of the exercise (1-based, from the name `exNN_…`).
-    pub fn number(&self) -> Option<usize> {
-        self.name.get(2..4)?.parse().ok()
-    }
-
-    /// The path of the reference solution, relative to the `exercises` crate.
-    pub fn solution_file(&self) -> String {
-        format!("solutions/{}.rs", self.name)
-    }
-
-    /// The command that shows the next hint.
-    pub fn hint_command(&self) -> String {
-        format!(
-            "cargo run -p lesson11 -- hint {}",
-            self.number().unwrap_or(0)
-        )
-    }
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct Info {
-    exercises: Vec<Entry>,
-}
-
-/// The text of `info.toml`, compiled in.
-pub const INFO_TOML: &str = include_str!("../info.toml");
-
-/// Parses a registry in the format of `info.toml`.
-pub fn parse(text: &str) -> Result<Vec<Exercise>, String> {
-    let info = toml::from_str::<Info>(text).map_err(|e| format!("exercises/info.toml: {e}"))?;
-    info.exercises
-        .into_iter()
-        .map(|e| {
-            if e.slides.is_empty() || e.slides.len() != e.slides_bg.len() {
-                return Err(format!(
-                    "exercises/info.toml: {} needs one Bulgarian title in `slides_bg` for each English one in `slides`",
-                    e.name
-                ));
-            }
-            let slide = format!("{} ({})", e.slides.join("; "), e.slides_bg.join("; "));
-            Ok(Exercise {
-                name: e.name,
-                file: e.file,
-                title: e.title,
-                slide,
-                slides: e.slides,
-                slides_bg: e.slides_bg,
-                hints: e.hints,
-            })
-        })
-        .collect()
-}
-
-/// The exercises in lecture order.
-///
-/// # Panics
-/// If the compiled-in `info.toml` is malformed (a test proves it is not).
-pub fn registry() -> Vec<Exercise> {
-    parse(INFO_TOML).unwrap_or_else(|e| panic!("{e}"))
-}
+pub use hint::registry::*;
 
 #[cfg(test)]
 mod tests {
@@ -122,13 +28,5 @@ mod tests {
             assert!(crate::crate_dir().join(&e.file).is_file(), "{}", e.file);
             assert!(crate::crate_dir().join(e.solution_file()).is_file());
         }
-    }
-
-    #[test]
-    fn malformed_registry_is_an_error() {
-        assert!(parse("[[exercises]]\nname = 1").is_err());
-        let unpaired = "[[exercises]]\nname = \"ex01_a\"\nfile = \"src/ex01_a.rs\"\ntitle = \"A\"\nslides = [\"One\", \"Two\"]\nslides_bg = [\"Едно\"]\nhints = [\"h\"]\n";
-        let e = parse(unpaired).unwrap_err();
-        assert!(e.contains("ex01_a") && e.contains("slides_bg"), "{e}");
     }
 }

@@ -3,13 +3,12 @@
 //! their code).
 //!
 //! Progress comes from the same grader as `cargo test` (the `grading`
-//! crate); hints are shown one at a time (how many were shown is kept in
-//! `target/lesson11-hints.txt`); a reference solution is shown only once the
-//! exercise passes.
+//! crate); hints are shown one at a time by the `hint` crate (how many were
+//! shown is kept in `target/lesson11-hints.txt`), which `cargo run -p hint -- N`
+//! runs without building this program; a reference solution is shown only
+//! once the exercise passes.
 
-use std::path::PathBuf;
-
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result, anyhow, bail};
 use clap::Args;
 use exercises::Exercise;
 use grading::Outcome;
@@ -43,21 +42,7 @@ pub struct SolutionArgs {
 }
 
 fn exercise(number: usize) -> Result<Exercise> {
-    let reg = exercises::registry();
-    // Listed, not given as a range, in case a number is ever skipped.
-    let numbers: Vec<String> = reg
-        .iter()
-        .filter_map(|e| e.number())
-        .map(|n| n.to_string())
-        .collect();
-    reg.into_iter()
-        .find(|e| e.number() == Some(number))
-        .with_context(|| {
-            format!(
-                "there is no exercise {number}: the exercises are {}",
-                numbers.join(", ")
-            )
-        })
+    hint::exercise(number).map_err(|e| anyhow!(e))
 }
 
 pub fn run_exercises(args: &ExercisesArgs) -> Result<()> {
@@ -67,78 +52,22 @@ pub fn run_exercises(args: &ExercisesArgs) -> Result<()> {
     let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
     let results = grading::grade_all(threads, grading::TIMEOUT);
     println!(
-        "Grade: `cargo test -p grading --test exercises` · on every save: `lesson11 exercises --watch` · hints: `lesson11 hint N` · a solution once it passes: `lesson11 solution N`"
+        "Grade: `cargo test -p grading --test exercises` · on every save: `lesson11 exercises --watch` · hints: `cargo run -q -p hint -- N` · a solution once it passes: `lesson11 solution N`"
     );
     print!("{}", grading::progress_report(&results));
     Ok(())
 }
 
-fn hints_file() -> PathBuf {
-    let target = std::env::var_os("CARGO_TARGET_DIR")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| exercises::crate_dir().join("../target"));
-    target.join("lesson11-hints.txt")
-}
-
-/// `name count` lines: how many hints of each exercise were shown.
-fn read_shown() -> Vec<(String, usize)> {
-    std::fs::read_to_string(hints_file())
-        .unwrap_or_default()
-        .lines()
-        .filter_map(|l| {
-            let (name, n) = l.split_once(' ')?;
-            Some((name.to_string(), n.trim().parse().ok()?))
-        })
-        .collect()
-}
-
+/// The same as `cargo run -p hint -- N` (the `hint` crate), which answers
+/// without building this program.
 pub fn run_hint(args: &HintArgs) -> Result<()> {
-    let path = hints_file();
     if args.reset {
-        let _ = std::fs::remove_file(&path);
+        hint::reset();
         println!("Hint counters reset.");
         return Ok(());
     }
-    let e = exercise(args.number)?;
-    let mut shown = read_shown();
-    let before = shown
-        .iter()
-        .find(|(n, _)| *n == e.name)
-        .map_or(0, |(_, c)| *c);
-    let now = if args.all {
-        e.hints.len()
-    } else {
-        (before + 1).min(e.hints.len())
-    };
-    println!("Exercise {}: {} (slide: {})", args.number, e.title, e.slide);
-    println!("File: exercises/{}", e.file);
-    for (i, h) in e.hints.iter().take(now).enumerate() {
-        println!("  hint {}/{}: {h}", i + 1, e.hints.len());
-    }
-    if now == e.hints.len() {
-        println!(
-            "That was the last hint; the solution is shown once your exercise passes (`lesson11 solution {}`).",
-            args.number
-        );
-    } else {
-        println!(
-            "Run `lesson11 hint {}` again for the next hint.",
-            args.number
-        );
-    }
-    shown.retain(|(n, _)| *n != e.name);
-    shown.push((e.name.clone(), now));
-    let text: String = shown.iter().map(|(n, c)| format!("{n} {c}\n")).collect();
-    if let Some(dir) = path.parent() {
-        let _ = std::fs::create_dir_all(dir);
-    }
-    // Losing the counter only means the next hint is shown again.
-    if let Err(err) = raytracer::film::output::write_file(&path, text) {
-        eprintln!(
-            "note: cannot remember the hints shown ({}: {err})",
-            path.display()
-        );
-    }
+    let text = hint::next_hints(args.number, args.all).map_err(|e| anyhow!(e))?;
+    print!("{text}");
     Ok(())
 }
 
@@ -158,7 +87,7 @@ pub fn run_solution(args: &SolutionArgs) -> Result<()> {
             Ok(())
         }
         other => bail!(
-            "exercise {} is {}: the solution is shown once it passes (`cargo test`, hints: `lesson11 hint {}`)",
+            "exercise {} is {}: the solution is shown once it passes (`cargo test`, hints: `cargo run -q -p hint -- {}`)",
             args.number,
             other.status(),
             args.number
