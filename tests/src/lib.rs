@@ -361,6 +361,33 @@ mod tests {
         assert!(o[4].0.is_failed());
     }
 
+    /// The gate of `cargo test --workspace` (and `cargo test -p grading`):
+    /// red while an exercise the student started fails. The student's own
+    /// harness (`--test exercises`) exits with success so that its summary
+    /// stays the last line printed; this test is what fails instead.
+    #[test]
+    fn every_exercise_you_started_passes() {
+        let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
+        let failing: Vec<String> = grade_all(threads, TIMEOUT)
+            .into_iter()
+            .filter(|g| g.outcome.is_failed())
+            .map(|g| {
+                format!(
+                    "exercise {} ({}): {}",
+                    g.exercise.number().unwrap_or(0),
+                    g.exercise.name,
+                    g.outcome
+                )
+            })
+            .collect();
+        assert!(
+            failing.is_empty(),
+            "{} exercise(s) fail:\n{}\nThe progress table and the next step: `cargo test -p grading --test exercises`",
+            failing.len(),
+            failing.join("\n")
+        );
+    }
+
     #[test]
     fn the_summary_is_last_and_names_the_next_step() {
         let reg = exercises::registry();
@@ -381,7 +408,7 @@ mod tests {
         let last: Vec<&str> = report.lines().rev().take(2).collect();
         assert!(last[1].starts_with("Progress: 2/"), "{report}");
         assert!(
-            last[0].starts_with("Next: exercise 3") && last[0].contains("hint 3"),
+            last[0].starts_with("Next: exercise 3") && last[0].contains("-p hint -- 3"),
             "{report}"
         );
         let all: Vec<Graded> = graded

@@ -1,8 +1,12 @@
 //! The student's grader: grades every exercise and prints the progress
 //! table (passed / failed with the reason / not started, and each one's
-//! time), then — last — the summary and the next step. Fails only if an
-//! exercise fails: stubs that still say `todo!()` are "not started", so the
-//! pristine course is green.
+//! time), then — last — the summary and the next step. It exits with
+//! success even when an exercise fails, so that cargo adds no "test failed"
+//! lines below the summary: the verdict is the report. The gate that makes
+//! `cargo test --workspace` red while an exercise fails is the grading
+//! crate's unit test `every_exercise_you_started_passes`, which this target
+//! (`--test exercises`) does not run. Stubs that still say `todo!()` are
+//! "not started", so the pristine course is green.
 //!
 //! `cargo test -p grading --test exercises` runs this alone (a few seconds);
 //! arguments that are not options grade only the exercises whose names
@@ -55,10 +59,7 @@ fn main() -> ExitCode {
         print!("{}", grading::exercise_report(&results));
     }
     // Returning ends the process, and with it the thread of an exercise
-    // that timed out.
-    if results.iter().any(|g| g.outcome.is_failed()) {
-        ExitCode::FAILURE
-    } else {
-        ExitCode::SUCCESS
-    }
+    // that timed out. Success even if an exercise failed: the summary must
+    // stay the last thing printed (see the module doc for the gate).
+    ExitCode::SUCCESS
 }
