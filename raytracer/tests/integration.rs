@@ -16,6 +16,7 @@ mod light_and_bdpt;
 mod light_choice;
 mod metropolis;
 mod mitsuba_cornell;
+mod photo_sky;
 mod record;
 mod scale;
 mod scene_fuzz;

@@ -2,8 +2,8 @@
 //!
 //! Lecture topic: "BRDF-и" — a spatially varying BRDF `f_r(x, ω_i → ω_o)`:
 //! the albedo of a Lambertian surface may change from point to point.
-//! All colours are linear RGB; PNG files store sRGB-encoded values, which are
-//! decoded on load with the exact sRGB transfer curve.
+//! All colours are linear RGB; PNG and JPEG files store sRGB-encoded values,
+//! which are decoded on load with the exact sRGB transfer curve.
 
 use std::sync::Arc;
 
@@ -83,59 +83,62 @@ impl ImageTexture {
         })
     }
 
-    /// Loads a PNG (any colour type and bit depth) of at most
-    /// [`MAX_TEXTURE_PIXELS`] pixels, converting its sRGB
-    /// values to linear RGB; alpha is ignored.
+    /// Loads a PNG (any colour type and bit depth: palette, grey, 8 or 16
+    /// bits) or a JPEG of at most [`MAX_TEXTURE_PIXELS`] pixels, converting
+    /// its sRGB values to linear RGB; alpha is ignored. The format is found
+    /// from the file's first bytes, not its name.
+    ///
+    /// The header is read first and a size over the limit is refused before
+    /// any pixel memory is taken (a file of a few bytes may claim billions of
+    /// pixels); the decoder is also given that limit for what it allocates.
     pub fn load(path: &std::path::Path) -> Result<ImageTexture, String> {
-        let named =
-            |e: &dyn std::fmt::Display| format!("cannot load texture '{}': {e}", path.display());
-        let file = std::fs::File::open(path).map_err(|e| named(&e))?;
-        let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
-        // Palettes and grey below 8 bits become 8-bit samples.
-        decoder.set_transformations(png::Transformations::EXPAND);
-        let mut reader = decoder.read_info().map_err(|e| named(&e))?;
-        // The header alone says how big the image is: a file of a few bytes
-        // may claim billions of pixels, so they are counted before anything
-        // is allocated.
-        let (w, h) = (reader.info().width, reader.info().height);
+        use image::{ImageFormat, ImageReader, Limits};
+        let named = |e: &dyn std::fmt::Display| {
+            format!(
+                "cannot load texture '{}': {}",
+                path.display(),
+                crate::film::output::one_line(&e.to_string())
+            )
+        };
+        let open = || -> Result<ImageReader<_>, String> {
+            let reader = ImageReader::open(path)
+                .and_then(|r| r.with_guessed_format())
+                .map_err(|e| named(&e))?;
+            match reader.format() {
+                Some(ImageFormat::Png | ImageFormat::Jpeg) => Ok(reader),
+                Some(other) => Err(named(&format!(
+                    "a {other:?} image; textures are PNG or JPEG files"
+                ))),
+                None => Err(named(&"not a PNG or JPEG file")),
+            }
+        };
+        let (w, h) = open()?.into_dimensions().map_err(|e| named(&e))?;
         if w as u64 * h as u64 > MAX_TEXTURE_PIXELS {
             return Err(named(&format!(
                 "{w} × {h} pixels, more than a texture may have ({MAX_TEXTURE_PIXELS} pixels, \
                  e.g. 8192 × 8192, 768 MiB in linear RGB)"
             )));
         }
-        let size = reader
-            .output_buffer_size()
-            .ok_or_else(|| named(&"the image is too large"))?;
-        let mut buf = vec![0u8; size];
-        let frame = reader.next_frame(&mut buf).map_err(|e| named(&e))?;
-        let channels = frame.color_type.samples();
-        let wide = frame.bit_depth == png::BitDepth::Sixteen;
-        // Sample k of a row-major buffer, in [0, 1].
-        let sample = |k: usize| -> f32 {
-            if wide {
-                u16::from_be_bytes([buf[2 * k], buf[2 * k + 1]]) as f32 / 65535.0
-            } else {
-                buf[k] as f32 / 255.0
-            }
-        };
-        let pixels = (0..frame.width as usize * frame.height as usize)
-            .map(|i| {
-                let k = i * channels;
-                // Grey (with or without alpha) has one colour sample.
-                let [r, g, b] = if channels < 3 {
-                    [k; 3]
-                } else {
-                    [k, k + 1, k + 2]
-                };
+        let mut reader = open()?;
+        let mut limits = Limits::default();
+        // At most 16-bit RGBA in the decoder's buffer, plus its working memory.
+        limits.max_alloc = Some(MAX_TEXTURE_PIXELS * 8 + (64 << 20));
+        reader.limits(limits);
+        let decoded = reader.decode().map_err(|e| named(&e))?;
+        // 8- and 16-bit samples to [0, 1] (k/255, k/65535), grey to RGB,
+        // alpha dropped; then sRGB decoded to linear.
+        let rgb = decoded.to_rgb32f();
+        let pixels = rgb
+            .pixels()
+            .map(|p| {
                 Color::new(
-                    srgb_to_linear(sample(r)),
-                    srgb_to_linear(sample(g)),
-                    srgb_to_linear(sample(b)),
+                    srgb_to_linear(p.0[0]),
+                    srgb_to_linear(p.0[1]),
+                    srgb_to_linear(p.0[2]),
                 )
             })
             .collect();
-        ImageTexture::new(frame.width, frame.height, pixels)
+        ImageTexture::new(rgb.width(), rgb.height(), pixels)
             .map_err(|e| format!("texture '{}': {e}", path.display()))
     }
 
@@ -330,5 +333,45 @@ mod tests {
             err.contains("huge.png") && err.contains("40000 × 40000 pixels"),
             "{err}"
         );
+    }
+
+    /// A JPEG photograph is read as sRGB and decoded to linear; a file of
+    /// another format is refused by what its bytes say, whatever its name;
+    /// a truncated JPEG is named in one line.
+    #[test]
+    fn jpeg_is_loaded_as_linear_and_other_formats_are_refused() {
+        let dir = std::env::temp_dir().join(format!("jpeg-texture-test-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("grey.jpg");
+        // A flat 16 × 8 image of sRGB 128: JPEG keeps a flat block exact to
+        // a unit or so.
+        let flat = image::RgbImage::from_pixel(16, 8, image::Rgb([128, 128, 128]));
+        flat.save_with_format(&path, image::ImageFormat::Jpeg)
+            .unwrap();
+        let t = ImageTexture::load(&path).unwrap();
+        assert_eq!((t.width, t.height), (16, 8));
+        let lo = srgb_to_linear(127.0 / 255.0);
+        let hi = srgb_to_linear(129.0 / 255.0);
+        for p in &t.pixels {
+            assert!((lo..=hi).contains(&p.x) && p.x == p.y && p.y == p.z, "{p}");
+        }
+        // Truncated: the header and half the data.
+        let bytes = std::fs::read(&path).unwrap();
+        let cut = dir.join("cut.jpg");
+        std::fs::write(&cut, &bytes[..bytes.len() / 2]).unwrap();
+        let err = ImageTexture::load(&cut).unwrap_err();
+        assert!(err.contains("cut.jpg") && !err.contains('\n'), "{err}");
+        // A Radiance HDR file named .png is not a texture.
+        let hdr = dir.join("sky.png");
+        let px = vec![image::Rgb([1.0f32, 0.5, 0.25]); 4];
+        image::codecs::hdr::HdrEncoder::new(std::fs::File::create(&hdr).unwrap())
+            .encode(&px, 2, 2)
+            .unwrap();
+        let err = ImageTexture::load(&hdr).unwrap_err();
+        assert!(
+            err.contains("sky.png") && err.contains("PNG or JPEG"),
+            "{err}"
+        );
+        std::fs::remove_dir_all(&dir).ok();
     }
 }

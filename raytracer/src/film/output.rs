@@ -301,6 +301,18 @@ impl Image {
     }
 }
 
+/// A decoder's error message on one line (some end theirs with a newline,
+/// or list causes on lines of their own): what a file-reading error says
+/// after the file's name.
+pub fn one_line(message: &str) -> String {
+    message
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -92,29 +92,75 @@ pub fn uv_to_direction(uv: Vec2) -> Vec3A {
 pub const MAX_MAP_PIXELS: u64 = 1 << 27;
 
 impl EnvironmentMap {
-    /// Loads a lat-long map from an EXR file (linear RGB; alpha is ignored;
-    /// negative values are clamped to zero). The first RGB layer is used.
+    /// Loads a lat-long map from an EXR file (linear RGB, the first RGB
+    /// layer; alpha is ignored) or a Radiance HDR file (`.hdr`, linear RGBE),
+    /// chosen by the file's extension. Every pixel must be finite and
+    /// non-negative: radiance is never negative, so such a map is refused
+    /// with the pixel named, not clamped.
     ///
     /// The size the file's header declares is checked before any pixel
     /// memory is taken: at most [`MAX_MAP_PIXELS`].
     pub fn load(path: &Path) -> Result<EnvironmentMap, String> {
-        let meta = exr::meta::MetaData::read_from_file(path, false).map_err(|e| {
+        let is_hdr = path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("hdr"));
+        let (width, mut pixels) = if is_hdr {
+            Self::read_hdr(path)?
+        } else {
+            Self::read_exr(path)?
+        };
+        if width == 0 || pixels.is_empty() {
+            return Err(format!("environment map {} is empty", path.display()));
+        }
+        for (i, c) in pixels.iter_mut().enumerate() {
+            if !c.is_finite() || c.min_element() < 0.0 {
+                return Err(format!(
+                    "environment map {}: pixel ({}, {}) is {}: {c} (radiance is finite and never negative)",
+                    path.display(),
+                    i % width,
+                    i / width,
+                    if c.is_finite() {
+                        "negative"
+                    } else {
+                        "not finite"
+                    }
+                ));
+            }
+            // −0 to +0, so that sampling weights are never negative zero.
+            *c = c.max(Color::ZERO);
+        }
+        Ok(EnvironmentMap {
+            width: width as u32,
+            height: (pixels.len() / width) as u32,
+            pixels,
+        })
+    }
+
+    /// The refusal of a map whose header declares more than [`MAX_MAP_PIXELS`].
+    fn too_big(path: &Path, width: u64, height: u64) -> Option<String> {
+        (width.saturating_mul(height) > MAX_MAP_PIXELS).then(|| {
+            format!(
+                "environment map {} declares {width}×{height} pixels, more than the {} million a map may have",
+                path.display(),
+                MAX_MAP_PIXELS / 1_000_000
+            )
+        })
+    }
+
+    /// An EXR file's first RGB layer: its width and its pixels, row by row.
+    fn read_exr(path: &Path) -> Result<(usize, Vec<Color>), String> {
+        let unreadable = |e: &dyn std::fmt::Display| {
             format!(
                 "cannot read environment map {}: {e} (an RGB EXR file is expected)",
                 path.display()
             )
-        })?;
-        if let Some(big) = meta.headers.iter().find(|h| {
-            (h.layer_size.width() as u64).saturating_mul(h.layer_size.height() as u64)
-                > MAX_MAP_PIXELS
-        }) {
-            return Err(format!(
-                "environment map {} declares {}×{} pixels, more than the {} million a map may have",
-                path.display(),
-                big.layer_size.width(),
-                big.layer_size.height(),
-                MAX_MAP_PIXELS / 1_000_000
-            ));
+        };
+        let meta = exr::meta::MetaData::read_from_file(path, false).map_err(|e| unreadable(&e))?;
+        for h in &meta.headers {
+            let (w, hh) = (h.layer_size.width() as u64, h.layer_size.height() as u64);
+            if let Some(e) = Self::too_big(path, w, hh) {
+                return Err(e);
+            }
         }
         let image = exr::prelude::read_first_rgba_layer_from_file(
             path,
@@ -128,34 +174,44 @@ impl EnvironmentMap {
                 pixels[pos.y() * *w + pos.x()] = Color::new(r, g, b);
             },
         )
-        .map_err(|e| {
+        .map_err(|e| unreadable(&e))?;
+        let width = image.layer_data.size.width();
+        Ok((width, image.layer_data.channel_data.pixels.1))
+    }
+
+    /// A Radiance HDR file: its width and its pixels, row by row.
+    fn read_hdr(path: &Path) -> Result<(usize, Vec<Color>), String> {
+        use image::ImageDecoder;
+        let unreadable = |e: &dyn std::fmt::Display| {
             format!(
-                "cannot read environment map {}: {e} (an RGB EXR file is expected)",
-                path.display()
+                "cannot read environment map {}: {} (a Radiance HDR file is expected)",
+                path.display(),
+                crate::film::output::one_line(&e.to_string())
             )
-        })?;
-        let size = image.layer_data.size;
-        let (width, height) = (size.width(), size.height());
-        let mut pixels = image.layer_data.channel_data.pixels.1;
-        if width == 0 || height == 0 {
-            return Err(format!("environment map {} is empty", path.display()));
+        };
+        let file = std::fs::File::open(path).map_err(|e| unreadable(&e))?;
+        // The header alone: no pixel is read before the size is checked.
+        let decoder = image::codecs::hdr::HdrDecoder::new(std::io::BufReader::new(file))
+            .map_err(|e| unreadable(&e))?;
+        let (w, h) = decoder.dimensions();
+        if let Some(e) = Self::too_big(path, w as u64, h as u64) {
+            return Err(e);
         }
-        for (i, c) in pixels.iter_mut().enumerate() {
-            if !c.is_finite() {
-                return Err(format!(
-                    "environment map {}: pixel ({}, {}) is not finite: {c}",
-                    path.display(),
-                    i % width,
-                    i / width
-                ));
-            }
-            *c = c.max(Color::ZERO);
+        if decoder.color_type() != image::ColorType::Rgb32F {
+            return Err(unreadable(&"its decoder gives no RGB floats"));
         }
-        Ok(EnvironmentMap {
-            width: width as u32,
-            height: height as u32,
-            pixels,
-        })
+        let mut bytes = vec![0u8; decoder.total_bytes() as usize];
+        decoder.read_image(&mut bytes).map_err(|e| unreadable(&e))?;
+        // Rgb32F: three native-endian f32 a pixel.
+        let floats: Vec<f32> = bytes
+            .chunks_exact(4)
+            .map(|b| f32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
+            .collect();
+        let pixels = floats
+            .chunks_exact(3)
+            .map(|c| Color::new(c[0], c[1], c[2]))
+            .collect();
+        Ok((w as usize, pixels))
     }
 
     /// The pixel containing `(u, v)` (nearest lookup; `u` wraps around, `v`
@@ -478,6 +534,72 @@ mod tests {
         let path = std::env::temp_dir().join("no_such_dir_light_test/missing_sky.exr");
         let err = EnvironmentMap::load(&path).unwrap_err();
         assert!(err.contains("missing_sky.exr"), "{err}");
+    }
+
+    /// A Radiance HDR map (the format of public HDRI libraries) loads with
+    /// its values (RGBE holds 1, 0.5, 2 and 0.25 exactly), top row first;
+    /// a header claiming 40 000 × 40 000 pixels is refused before pixels are
+    /// read; a truncated file is named in one line.
+    #[test]
+    fn load_reads_radiance_hdr_and_refuses_what_it_must() {
+        let dir = std::env::temp_dir().join(format!("light_hdr_test_{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("tiny_sky.hdr");
+        let values = [
+            [1.0f32, 0.5, 2.0],
+            [0.25, 1.0, 0.5],
+            [2.0, 2.0, 2.0],
+            [0.5, 0.25, 1.0],
+        ];
+        let px: Vec<image::Rgb<f32>> = values.iter().map(|v| image::Rgb(*v)).collect();
+        image::codecs::hdr::HdrEncoder::new(std::fs::File::create(&path).unwrap())
+            .encode(&px, 2, 2)
+            .unwrap();
+        let m = EnvironmentMap::load(&path).unwrap();
+        assert_eq!((m.width, m.height), (2, 2));
+        for (p, v) in m.pixels.iter().zip(values) {
+            assert_eq!(*p, Color::from(v));
+        }
+        let huge = dir.join("huge.hdr");
+        std::fs::write(
+            &huge,
+            b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 40000 +X 40000\n",
+        )
+        .unwrap();
+        let err = EnvironmentMap::load(&huge).unwrap_err();
+        assert!(
+            err.contains("huge.hdr") && err.contains("40000×40000"),
+            "{err}"
+        );
+        let bytes = std::fs::read(&path).unwrap();
+        let cut = dir.join("cut.hdr");
+        std::fs::write(&cut, &bytes[..bytes.len() - 5]).unwrap();
+        let err = EnvironmentMap::load(&cut).unwrap_err();
+        assert!(err.contains("cut.hdr") && !err.contains('\n'), "{err}");
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    /// Radiance is never negative: a map with a negative pixel is refused,
+    /// naming the pixel, as a NaN pixel is (it used to be clamped silently).
+    #[test]
+    fn load_refuses_negative_pixels() {
+        let dir = std::env::temp_dir().join(format!("light_neg_exr_{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("negative.exr");
+        exr::prelude::write_rgb_file(&path, 2, 1, |x, _| {
+            if x == 1 {
+                (1.0f32, -0.5f32, 1.0f32)
+            } else {
+                (1.0, 1.0, 1.0)
+            }
+        })
+        .unwrap();
+        let err = EnvironmentMap::load(&path).unwrap_err();
+        std::fs::remove_dir_all(&dir).ok();
+        assert!(
+            err.contains("negative.exr") && err.contains("pixel (1, 0) is negative"),
+            "{err}"
+        );
     }
 
     /// Writes a 4 × 2 RGB EXR with the exr crate and loads it back: same
