@@ -24,7 +24,7 @@
 //! single lobe. Derive `f` so that the weight is what the delta gives in the
 //! reflected radiance `∫ f_r L_i cos θ_i dω_i`. If `wo.z ≤ 0` there is no
 //! reflected direction above the surface (at `wo.z = 0` it lies in the
-//! surface, where `1/cos θ_i` is infinite): return `None`.
+//! surface, where `cos θ_i = 0`): return `None`.
 //!
 //! Receives: `w`, `n` / the reflectance `R` and `wo`. Returns: the reflected
 //! direction / the sample.

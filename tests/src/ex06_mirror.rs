@@ -122,15 +122,19 @@ fn check_sample(sample: MirrorFn) -> Result<(), String> {
         let weight = s.f * (s.wi.z.abs() / s.pdf_w);
         if !close3(weight, r, 1e-4) {
             let why = if close3(weight, r * wi.z, 1e-4) {
-                "it is R·cos θ_i: too dark at grazing angles — your f is the reflectance itself, and the integrator's |cos θ_i| is left in the weight, though a mirror reflects R of the light at every angle"
+                "it is R·cos θ_i: too dark at grazing angles — your f is the reflectance itself, and the integrator's |cos θ_i| is left in the weight, though a mirror reflects R of the light at every angle".to_string()
             } else if close3(weight, r / wi.z, 1e-4) {
                 "it is R/cos θ_i: too bright at grazing angles — the cosine was divided out twice"
+                    .to_string()
             } else {
                 let k = weight / r;
                 if (k - Vec3A::splat(k.x)).abs().max_element() < 1e-4 {
-                    "the weight is a constant multiple of R: the scale of f is wrong"
+                    format!(
+                        "the weight is ×{:.4} of R at cos θ_i = {:.4}: the scale of f is wrong",
+                        k.x, wi.z
+                    )
                 } else {
-                    "the weight's colour differs from R's"
+                    "the weight's colour differs from R's: f is not R's colour scaled".to_string()
                 }
             };
             return Err(format!(
