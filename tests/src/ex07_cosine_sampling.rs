@@ -99,7 +99,7 @@ pub fn check(sample: SampleFn, pdf: PdfFn) -> Result<(), String> {
         let first = e.lines().next().unwrap_or_default();
         let first = first.split(" Worst cells").next().unwrap_or(first);
         return Err(format!(
-            "your directions are not distributed as cos θ/π — {} ({first}){}",
+            "your directions' density is not proportional to cos θ — {} ({first}){}",
             diagnose(sample, test.seed),
             write_picture(sample, test.seed)
         ));
@@ -203,7 +203,7 @@ fn write_picture(sample: SampleFn, seed: u64) -> String {
         std::fs::create_dir_all(output_dir()).and_then(|()| write_histograms(&histograms, &path));
     match written {
         Ok(()) => format!(
-            "; see {}: top, cos θ of your directions (grey) against the density 2·cos θ they should have (red); below, φ against the uniform 1/(2π)",
+            "; see {}: top, cos θ of your directions (grey) against the distribution they should have (red); below, φ against the uniform one",
             path.display()
         ),
         Err(e) => format!(" (could not write the histograms: {e})"),

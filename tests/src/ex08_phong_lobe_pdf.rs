@@ -81,7 +81,7 @@ pub fn check(pdf: PdfFn) -> Result<(), String> {
         let (n, t) = cases[k];
         let why = recognise(&cases, &got, &mistakes, |g, a| close(g, a, 1e-4)).unwrap_or_else(|| {
             format!(
-                "over all directions your density integrates to {:.4} for n = {n}, and a density must integrate to 1 (∫ p dω = 2π ∫_0^1 p dt)",
+                "over all directions your density integrates to {:.4} for n = {n}, and a density must integrate to 1",
                 integral(pdf, n)
             )
         });
