@@ -157,14 +157,16 @@ fn mistakes(case: &Case) -> Vec<(Color, &'static str)> {
 }
 
 /// Whether the student's mean is what `value` predicts: within the z-test's
-/// tolerance, or within 3% of it in every channel (estimators with a missing
+/// tolerance, or within 5% of it in every channel (estimators with a missing
 /// cosine have heavy tails, 1/cos θ_i under cosine sampling, whose standard
-/// error is unreliable; the usual mistakes lie at least 4.8% apart).
+/// error is unreliable). Two mistakes may then both agree in one case (N − 1
+/// and a missing cosine lie 4.8% apart at normal incidence): the one named
+/// is the one that agrees in every case.
 fn agrees(stats: &MeanVar, value: Color) -> bool {
     stats.matches(value)
         || (0..3).all(|k| {
             let v = value[k] as f64;
-            v > 0.0 && (stats.mean()[k] / v - 1.0).abs() < 0.03
+            v > 0.0 && (stats.mean()[k] / v - 1.0).abs() < 0.05
         })
 }
 
