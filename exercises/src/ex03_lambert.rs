@@ -4,9 +4,9 @@
 //! "Properties of BRDFs" ("Свойства на BRDF-ите").
 //!
 //! A diffuse (Lambertian) surface reflects the same radiance in every
-//! direction: its BRDF is a constant. The lecture gives 1/π for a white
-//! surface ("why 1/π: in a moment" — energy conservation), and with a
-//! diffuse texture the constant depends on the point, texture.sample(x)/π.
+//! direction: its BRDF is a constant for every pair of directions. How large
+//! a constant is fixed by energy conservation, and with a diffuse texture it
+//! depends on the point, through the texture's colour there.
 //!
 //! A BRDF is a density per unit solid angle (sr⁻¹), not a probability: its
 //! values may exceed 1 (a narrow glossy lobe's do). What is bounded is the

@@ -24,8 +24,8 @@
 //! `f_r` is a density in sr⁻¹, not a probability: at the centre of the lobe
 //! it is ρ_s·S(n), far above 1 for a narrow lobe.
 //!
-//! Receives: the exponent `n ≥ 0` (and ρ_s, `wo`, `wi`). Returns: `S(n)`,
-//! and `f_r`.
+//! Receives: the exponent `n`, any real `n ≥ 0` (not only integers), and
+//! ρ_s, `wo`, `wi`. Returns: `S(n)`, and `f_r`.
 
 use raytracer::math::{Color, Vec3A};
 

@@ -16,13 +16,15 @@
 //!
 //! Part 2: `mirror_sample(reflectance, wo)`: the BRDF sample of a mirror in
 //! the local frame (normal `+z`), in the form every BRDF of the renderer
-//! returns (`BrdfSample`: the direction `wi`, the value `f`, the density
-//! `pdf_w`, `is_delta`, and `eta` = 1 for reflection). The path tracer
-//! weights every sample by `f · |cos θ_i| / pdf_w`. Choose `f` and `pdf_w`
-//! (for a delta lobe: the probability of choosing it, here the only one) so
-//! that this weight is what the delta gives. If `wo.z ≤ 0` there is no
+//! returns (`BrdfSample`: the direction `wi`, the value `f`, `pdf_w`,
+//! `is_delta`, and `eta` = 1 for reflection). The path tracer weights every
+//! sample by `f · |cos θ_i| / pdf_w`. For a delta lobe `pdf_w` is not a
+//! density over directions (a delta has none) but the probability with
+//! which the sampler chose that lobe among the BRDF's lobes; a mirror has a
+//! single lobe. Derive `f` so that the weight is what the delta gives in the
+//! reflected radiance `∫ f_r L_i cos θ_i dω_i`. If `wo.z ≤ 0` there is no
 //! reflected direction above the surface (at `wo.z = 0` it lies in the
-//! surface, where `1/cos θ_i` is infinite): return `None`.
+//! surface, where `cos θ_i = 0`): return `None`.
 //!
 //! Receives: `w`, `n` / the reflectance `R` and `wo`. Returns: the reflected
 //! direction / the sample.
@@ -38,6 +40,6 @@ pub fn reflect(w: Vec3A, n: Vec3A) -> Vec3A {
 
 /// The one sample of a perfect mirror (`None` if `wo.z ≤ 0`).
 pub fn mirror_sample(reflectance: Color, wo: Vec3A) -> Option<BrdfSample> {
-    // TODO: wi, then f and pdf_w such that the path tracer's weight is R.
+    // TODO: wi, then pdf_w and f such that the path tracer's weight is what the delta gives.
     todo!()
 }

@@ -6,8 +6,9 @@
 //!
 //! Path tracing follows one random continuation at each hit instead of N:
 //! the integral of the rendering equation is estimated with one sample per
-//! bounce, and the weights of all the bounces so far multiply into the
-//! path's throughput β (the slide's `β ← β · f_r cos θ_i / p`). Lights are
+//! bounce (the Monte Carlo estimate of the slide "Solving with Monte Carlo"
+//! with N = 1), and the weights of all the bounces so far multiply into the
+//! path's throughput β. Lights are
 //! found only by hitting them: no light sampling here. Conventions as in
 //! exercise 10: directions point away from the surface, `cos θ_i = ω_i·n`
 //! with the normal on the side of `ω_o`, and D counts the segments of a path.

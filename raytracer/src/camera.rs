@@ -113,8 +113,8 @@ impl Camera {
         self.forward
     }
 
-    /// Unit image-right direction: the stereo rig offsets the eyes along it
-    /// by ±stereoSeparation/2.
+    /// Unit image-right direction (the lecture's `rightDir`): the direction
+    /// along which the stereo rig separates the two eyes.
     #[inline]
     pub fn right_dir(&self) -> Vec3A {
         self.right_dir

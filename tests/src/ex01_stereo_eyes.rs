@@ -60,24 +60,31 @@ pub fn check(f: EyesFn) -> Result<(), String> {
         let what = format!("camera at {}, stereo_separation {s}", fmt3(p));
         if close3(l, er, tol) && close3(r, el, tol) {
             return Err(format!(
-                "{what}: left and right are swapped — the left eye is at position − (s/2)·rightDir"
+                "{what}: left and right are swapped — your left eye sits on the side of +rightDir, where the right eye belongs"
             ));
         }
         let dist = (r - l).length();
         if (dist - s).abs() > 1e-4 * s {
+            let why = if (dist - 2.0 * s).abs() <= 1e-4 * s {
+                ": twice too far apart — each eye moved by the whole separation"
+            } else if (dist - 0.5 * s).abs() <= 1e-4 * s {
+                ": half the separation — each eye moved by a quarter of it"
+            } else {
+                ""
+            };
             return Err(format!(
-                "{what}: your eyes are {dist:.4} apart, expected stereo_separation = {s}"
+                "{what}: your eyes are {dist:.4} apart, stereo_separation is {s}{why}"
             ));
         }
         let mid = 0.5 * (l + r);
         if !close3(mid, p, tol) {
             return Err(format!(
-                "{what}: the midpoint of your eyes is {}, expected the camera position",
+                "{what}: the midpoint of your eyes is {}, not the camera position — the pair is shifted",
                 fmt3(mid)
             ));
         }
         return Err(format!(
-            "{what}: your eyes are offset along {}, expected along camera.right_dir() = {}",
+            "{what}: your eyes are offset along {}, which is not the camera's rightDir {}",
             fmt3((r - l) / dist),
             fmt3(camera.right_dir())
         ));

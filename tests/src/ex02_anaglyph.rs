@@ -51,18 +51,41 @@ pub fn check(f: AnaglyphFn) -> Result<(), String> {
         );
         let (l, r) = (desaturate(left, d), desaturate(right, d));
         let why = if close3(got, Color::new(r.x, l.y, l.z), 1e-4) {
-            "the channels are swapped: red comes from the LEFT eye (red filter on the left), green and blue from the right"
+            "the channels are swapped: your red comes from the right frame and your green and blue from the left, but the red filter is over the left eye".to_string()
         } else if close3(got, expected(left, right, 1.0 - d), 1e-4) {
-            "desaturation is reversed: d = 0 keeps the colour, d = 1 makes it grey"
+            "the desaturation is reversed: your colours are greyest where d is smallest".to_string()
         } else if close3(got, expected(left, right, 0.0), 1e-4) {
-            "the colours were not desaturated: c' = (1 − d)·c + d·luminance(c)"
+            "the colours were not desaturated: your pixel is the same whatever d is".to_string()
         } else {
             let avg = |c: Color| c.lerp(Color::splat((c.x + c.y + c.z) / 3.0), d);
             let (la, ra) = (avg(left), avg(right));
             if close3(got, Color::new(la.x, ra.y, ra.z), 1e-4) {
-                "the grey must be raytracer::math::luminance(c), not the average of the channels"
+                "your grey is the plain average of the three channels, not the luminance Y(c) of the stub (the eye weighs green far more than blue)".to_string()
             } else {
-                "desaturate both, then red from the left, green and blue from the right"
+                let bad: Vec<&str> = [
+                    "red (the left eye's)",
+                    "green (the right eye's)",
+                    "blue (the right eye's)",
+                ]
+                .into_iter()
+                .enumerate()
+                .filter(|&(k, _)| (got[k] - want[k]).abs() > 1e-4 * want[k].abs().max(1.0))
+                .map(|(_, name)| name)
+                .collect();
+                let plain = cases()
+                    .into_iter()
+                    .filter(|c| c.2 == 0.0)
+                    .all(|(l0, r0, _)| close3(f(l0, r0, 0.0), expected(l0, r0, 0.0), 1e-4));
+                format!(
+                    "wrong in the {} channel{}; {}",
+                    bad.join(" and "),
+                    if bad.len() > 1 { "s" } else { "" },
+                    if plain {
+                        "the cases with d = 0 pass, so the filters are right and the desaturation is not"
+                    } else {
+                        "wrong with d = 0 too, so the filters' mixing itself is wrong"
+                    }
+                )
             }
         };
         return Err(format!("{what} — {why}"));

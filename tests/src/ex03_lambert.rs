@@ -34,17 +34,22 @@ pub fn check(f: LambertFn) -> Result<(), String> {
     if (albedo - 1.0).abs() >= 1e-3 {
         let r = albedo as f64;
         let why = if ratio_near(r, PI as f64) {
-            " — did you forget 1/π?"
+            " — too bright by ×π: the constant that the integral over the hemisphere brings (a factor π) is missing".to_string()
         } else if ratio_near(r, 2.0 / 3.0) {
-            " — your f_r seems to contain cos θ_i: the cosine belongs to the integrator, not the BRDF"
+            " — your f_r seems to contain cos θ_i, so the cosine counts twice: the cosine belongs to the integrator, not the BRDF".to_string()
         } else if ratio_near(r, 1.0 / PI as f64) {
-            " — did you divide by π twice?"
+            " — too dark by ×1/π: divided by π twice?".to_string()
+        } else if ratio_near(r, 0.5) {
+            " — half the light is lost: as if the integral of the cosine over the hemisphere were 2π".to_string()
+        } else if albedo > 1.0 {
+            format!(
+                " — too bright by ×{albedo:.3}: the surface reflects more light than it receives"
+            )
         } else {
-            ""
+            format!(" — too dark by ×{albedo:.3}: a white surface must reflect all the light")
         };
-        let bound = if albedo > 1.0 { "≤ 1" } else { "1 (white)" };
         return Err(format!(
-            "the directional albedo of your Lambert (white texture) is {albedo:.3}, expected {bound}{why}"
+            "the directional albedo of your Lambert (white texture) is {albedo:.3}, expected 1{why}"
         ));
     }
     // The texture is looked up at uv.
@@ -59,10 +64,21 @@ pub fn check(f: LambertFn) -> Result<(), String> {
     ] {
         let got = f(&checker, uv, wo, wi);
         if !close3(got, c / PI, 1e-4) {
+            let other = if c == a { b } else { a };
+            let why = if close3(got, f(&checker, Vec2::ZERO, wo, wi), 1e-4)
+                && close3(got, checker.eval(Vec2::ZERO) / PI, 1e-4)
+            {
+                "your f_r has the colour of the texture at uv = (0, 0), not at the point's uv"
+            } else if close3(got, other / PI, 1e-4) {
+                "your f_r has the colour of the other square of the checker: the texture is looked up at another point than uv"
+            } else {
+                "your f_r does not follow the texture's colour at this point (the white texture passed, so the constant is right)"
+            };
             return Err(format!(
-                "checker texture at uv = {uv}: your f_r is {}, expected texture.eval(uv)/π = {} — look the texture up at uv",
+                "checker texture at uv = {uv}, whose colour there is {}: your f_r is {}, π·f_r = {} — {why}",
+                fmt3(c),
                 fmt3(got),
-                fmt3(c / PI)
+                fmt3(got * PI)
             ));
         }
     }
@@ -72,7 +88,7 @@ pub fn check(f: LambertFn) -> Result<(), String> {
         let got = f(&Texture::Constant(Color::ONE), Vec2::ZERO, o, i);
         if got != Color::ZERO {
             return Err(format!(
-                "wo = {}, wi = {}: your f_r is {}, expected black: a direction below the surface (z ≤ 0) reflects nothing",
+                "wo = {}, wi = {}: your f_r is {}, not black — light from below the surface, or leaving below it (z ≤ 0), is reflected by yours",
                 fmt3(o),
                 fmt3(i),
                 fmt3(got)

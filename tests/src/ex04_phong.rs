@@ -34,8 +34,9 @@ pub fn expected_f(albedo: Color, n: f32, wo: Vec3A, wi: Vec3A) -> Color {
     lobe(albedo, n, mirror_z(wo).dot(wi))
 }
 
-/// The exponents of the test.
-pub const EXPONENTS: [f32; 6] = [0.0, 1.0, 2.0, 10.0, 100.0, 1000.0];
+/// The exponents of the test: integers and not (a lobe's exponent is any
+/// real `n ≥ 0`; a formula valid only for integers fails at 0.5, 3.7, 42.5).
+pub const EXPONENTS: [f32; 9] = [0.0, 0.5, 1.0, 2.0, 3.7, 10.0, 42.5, 100.0, 1000.0];
 
 pub fn check(s: NormFn, f: PhongFn) -> Result<(), String> {
     check_normalization(s)?;
@@ -48,7 +49,7 @@ fn check_normalization(s: NormFn) -> Result<(), String> {
     else {
         return Ok(());
     };
-    let mistakes: [Mistake<f32, f32>; 5] = [
+    let mistakes: [Mistake<f32, f32>; 7] = [
         (
             "(n+1)/(2π) makes ∫ S(n) cos^n θ dω = 1, a probability density without the cosine θ_i of the albedo: the albedo at normal incidence becomes (n+1)/(n+2)·ρ_s < ρ_s — energy is lost",
             &|&n| (n + 1.0) * INV_2PI,
@@ -58,15 +59,24 @@ fn check_normalization(s: NormFn) -> Result<(), String> {
             &|_| 1.0,
         ),
         (
-            "that is the integral ∫ cos^{n+1} θ dω itself: S(n) is one over it",
+            "you returned the integral ∫ cos^{n+1} θ dω itself, not the constant that makes S(n) times it equal 1",
             &|&n| 1.0 / expected_s(n),
         ),
-        ("(n+2)/π: the φ integral gives 2π, not π", &|&n| {
-            (n + 2.0) * 2.0 * INV_2PI
-        }),
         (
-            "(n+2)/(4π): the lobe lies in one hemisphere, 2π of φ times ∫_0^1 t^{n+1} dt",
+            "twice too large in every case: as if the integral over φ gave π, half a turn",
+            &|&n| (n + 2.0) * 2.0 * INV_2PI,
+        ),
+        (
+            "half the right value in every case: as if the integral ran over the whole sphere of directions, not the hemisphere above the surface",
             &|&n| (n + 2.0) * 0.5 * INV_2PI,
+        ),
+        (
+            "too large by ×π in every case: a missing π (the integral over φ of a full turn brings it)",
+            &|&n| (n + 2.0) * 0.5,
+        ),
+        (
+            "right at integer exponents only: your n was rounded to an integer, but a lobe's exponent is any real n ≥ 0 (see n = 0.5, 3.7, 42.5)",
+            &|&n| (n.trunc() + 2.0) * INV_2PI,
         ),
     ];
     let n = EXPONENTS[k];
@@ -108,7 +118,7 @@ fn check_eval(f: PhongFn) -> Result<(), String> {
             // Upper hemisphere, but more than 90° from the mirror direction.
             Vec3A::new(-3.0 * mirror.x, -3.0 * mirror.y, 0.2).normalize(),
         ];
-        for n in [1.0, 10.0, 50.0] {
+        for n in [1.0, 2.5, 10.0, 50.0] {
             for wi in dirs {
                 cases.push(Case { n, wo, wi });
             }
@@ -120,15 +130,20 @@ fn check_eval(f: PhongFn) -> Result<(), String> {
         return Ok(());
     };
     let c = &cases[k];
-    let mistakes: [Mistake<Case, Color>; 7] = [
+    let mistakes: [Mistake<Case, Color>; 8] = [
         (
-            "cos α < 0 somewhere: return black there (max(0, cos α)) before taking the power",
+            "your f_r is not zero where cos α < 0 (more than 90° from the mirror direction): a negative cosine went into the power",
             &|c| albedo * expected_s(c.n) * mirror_z(c.wo).dot(c.wi).abs().powf(c.n),
         ),
-        ("multiply by the albedo ρ_s", &|c| want(c) / albedo),
-        ("multiply by S(n)", &|c| want(c) / expected_s(c.n)),
         (
-            "α is the angle between wi and the MIRROR direction of wo, not wo itself",
+            "ρ_s is missing: your lobe is that of a white surface",
+            &|c| want(c) / albedo,
+        ),
+        ("S(n) is missing: your lobe is not normalized", &|c| {
+            want(c) / expected_s(c.n)
+        }),
+        (
+            "your lobe is centred on ω_o itself: α is measured from its MIRROR direction",
             &|c| lobe(albedo, c.n, c.wo.dot(c.wi)),
         ),
         (
@@ -140,7 +155,7 @@ fn check_eval(f: PhongFn) -> Result<(), String> {
             &|c| lobe(albedo, c.n, -mirror_z(c.wo).dot(c.wi)),
         ),
         (
-            "the exponent n belongs on cos α, not on S(n)·cos α",
+            "you raised S(n)·cos α to the power n, not the cosine alone",
             &|c| {
                 let cos_a = mirror_z(c.wo).dot(c.wi);
                 if cos_a <= 0.0 {
@@ -150,9 +165,25 @@ fn check_eval(f: PhongFn) -> Result<(), String> {
                 }
             },
         ),
+        (
+            "right at integer exponents only: the power was taken of an exponent rounded to an integer (n = 2.5 fails)",
+            &|c| {
+                lobe(albedo, c.n.trunc(), mirror_z(c.wo).dot(c.wi))
+                    * (expected_s(c.n) / expected_s(c.n.trunc()))
+            },
+        ),
     ];
-    let why = recognise(&cases, &got, &mistakes, |g, a| close3(g, a, 1e-3))
-        .unwrap_or_else(|| "f_r = ρ_s · S(n) · max(0, cos α)^n".to_string());
+    // A negative cosine raised to a non-integer power is NaN.
+    let negative_power = cases
+        .iter()
+        .zip(&got)
+        .any(|(c, g)| !g.is_finite() && mirror_z(c.wo).dot(c.wi) < 0.0);
+    let why = if negative_power {
+        Some("your f_r is not zero where cos α < 0 (more than 90° from the mirror direction), and NaN there at n = 2.5: a negative cosine went into the power".to_string())
+    } else {
+        recognise(&cases, &got, &mistakes, |g, a| close3(g, a, 1e-3))
+    }
+    .unwrap_or_else(|| symptom(&cases, &got, &want));
     Err(format!(
         "n = {}, wo = {}, wi = {}: your f_r is {}, expected {} — {why}",
         c.n,
@@ -161,4 +192,34 @@ fn check_eval(f: PhongFn) -> Result<(), String> {
         fmt3(got[k]),
         fmt3(want(c))
     ))
+}
+
+/// What a wrong `f_r` that no known mistake explains does: a constant
+/// factor everywhere (the scale), right at the peak but wrong around it (the
+/// shape), or wrong at the peak too.
+fn symptom(cases: &[Case], got: &[Color], want: &dyn Fn(&Case) -> Color) -> String {
+    let ratios: Vec<f32> = cases
+        .iter()
+        .zip(got)
+        .filter(|(c, _)| want(c).x > 1e-3)
+        .map(|(c, g)| g.x / want(c).x)
+        .collect();
+    let k = ratios.first().copied().unwrap_or(1.0);
+    if ratios.iter().all(|r| (r / k - 1.0).abs() < 1e-3) {
+        return format!(
+            "your f_r is ×{k:.4} the right one in every case: the lobe's shape is right, its scale is not"
+        );
+    }
+    let peak = cases
+        .iter()
+        .zip(got)
+        .filter(|(c, _)| (mirror_z(c.wo).dot(c.wi) - 1.0).abs() < 1e-6)
+        .all(|(c, g)| close3(*g, want(c), 1e-3));
+    if peak {
+        "right at the mirror direction but wrong away from it: the lobe's fall-off with α is wrong"
+            .to_string()
+    } else {
+        "wrong at the mirror direction already, where cos α = 1 and only the constants count"
+            .to_string()
+    }
 }

@@ -24,7 +24,7 @@ pub fn check(f: NormFn) -> Result<(), String> {
         return Ok(());
     };
     let sin2 = |t: f32| t.sin() * t.sin();
-    let mistakes: [Mistake<f32, f32>; 7] = [
+    let mistakes: [Mistake<f32, f32>; 8] = [
         (
             "1/(2π(1 − cos θ_m)) is one over the cone's solid angle: it makes ∫ C dω = 1, a probability density, but the albedo weights each direction by cos θ_i — with it the albedo at normal incidence is (1 + cos θ_m)/2 · ρ < ρ: energy is lost",
             &|&t| 1.0 / (2.0 * PI * (1.0 - t.cos())),
@@ -34,20 +34,24 @@ pub fn check(f: NormFn) -> Result<(), String> {
             &|_| 1.0 / PI,
         ),
         (
-            "1/(π θ_m²) uses sin θ_m ≈ θ_m, true only for narrow cones: keep sin²θ_m",
+            "1/(π θ_m²) uses the small-angle approximation sin θ_m ≈ θ_m: right for narrow cones only, and wrong by more and more as the cone widens (×0.41 at θ_m = 90°)",
             &|&t| 1.0 / (PI * t * t),
         ),
         (
-            "that is the integral π sin²θ_m itself: C is one over it",
+            "you returned the integral of cos θ over the cone itself, not the constant that makes ρ·C times it equal ρ",
             &|&t| PI * sin2(t),
         ),
         (
-            "off by a factor 2: ∫_0^{2π} dφ = 2π and ∫_0^{θ_m} cos θ sin θ dθ = sin²θ_m / 2",
+            "half the right value at every angle: a factor 2 was lost in the integral over θ or over φ (energy is lost)",
             &|&t| 1.0 / (2.0 * PI * sin2(t)),
         ),
         (
-            "off by a factor 2: ∫_0^{2π} dφ = 2π and ∫_0^{θ_m} cos θ sin θ dθ = sin²θ_m / 2",
+            "twice the right value at every angle: a factor 2 too many in the integral over θ or over φ (energy is created)",
             &|&t| 2.0 / (PI * sin2(t)),
+        ),
+        (
+            "too large by ×π at every angle: a missing π (the integral over φ of a full turn brings it)",
+            &|&t| 1.0 / sin2(t),
         ),
         (
             "θ_m is already in radians: do not convert it from degrees",
@@ -60,7 +64,7 @@ pub fn check(f: NormFn) -> Result<(), String> {
     let t = ANGLES[k];
     let why = recognise(&ANGLES, &got, &mistakes, |g, a| close(g, a, 1e-4)).unwrap_or_else(|| {
         format!(
-            "with it the albedo at normal incidence, ρ · C · π sin²θ_m, would be {:.3}·ρ instead of ρ",
+            "with it the albedo at normal incidence would be {:.3}·ρ instead of ρ",
             got[k] as f64 / expected(t) as f64
         )
     });

@@ -44,14 +44,28 @@ pub fn check(sample: SampleFn, pdf: PdfFn) -> Result<(), String> {
     ] {
         let (got, want) = (pdf(w), expected_pdf(w));
         if !(close(got, want, 1e-4) || (want == 0.0 && got == 0.0)) {
+            let c = w.z.max(0.0);
             let why = if close(got, 0.5 * INV_PI, 1e-4) {
-                "1/(2π) is the pdf of UNIFORM hemisphere sampling"
+                "1/(2π) is the density of UNIFORM hemisphere sampling".to_string()
             } else if want == 0.0 {
-                "on and below the horizon (w.z ≤ 0) the density is 0"
+                "on and below the horizon (w.z ≤ 0) the directions are never drawn, so their density is 0".to_string()
             } else if close(got, w.z, 1e-4) {
-                "cos θ alone does not integrate to 1 over the hemisphere (∫ cos θ dω = π): normalize it"
+                format!(
+                    "your density is cos θ itself: it integrates to {:.4} over the hemisphere, not 1 — a missing normalization",
+                    std::f64::consts::PI
+                )
+            } else if close(got, c * c * c * INV_PI, 1e-4) {
+                "your density falls off as cos³θ, two powers of cos θ too fast (it integrates to 0.5 over the hemisphere): lifting a disk point straight up onto the hemisphere changes area by a single cos θ — cos³θ is the change of measure onto a plane at unit distance, as for a camera's film".to_string()
             } else {
-                "the density is proportional to cos θ and integrates to 1 over the hemisphere"
+                format!(
+                    "your density integrates to {:.4} over the hemisphere{}",
+                    pdf_integral(pdf),
+                    if close(got / c, pdf(Vec3A::Z), 1e-3) {
+                        ""
+                    } else {
+                        ", and is not proportional to cos θ"
+                    }
+                )
             };
             return Err(format!(
                 "cosine_hemisphere_pdf({}) is {got}, expected {want} — {why}",
@@ -85,12 +99,26 @@ pub fn check(sample: SampleFn, pdf: PdfFn) -> Result<(), String> {
         let first = e.lines().next().unwrap_or_default();
         let first = first.split(" Worst cells").next().unwrap_or(first);
         return Err(format!(
-            "your directions are not distributed as cos θ/π — {} ({first}){}",
+            "your directions' density is not proportional to cos θ — {} ({first}){}",
             diagnose(sample, test.seed),
             write_picture(sample, test.seed)
         ));
     }
     Ok(())
+}
+
+/// `∫ pdf dω` over the hemisphere of a density that depends on `cos θ`
+/// only (the student's along the `xz` plane), by the midpoint rule in
+/// `t = cos θ` (`dω = dt dφ`).
+fn pdf_integral(pdf: PdfFn) -> f64 {
+    let m = 4000;
+    let sum: f64 = (0..m)
+        .map(|i| {
+            let t = (i as f32 + 0.5) / m as f32;
+            pdf(Vec3A::new((1.0 - t * t).sqrt(), 0.0, t)) as f64
+        })
+        .sum();
+    TAU * sum / m as f64
 }
 
 /// `cos θ` and `φ ∈ [0, 2π)` of the student's directions for the chi-square
@@ -121,17 +149,20 @@ fn diagnose(sample: SampleFn, seed: u64) -> String {
         .filter(|&&b| (b as f64) < 0.1 * n / 16.0)
         .count();
     // Standard error of the mean of cos θ under the right density (variance
-    // 1/18): 4.6e-4; the alternatives below differ by more than 0.1.
+    // 1/18): 4.6e-4; the alternatives below lie at least 0.014 (30 standard
+    // errors) apart, and each is recognised within 0.005 (10 of them).
     if (upper_phi as f64) < 0.01 * n {
-        "half of the circle is empty (no φ ≥ π): is φ = 2π·u? (π·u covers half)".into()
+        "half of the circle is empty (no φ ≥ π): your φ covers only half a turn".into()
     } else if empty >= 4 {
         format!(
-            "{empty} of 16 sectors of φ are (nearly) empty: φ must go all the way round, φ = 2π·u"
+            "{empty} of 16 sectors of φ are (nearly) empty: your φ does not go all the way round"
         )
-    } else if (mean_cos - 0.5).abs() < 0.01 {
+    } else if (mean_cos - 0.5).abs() < 0.005 {
         "cos θ is uniform (its mean is 0.50): those are UNIFORM directions over the hemisphere; the density must grow with cos θ (mean 2/3)".into()
-    } else if (mean_cos - PI / 4.0).abs() < 0.01 {
-        "the mean of cos θ is π/4 ≈ 0.785, as with r = u: a uniform point on the disk needs r = √u (the area of a ring grows with r)".into()
+    } else if (mean_cos - PI / 4.0).abs() < 0.005 {
+        "the mean of cos θ is π/4 ≈ 0.785, not 2/3: sin θ (the radius of the disk point under the direction) is uniformly distributed in yours, so the directions crowd the normal — sin θ not squared (the area of a ring of the disk grows with its radius)".into()
+    } else if (mean_cos - 0.8).abs() < 0.005 {
+        "the mean of cos θ is 0.80, as for a density proportional to cos³θ, not cos θ: your directions crowd the normal too much".into()
     } else if mean_cos > 2.0 / 3.0 {
         format!(
             "too many directions near the normal: the mean of cos θ is {mean_cos:.3}, expected 2/3"
@@ -172,7 +203,7 @@ fn write_picture(sample: SampleFn, seed: u64) -> String {
         std::fs::create_dir_all(output_dir()).and_then(|()| write_histograms(&histograms, &path));
     match written {
         Ok(()) => format!(
-            "; see {}: top, cos θ of your directions (grey) against the density 2·cos θ they should have (red); below, φ against the uniform 1/(2π)",
+            "; see {}: top, cos θ of your directions (grey) against the distribution they should have (red); below, φ against the uniform one",
             path.display()
         ),
         Err(e) => format!(" (could not write the histograms: {e})"),

@@ -48,36 +48,40 @@ pub fn check(pdf: PdfFn) -> Result<(), String> {
         (0..cases.len()).find(|&k| !close(got[k], expected(cases[k].0, cases[k].1), 1e-4))
     {
         let sin = |t: f32| (1.0 - t * t).max(0.0).sqrt();
-        let mistakes: [Mistake<(f32, f32), f32>; 6] = [
+        let mistakes: [Mistake<(f32, f32), f32>; 7] = [
             (
                 "(n+2)/(2π) cos^n α is S(n), the BRDF's normalization (exercise 4): that makes ∫ p cos θ dω = 1 at normal incidence; a density must make ∫ p dω = 1, without the cosine",
                 &|&(n, t)| (n + 2.0) * INV_2PI * t.powf(n),
             ),
             (
-                "(n+1) cos^n α is the density of t = cos α alone: φ is uniform over 2π, so divide by 2π",
+                "too large by ×2π: (n+1) cos^n α is the density of t = cos α alone; the spread of the directions over φ is missing",
                 &|&(n, t)| (n + 1.0) * t.powf(n),
             ),
             (
-                "that density is per dα dφ (it carries sin α): per unit solid angle divide by sin α, since dω = sin α dα dφ",
+                "that is a density per dα dφ: it carries the sin α of dω = sin α dα dφ (and vanishes on the axis, where the warp puts the most directions), so it is not per unit solid angle",
                 &|&(n, t)| (n + 1.0) * INV_2PI * t.powf(n) * sin(t),
             ),
             (
-                "one cosine too many: P(cos α ≤ t) = t^{n+1} has the derivative (n+1) t^n",
+                "one power of cos α too many: your density goes as cos^{n+1} α, the warp's as a lower power",
                 &|&(n, t)| (n + 1.0) * INV_2PI * t.powf(n + 1.0),
             ),
             (
-                "n t^{n−1}/(2π) differentiates t^n, the lobe itself: the warp's distribution is P(cos α ≤ t) = t^{n+1}",
+                "n t^{n−1}/(2π) is the derivative of the lobe cos^n α itself, not of the distribution function of the cos α the warp produces",
                 &|&(n, t)| n * INV_2PI * t.powf(n - 1.0),
             ),
             (
                 "1/(2π) is the density of UNIFORM directions over the hemisphere (the warp with n = 0)",
                 &|_| INV_2PI,
             ),
+            (
+                "too large by ×π in every case: a missing π (the integral over φ of a full turn brings one)",
+                &|&(n, t)| (n + 1.0) * 0.5 * t.powf(n),
+            ),
         ];
         let (n, t) = cases[k];
         let why = recognise(&cases, &got, &mistakes, |g, a| close(g, a, 1e-4)).unwrap_or_else(|| {
             format!(
-                "over all directions your density integrates to {:.4} for n = {n}, and a density must integrate to 1 (∫ p dω = 2π ∫_0^1 p dt)",
+                "over all directions your density integrates to {:.4} for n = {n}, and a density must integrate to 1",
                 integral(pdf, n)
             )
         });

@@ -5,15 +5,18 @@
 //! The emitting furnace (`furnace`): the camera inside a closed sphere of
 //! albedo ρ = 0.5 emitting L_e = 0.5 inwards, so with depth limit D every
 //! pixel is `L_e (1 + ρ + … + ρ^{D−1}) = 1 − 0.5^D`. The white furnace: a
-//! white Lambert sphere under a sky of 1, every pixel 1 for D ≥ 2.
+//! white Lambert sphere under a sky of 1, every pixel 1 for D ≥ 2. The grey
+//! sphere ([`grey_sphere`]): a Lambert sphere of albedo 0.5 under a sky of 1
+//! filling the view, every pixel 0.5 for D ≥ 2, where a cosine of the other
+//! sign convention gives −0.5.
 //!
-//! Tolerance: |z| ≤ 5.5 per channel, 5 cases × 3 channels: a correct
-//! solution fails with probability < 6e-7.
+//! Tolerance: |z| ≤ 5.5 per channel, 6 cases × 3 channels: a correct
+//! solution fails with probability < 7e-7.
 
 use raytracer::integrator::camera_ray;
 use raytracer::math::{Color, Ray, UVec2};
 use raytracer::sampling::Sampler;
-use raytracer::scene::Scene;
+use raytracer::scene::{Scene, SceneOrigin, load_str};
 
 use crate::stats::MeanVar;
 
@@ -32,6 +35,32 @@ pub fn small_scene(name: &str) -> Result<Scene, String> {
     let mut s = Scene::builtin(name).map_err(|e| format!("grader: {e}"))?;
     s.set_resolution(8, 8);
     Ok(s)
+}
+
+/// Albedo of the grey sphere of [`grey_sphere`].
+pub const GREY: f64 = 0.5;
+
+/// A grey Lambert sphere (albedo [`GREY`]) under a sky of radiance 1, the
+/// camera so close that every camera ray hits the sphere (8×8 pixels). The
+/// sphere is convex: every reflected ray escapes to the sky, so with
+/// max_depth ≥ 2 every camera ray's radiance is exactly ρ·1 = 0.5 — and the
+/// sky is reached with a throughput of ρ, not 1 (the white furnace cannot
+/// tell the two apart), and every surface is seen from the front (a cosine
+/// with the wrong sign gives −0.5).
+pub fn grey_sphere() -> Result<Scene, String> {
+    let text = format!(
+        "[camera]\nposition = [0, 0, 1.6]\nlook_at = [0, 0, 0]\nup = [0, 1, 0]\nfov = 30\n\n\
+         [render]\nwidth = 8\nheight = 8\nspp = 1\nmax_depth = -1\nrr_depth = 5\n\n\
+         [materials.grey]\ntype = \"lambert\"\nalbedo = {GREY}\n\n\
+         [[shapes]]\nname = \"sphere\"\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"grey\"\n\n\
+         [environment]\nradiance = 1\n"
+    );
+    let origin = SceneOrigin::Dir {
+        name: "grader:grey-sphere".into(),
+        dir: Default::default(),
+    };
+    let parts = load_str(&text, &origin).map_err(|e| format!("grader: {e}"))?;
+    Ok(Scene::build("grey-sphere", parts))
 }
 
 /// Mean and variance of `estimate` over camera rays through all pixels.
@@ -74,7 +103,7 @@ pub fn alternating_series_text(d: u32) -> String {
 /// The message for a furnace whose mean is the alternating series.
 pub fn signed_cosine_message(d: u32) -> String {
     format!(
-        "your mean is {:.4} = {}: the sign alternates with every bounce — a signed cos θ_i. Inside the furnace you see the wall from its back side (wo.z < 0), so the sampled wi.z < 0 too: cos θ_i is taken with the normal on the side of ω_o, |wi.z|",
+        "your mean is {:.4} = {}: the sign alternates with every bounce — a signed cos θ_i. Inside the furnace you see the wall from its back side (wo.z < 0), where the sampled wi.z < 0 too, and your cosine turns negative there",
         series(d, -RHO),
         alternating_series_text(d)
     )
@@ -83,9 +112,34 @@ pub fn signed_cosine_message(d: u32) -> String {
 /// The message for a depth off by one.
 pub fn depth_message(d: u32, more: bool) -> String {
     format!(
-        "your mean is that of max_depth {}: max_depth D counts the segments of a path — D = 1 shows only the emitters seen directly, D = 2 direct light, at most D − 1 bounces (stop when depth + 1 ≥ max_depth)",
+        "your mean is that of max_depth {}: max_depth D counts the segments of a path — D = 1 shows only the emitters seen directly, D = 2 direct light, at most D − 1 bounces",
         if more { d + 1 } else { d - 1 }
     )
+}
+
+/// The message for a cosine with the sign of the other convention, seen
+/// where the BRDF is seen from the front (wo.z > 0): the mean is minus the
+/// answer, `exact`.
+pub fn other_sign_message(mean: f64) -> String {
+    format!(
+        "your mean is {mean:.4}, the right answer with the sign flipped: negative radiance. Your cos θ_i is negative where the surface is seen from the front — the lecture's (−ω_i·n) is written for its ω_i pointing INTO the surface; ours points away from it (slide \"The lecture's ωᵢ and ours\")"
+    )
+}
+
+/// The message for a cosine left out of the weights, in the emitting
+/// furnace (ρ = 0.5: every bounce then passes 2ρ = 1 of the light).
+pub fn missing_cosine_message(d: u32) -> String {
+    format!(
+        "your mean is about {:.4} = {d}·L_e, as if every bounce reflected all the light, though ρ = 0.5: the cosine θ_i is missing from the weights (without it a Lambert wall's ρ/π integrates to 2ρ over the hemisphere)",
+        series(d, 2.0 * RHO)
+    )
+}
+
+/// Whether every channel of the mean lies within `tol` (relative) of
+/// `value`: for estimators with heavy tails (a missing cosine gives weights
+/// 1/cos θ_i), whose standard error is unreliable.
+pub fn near(stats: &MeanVar, value: f64, tol: f64) -> bool {
+    stats.mean().iter().all(|m| (m / value - 1.0).abs() < tol)
 }
 
 /// The usual mistakes, as what each converges to in the emitting furnace at
@@ -98,7 +152,7 @@ fn mistakes(d: u32, n: u32) -> Vec<(Option<f64>, String)> {
         (
             Some(series(d, n as f64 * RHO)),
             format!(
-                "your mean is L_e(1 + Nρ + (Nρ)² + …): the N = {n} branches are summed — divide their sum by N"
+                "your mean is L_e(1 + Nρ + (Nρ)² + …): the N = {n} branches are summed, not averaged — each level is N times too bright"
             ),
         ),
         // One bounce too few: at D = 1 a stop at `depth + 2 ≥ max_depth`
@@ -106,8 +160,9 @@ fn mistakes(d: u32, n: u32) -> Vec<(Option<f64>, String)> {
         ((d > 1).then(|| series(d - 1, RHO)), depth_message(d, false)),
         (
             Some(LE),
-            "your mean is L_e alone: only the camera ray's hit adds its emission — every level of the recursion adds the L_e of its own hit".to_string(),
+            "your mean is L_e alone: only the camera ray's hit adds its emission — the emission of the deeper hits is missing".to_string(),
         ),
+        (Some(series(d, 2.0 * RHO)), missing_cosine_message(d)),
     ]
 }
 
@@ -140,7 +195,9 @@ pub fn check(f: NaiveFn) -> Result<(), String> {
         let here: Vec<_> = mistakes(d, n)
             .into_iter()
             .enumerate()
-            .filter(|(_, (v, _))| v.is_some_and(|v| stats.matches(Color::splat(v as f32))))
+            .filter(|(_, (v, _))| {
+                v.is_some_and(|v| stats.matches(Color::splat(v as f32)) || near(stats, v, 0.03))
+            })
             .collect();
         // The mistake that fits every case, else the first that fits this one.
         let advice = here
@@ -154,21 +211,46 @@ pub fn check(f: NaiveFn) -> Result<(), String> {
             |r| {
                 advice.clone().or_else(|| {
                     Some(if d == 1 {
-                        "with max_depth = 1 only the emitters seen directly count: L = L_e".to_string()
+                        format!("×{r:.3} at max_depth 1, where only the emission of the camera ray's hit counts and nothing is reflected")
                     } else if r > 1.0 {
-                        "too bright: is the sum of the branches divided by N? are the weights f·|cos θ_i|/pdf_w?".to_string()
+                        format!("too bright by ×{r:.3} at max_depth {d}: the reflected light is too strong")
                     } else {
-                        "too dark: does every level add its emission, and does the recursion go deep enough (stop when depth + 1 >= max_depth)?".to_string()
+                        format!("too dark by ×{r:.3} at max_depth {d}: light is lost in the reflections, or the recursion stops too soon")
                     })
                 })
             },
         )?;
     }
+    let grey = grey_sphere()?;
+    let stats = camera_estimates(&grey, 89, ESTIMATES, |ray, s| f(&grey, &ray, 0, 3, 2, s));
+    stats.check(
+        "grey Lambert sphere (ρ = 0.5) under a sky of 1, every camera ray on the sphere, max_depth 3, branching 2: L = ρ",
+        Color::splat(GREY as f32),
+        |r| Some(sky_symptom(r, stats.mean()[0])),
+    )?;
     let white = small_scene("white-furnace")?;
     let stats = camera_estimates(&white, 88, ESTIMATES, |ray, s| f(&white, &ray, 0, 3, 2, s));
     stats.check(
-        "white furnace (white Lambert sphere under a sky of 1), max_depth 3, branching 2",
+        "white furnace (white Lambert sphere under a sky of 1, seen from outside), max_depth 3, branching 2",
         Color::ONE,
-        |_| Some("rays that escape must return scene.escaped_radiance(ray.d)".to_string()),
+        |r| Some(sky_symptom(r, stats.mean()[0])),
     )
+}
+
+/// What a wrong mean under a sky of 1 shows (`r`: the mean over the exact
+/// answer).
+pub fn sky_symptom(r: f64, mean: f64) -> String {
+    if (r + 1.0).abs() < 0.03 {
+        other_sign_message(mean)
+    } else if r.abs() < 0.03 {
+        "nothing arrives from the sky: the rays that leave the scene bring no light".to_string()
+    } else if r > 1.0 {
+        format!(
+            "too bright by ×{r:.3} under a sky of 1: the surface seems to reflect more than it receives"
+        )
+    } else {
+        format!(
+            "too dark by ×{r:.3} under a sky of 1, where the emitting furnace passed: light from the sky is lost"
+        )
+    }
 }

@@ -1,10 +1,11 @@
 //! Grader of exercise 11 (the path tracing loop): furnaces with and without
-//! roulette (z-tests with the student's own variance; a failing mean is
-//! compared with what the usual mistakes converge to), then the Cornell box
-//! against the renderer's path tracer, tile by tile.
+//! roulette, and a grey sphere under a sky, where the sky is reached with a
+//! throughput of ρ (z-tests with the student's own variance; a failing mean
+//! is compared with what the usual mistakes converge to), then the Cornell
+//! box against the renderer's path tracer, tile by tile.
 //!
-//! Tolerances: |z| ≤ 5.5 per channel in 4 furnace cases (false failure
-//! < 5e-7), and the image comparison at family-wise α = 1e-4
+//! Tolerances: |z| ≤ 5.5 per channel in 5 closed-form cases (false failure
+//! < 6e-7), and the image comparison at family-wise α = 1e-4
 //! ([`crate::compare`]).
 
 use exercises::plug::StudentPathTracer;
@@ -12,7 +13,8 @@ use raytracer::math::Color;
 
 use crate::compare::{EX11_CORNELL, compare};
 use crate::ex10_naive_recursive::{
-    LE, RHO, camera_estimates, depth_message, series, signed_cosine_message, small_scene,
+    GREY, LE, RHO, camera_estimates, depth_message, grey_sphere, near, series,
+    signed_cosine_message, sky_symptom, small_scene,
 };
 
 /// The signature of exercise 11.
@@ -23,43 +25,57 @@ pub const ESTIMATES: u64 = 4000;
 
 pub fn check(f: PathFn) -> Result<(), String> {
     let furnace = small_scene("furnace")?;
+    // The grey sphere under a sky, first: it tells apart mistakes that give
+    // the same mean in the emitting furnace (L_e without β, and a missing
+    // cosine, both D·L_e there). Roulette only after 2 bounces: its paths
+    // escape after one.
+    let grey = grey_sphere()?;
+    let grey_stats = camera_estimates(&grey, 97, ESTIMATES, |ray, s| f(&grey, ray, None, 2, s));
+    // A missing cosine gives 2ρ = 1 there with weights ρ/cos θ_i, which vary;
+    // the sky added without β gives 1 with no variance at all.
+    let no_cosine_on_grey = near(&grey_stats, 2.0 * GREY, 0.1) && grey_stats.std_error()[0] > 1e-3;
     // Depth-limited, no roulette: 1 − 0.5^D.
     for d in [1u32, 3] {
         let stats = camera_estimates(&furnace, 90 + d as u64, ESTIMATES, |ray, s| {
             f(&furnace, ray, Some(d), 1000, s)
         });
+        let unweighted = if no_cosine_on_grey {
+            format!(
+                "your mean is about {d}·L_e, as if every bounce reflected all the light though ρ = 0.5 (and on the grey sphere your mean is 2ρ): the cosine θ_i is missing from the throughput"
+            )
+        } else {
+            format!(
+                "your mean is {d}·L_e: every hit adds its emission unweighted — the light emitted at the k-th hit reaches the camera through the k reflections before it, and yours is not weakened by them"
+            )
+        };
         let mut named = vec![
             (series(d, -RHO), signed_cosine_message(d)),
-            (
-                series(d, 1.0),
-                format!(
-                    "your mean is {d}·L_e: every hit adds L_e unweighted — add β·L_e (L += β·L_e), the emission seen after k bounces reaches the camera through their k BRDF weights"
-                ),
-            ),
+            (series(d, 1.0), unweighted),
             (series(d + 1, RHO), depth_message(d, true)),
         ];
         if d > 1 {
             named.push((series(d - 1, RHO), depth_message(d, false)));
             named.push((
                 LE,
-                "your mean is L_e alone: add β·L_e at EVERY hit of the path, not only the first"
+                "your mean is L_e alone: only the first hit's emission is counted — the light emitted at the later hits of the path is missing"
                     .to_string(),
             ));
         }
         let advice = named
             .into_iter()
-            .find(|(v, _)| stats.matches(Color::splat(*v as f32)))
+            .find(|(v, _)| {
+                stats.matches(Color::splat(*v as f32)) || (d > 1 && near(&stats, *v, 0.03))
+            })
             .map(|(_, why)| why);
         stats.check(
             &format!("emitting furnace (L_e = 0.5, ρ = 0.5), max_depth {d}, no roulette: L = L_e(1 + … + ρ^(D−1))"),
             Color::splat(series(d, RHO) as f32),
             |r| {
                 advice.clone().or_else(|| Some(if r > 1.0 {
-                    "too bright: is β multiplied by f·|cos θ_i|/pdf_w (not added)? does the path stop after max_depth − 1 bounces?"
+                    format!("too bright by ×{r:.3} at max_depth {d}, without roulette: the reflected light is too strong, or the path is longer than max_depth allows")
                 } else {
-                    "too dark: add β·L_e at every hit, and make max_depth − 1 bounces"
-                }
-                .to_string()))
+                    format!("too dark by ×{r:.3} at max_depth {d}, without roulette: light is lost along the path, or it ends too soon")
+                }))
             },
         )?;
     }
@@ -72,11 +88,22 @@ pub fn check(f: PathFn) -> Result<(), String> {
         Color::ONE,
         |r| {
             Some(if r < 1.0 {
-                "too dark: did you divide β by the survival probability q after roulette? (E[L′] = q · L/q = L)"
+                format!("too dark by ×{r:.3} only once the roulette plays (the cases without it passed): the paths that survive do not make up for those the roulette ends — their survival probability is not accounted for")
             } else {
-                "too bright: continue with probability q and divide by q, not the other way round"
-            }
-            .to_string())
+                format!("too bright by ×{r:.3} only once the roulette plays (the cases without it passed): the paths that survive the roulette are weighted up too much")
+            })
+        },
+    )?;
+    grey_stats.check(
+        "grey Lambert sphere (ρ = 0.5) under a sky of 1, every camera ray on the sphere, unlimited depth: L = ρ",
+        Color::splat(GREY as f32),
+        |r| {
+            // The furnaces passed, so the cosine is there.
+            Some(if near(&grey_stats, 1.0, 0.03) {
+                "your mean is 1, the sky's radiance itself: a path that escapes adds the sky unweighted — the light of the sky reaches the camera through the sphere's reflection, and yours is not weakened by it (the white furnace, whose throughput stays 1, cannot show this)".to_string()
+            } else {
+                sky_symptom(r, grey_stats.mean()[0])
+            })
         },
     )?;
     let white = small_scene("white-furnace")?;
@@ -84,7 +111,7 @@ pub fn check(f: PathFn) -> Result<(), String> {
     stats.check(
         "white furnace (white Lambert under a sky of 1), roulette after 2 bounces",
         Color::ONE,
-        |_| Some("a path that escapes adds β · scene.escaped_radiance(ray.d)".to_string()),
+        |r| Some(sky_symptom(r, stats.mean()[0])),
     )?;
     // The Cornell box against the renderer (same expected value).
     let student = StudentPathTracer {

@@ -45,7 +45,7 @@ fn ex01_stereo_eyes() {
     fails(
         "full separation each side",
         ex01_stereo_eyes::check(wrong::eyes_too_far),
-        "apart",
+        "twice too far apart",
     );
 }
 
@@ -63,7 +63,7 @@ fn ex02_anaglyph() {
     fails(
         "no desaturation",
         ex02_anaglyph::check(wrong::anaglyph_saturated),
-        "desaturated",
+        "not desaturated",
     );
 }
 
@@ -73,12 +73,12 @@ fn ex03_lambert() {
     fails(
         "missing 1/π",
         ex03_lambert::check(wrong::lambert_no_inv_pi),
-        "forget 1/π",
+        "too bright by ×π",
     );
     fails(
         "cosine in the BRDF",
         ex03_lambert::check(wrong::lambert_with_cos),
-        "cosine belongs",
+        "cosine counts twice",
     );
 }
 
@@ -98,14 +98,29 @@ fn ex04_phong() {
         "unnormalized",
     );
     fails(
+        "S(n) for integer n only",
+        ex04_phong::check(wrong::phong_s_integer, f),
+        "rounded to an integer",
+    );
+    fails(
+        "π missing from S(n)",
+        ex04_phong::check(wrong::phong_s_no_pi, f),
+        "missing π",
+    );
+    fails(
         "no clamp",
         ex04_phong::check(s, wrong::phong_eval_unclamped),
-        "max(0, cos α)",
+        "a negative cosine went into the power",
     );
     fails(
         "cos α from the normal",
         ex04_phong::check(s, wrong::phong_eval_from_normal),
         "angle from the normal",
+    );
+    fails(
+        "powi",
+        ex04_phong::check(s, wrong::phong_eval_integer_power),
+        "integer exponents only",
     );
 }
 
@@ -134,18 +149,29 @@ fn ex05_cone_lobe() {
         ex05_cone_lobe::check(wrong::cone_lambert),
         "Lambert's constant",
     );
+    fails(
+        "π missing",
+        ex05_cone_lobe::check(wrong::cone_no_pi),
+        "missing π",
+    );
 }
 
 #[test]
 fn ex06_mirror() {
     passes(
-        "tangential reflect, lobe pdf 1/2",
+        "tangential reflect, f in f64",
         ex06_mirror::check(correct::reflect, correct::mirror_sample),
     );
     fails(
         "f = R",
         ex06_mirror::check(correct::reflect, wrong::mirror_f_is_r),
-        "R/|cos θ_i|",
+        "too dark at grazing angles",
+    );
+    // The weight f·|cos θ_i|/pdf_w is right, the pdf is not a probability.
+    fails(
+        "f = R, pdf_w = cos θ_i",
+        ex06_mirror::check(correct::reflect, wrong::mirror_pdf_is_cos),
+        "it equals cos θ_i",
     );
     fails(
         "reflect inwards",
@@ -155,7 +181,7 @@ fn ex06_mirror() {
     fails(
         "a sample at wo.z = 0",
         ex06_mirror::check(correct::reflect, wrong::mirror_at_grazing),
-        "wo.z ≤ 0 return None",
+        "no reflected direction above the surface",
     );
 }
 
@@ -177,13 +203,23 @@ fn ex07_cosine_sampling() {
     fails(
         "r = u",
         ex07_cosine_sampling::check(wrong::cosine_no_sqrt, correct::cosine_pdf),
-        "r = √u",
+        "sin θ not squared",
+    );
+    fails(
+        "sin θ = u",
+        ex07_cosine_sampling::check(wrong::cosine_sin_not_squared, correct::cosine_pdf),
+        "sin θ not squared",
+    );
+    fails(
+        "cos³ directions",
+        ex07_cosine_sampling::check(wrong::cosine_cubed, correct::cosine_pdf),
+        "cos³θ",
     );
     let _ = std::fs::remove_file(ex07_cosine_sampling::histogram_path());
     fails(
         "φ = π·u",
         ex07_cosine_sampling::check(wrong::cosine_half_phi, correct::cosine_pdf),
-        "is φ = 2π·u?",
+        "half a turn",
     );
     // The histograms of the student's directions, beside the other pictures.
     let size = pictures::png_size(&ex07_cosine_sampling::histogram_path());
@@ -192,6 +228,16 @@ fn ex07_cosine_sampling() {
         "uniform pdf",
         ex07_cosine_sampling::check(correct::cosine_concentric, wrong::pdf_uniform),
         "uniform",
+    );
+    fails(
+        "cos³ pdf",
+        ex07_cosine_sampling::check(correct::cosine_concentric, wrong::pdf_cos_cubed),
+        "cos³θ",
+    );
+    fails(
+        "π missing from the pdf",
+        ex07_cosine_sampling::check(correct::cosine_concentric, wrong::pdf_no_pi),
+        "missing normalization",
     );
 }
 
@@ -210,12 +256,17 @@ fn ex08_phong_lobe_pdf() {
     fails(
         "density of cos α alone",
         ex08_phong_lobe_pdf::check(wrong::phong_pdf_no_2pi),
-        "divide by 2π",
+        "spread of the directions over φ is missing",
     );
     fails(
         "per dα dφ",
         ex08_phong_lobe_pdf::check(wrong::phong_pdf_per_dalpha),
-        "divide by sin α",
+        "density per dα dφ",
+    );
+    fails(
+        "π missing",
+        ex08_phong_lobe_pdf::check(wrong::phong_pdf_no_pi),
+        "missing π",
     );
     fails(
         "nonzero below",
@@ -241,12 +292,17 @@ fn ex09_albedo() {
     fails(
         "missing cosine",
         ex09_albedo::check(wrong::albedo_no_cos),
-        "cosine",
+        "cosine θ_i is missing",
+    );
+    fails(
+        "cosine of ω_o",
+        ex09_albedo::check(wrong::albedo_cos_o),
+        "that of ω_o",
     );
     fails(
         "missing pdf",
         ex09_albedo::check(wrong::albedo_no_pdf),
-        "pdf",
+        "not divided by the density",
     );
     fails(
         "N − 1",
@@ -269,7 +325,7 @@ fn ex10_naive_recursive() {
     fails(
         "branches summed",
         ex10_naive_recursive::check(wrong::naive_not_averaged),
-        "divide their sum by N",
+        "summed, not averaged",
     );
     fails(
         "missing cosine",
@@ -280,6 +336,11 @@ fn ex10_naive_recursive() {
         "signed cosine",
         ex10_naive_recursive::check(wrong::naive_signed_cos),
         "= 0.5 − 0.25: the sign alternates",
+    );
+    fails(
+        "the lecture's sign with our ω_i",
+        ex10_naive_recursive::check(wrong::naive_other_sign),
+        "sign flipped",
     );
     fails(
         "one bounce too many",
@@ -323,7 +384,7 @@ fn ex11_path_tracing() {
     fails(
         "emission at the first hit only",
         ex11_path_tracing::check(wrong::path_first_emission_only),
-        "every hit",
+        "only the first hit",
     );
     // The case: 0.375 = 0.5 − 0.25 + 0.125 at max_depth 3.
     fails(
@@ -332,9 +393,25 @@ fn ex11_path_tracing() {
         "0.3750 = 0.5 − 0.25 + 0.125: the sign alternates",
     );
     fails(
+        "the lecture's sign with our ω_i",
+        ex11_path_tracing::check(wrong::path_other_sign),
+        "sign flipped",
+    );
+    fails(
         "L_e without β",
         ex11_path_tracing::check(wrong::path_le_without_beta),
-        "L += β·L_e",
+        "adds its emission unweighted",
+    );
+    // The white furnace's throughput stays 1: only the grey sphere sees it.
+    fails(
+        "escaped radiance without β",
+        ex11_path_tracing::check(wrong::path_escape_without_beta),
+        "adds the sky unweighted",
+    );
+    fails(
+        "no cosine",
+        ex11_path_tracing::check(wrong::path_no_cos),
+        "cosine θ_i is missing",
     );
 }
 

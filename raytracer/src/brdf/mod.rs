@@ -31,10 +31,11 @@
 //! see `ω_o` in the upper hemisphere (glass excepted). Files: one per model, [`fresnel`] for the
 //! Fresnel equations and Snell's law, [`texture`] for spatially varying albedo.
 //!
-//! Delta lobes (mirror, glass) follow pbrt's convention: the sample's `f` is
-//! already divided by `|cos θ_i|` and its pdf is the probability of choosing
-//! the lobe, so the usual estimator `f · |cos θ_i| / pdf` gives the right
-//! weight; `eval` and `pdf` of a delta lobe are zero for any given pair of
+//! Delta lobes (mirror, glass) follow pbrt's convention: a delta has no
+//! density over directions, so the sample's `pdf_w` is the probability of
+//! choosing the lobe, and its `f` is the number that makes the usual
+//! estimator `f · |cos θ_i| / pdf_w` the delta's weight in the reflected
+//! radiance; `eval` and `pdf` of a delta lobe are zero for any given pair of
 //! directions (the chance of hitting the delta direction is zero).
 
 pub mod fresnel;
@@ -65,14 +66,20 @@ pub enum TransportMode {
     Importance,
 }
 
-/// A sampled direction with its BRDF value and density.
+/// A sampled direction with its BRDF value and density. An integrator
+/// weights the light arriving from `wi` by `f · |cos θ_i| / pdf_w`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BrdfSample {
     /// Sampled direction `ω_i`, local frame.
     pub wi: Vec3A,
-    /// `f_r(ω_i → ω_o)` (for a delta lobe: the delta's weight divided by `|cos θ_i|`).
+    /// `f_r(ω_i → ω_o)`, per steradian (sr⁻¹). A delta lobe has no value at
+    /// a direction (it is a distribution): its `f` is whatever makes the
+    /// weight `f · |cos θ_i| / pdf_w` the delta's share of the light arriving
+    /// from `wi` in the reflected radiance.
     pub f: Color,
-    /// Density of `wi` per unit solid angle (for a delta lobe: the lobe's probability).
+    /// Density of `wi` per unit solid angle (sr⁻¹). For a delta lobe, which
+    /// has no density over directions: the probability (no unit) with which
+    /// the lobe was chosen among the model's lobes.
     pub pdf_w: f32,
     /// Whether `wi` came from a delta (specular) lobe.
     pub is_delta: bool,

@@ -78,9 +78,9 @@ pub fn uniform_hemisphere_inverse(w: Vec3A) -> Vec2 {
     Vec2::new(w.z, phi_fraction(w))
 }
 
-/// Cosine-weighted direction on the upper hemisphere (Malley's method: a
-/// uniform disk point lifted onto the hemisphere). Its pdf `cos θ/π` cancels
-/// the cosine of the rendering equation and the `1/π` of a Lambertian BRDF.
+/// Cosine-weighted direction on the upper hemisphere: its density per unit
+/// solid angle is proportional to `cos θ` ([`cosine_hemisphere_pdf`]), which
+/// cancels the cosine of the rendering equation.
 #[inline]
 pub fn cosine_hemisphere(u: Vec2) -> Vec3A {
     let d = concentric_disk(u);
@@ -88,7 +88,8 @@ pub fn cosine_hemisphere(u: Vec2) -> Vec3A {
     Vec3A::new(d.x, d.y, z)
 }
 
-/// Density of [`cosine_hemisphere`]: `cos θ / π` per steradian (0 below the surface).
+/// Density of [`cosine_hemisphere`] per steradian, given `cos θ` (0 below
+/// the surface).
 #[inline]
 pub fn cosine_hemisphere_pdf(cos_theta: f32) -> f32 {
     cos_theta.max(0.0) * INV_PI
