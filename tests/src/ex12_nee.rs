@@ -188,8 +188,9 @@ pub fn mirror_scene() -> (Scene, Ray, Color) {
     let le = Color::new(4.0, 3.0, 2.0);
     let light = TestLight {
         origin: Vec3A::new(-1.0, 2.0, -1.0),
-        e1: Vec3A::new(0.0, 0.0, 2.0),
-        e2: Vec3A::new(2.0, 0.0, 0.0),
+        // e1 × e2 = −4 y: the light faces down, towards the mirror.
+        e1: Vec3A::new(2.0, 0.0, 0.0),
+        e2: Vec3A::new(0.0, 0.0, 2.0),
         radiance: le,
     };
     let (mut scene, _) = scene_with(&[light], None, 1.0, false);
@@ -311,7 +312,7 @@ pub struct TestLight {
 impl TestLight {
     /// A square of side `s` centred at `c` whose normal is
     /// `(−sin τ, −cos τ, 0)`: facing down (τ = 0), tilted towards −x by τ.
-    fn tilted(c: Vec3A, tau: f32, s: f32, radiance: Color) -> TestLight {
+    pub fn tilted(c: Vec3A, tau: f32, s: f32, radiance: Color) -> TestLight {
         let e1 = s * Vec3A::new(tau.cos(), -tau.sin(), 0.0);
         let e2 = Vec3A::new(0.0, 0.0, s);
         TestLight {

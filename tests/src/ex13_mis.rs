@@ -43,7 +43,7 @@ use raytracer::scene::{LightSelection, Scene};
 
 use crate::compare::{EX13_CORNELL, EX13_VEACH, compare, options};
 use crate::ex12_nee::{
-    FLOOR_ALBEDO, TestLight, X, check_furnaces, check_mirror, exact, light_a, light_b, scene_with,
+    FLOOR_ALBEDO, TestLight, X, check_furnaces, check_mirror, exact, scene_with,
 };
 use crate::stats::{MeanVar, fmt3};
 
@@ -59,9 +59,12 @@ pub const KS_MAX: f64 = 2.8;
 
 /// The student's MIS render of Veach's plates must have at most this
 /// fraction of the summed pixel variance of either strategy alone at the
-/// same samples per pixel. Measured with the reference solution (seed 11,
-/// 48×48, 32 spp): see the report of the self-test (`variance_ratios`).
-pub const MAX_VARIANCE_RATIO: f64 = 0.5;
+/// same samples per pixel (48×48, 64 spp, seed 12). Measured: the reference
+/// solution 0.45 of BRDF sampling's and 0.17 of light sampling's, a
+/// correct variant 0.41 and 0.15, the balance heuristic 0.38 and 0.14;
+/// weights 1/2 for both 1.52 and 0.56, swapped weights 5.2 and 1.9
+/// (`cargo test -p grading --test check_grader ex13_variance_ratios -- --nocapture`).
+pub const MAX_VARIANCE_RATIO: f64 = 0.7;
 
 pub fn check(f: PathFn) -> Result<(), String> {
     check_sky(f)?;
@@ -237,7 +240,7 @@ fn check_sky(f: PathFn) -> Result<(), String> {
         if ks(values, swapped) <= KS_MAX {
             "the weights are swapped: each strategy is weighted by the other's density, so the worse strategy gets the larger weight (unbiased, but the noise of both)".to_string()
         } else {
-            "the spread of your estimates is not that of the power heuristic with these two strategies (the light sample from Light::sample_li, the continuation from Brdf::sample), although the mean is right: is each weight p_this² / (p_this² + p_other²) of the same direction, both per unit solid angle?".to_string()
+            "the spread of your estimates is not that of the power heuristic with these two strategies (the light sample from Light::sample_li, the continuation from Brdf::sample), although the mean is right: each sample's weight must grow with its own strategy's density and fall with the other's, as the power heuristic of the slide, both densities of the same direction and per unit solid angle".to_string()
         }
     };
     Err(format!(
@@ -296,8 +299,11 @@ fn over_light(l: &TestLight, g: &dyn Fn(f64, f64, f64) -> f64) -> Color {
 
 /// The cases with square lights.
 pub fn light_cases() -> Vec<LightCase> {
-    let a = light_a();
-    let b = light_b();
+    // Large lights close to x: the densities of the two strategies are of
+    // the same order here (p_ω ≈ 0.3–1 sr⁻¹, p_BRDF ≤ 1/π), so a wrong
+    // weight changes the mean by far more than the noise.
+    let a = TestLight::tilted(Vec3A::new(-1.0, 1.2, 0.0), 0.0, 2.0, Color::new(1.0, 1.5, 2.0));
+    let b = TestLight::tilted(Vec3A::new(1.2, 1.0, 0.3), 0.3, 1.8, Color::new(2.0, 1.0, 0.5));
     let h = |x, y| heuristic(2, x, y);
     let ray = |s: &Scene, it_wo: Vec3A| {
         let _ = s;
@@ -313,7 +319,7 @@ pub fn light_cases() -> Vec<LightCase> {
     let brdf_area = over_light(&a, &|_, pb, pa| h(pb, pa));
     let r1 = ray(&scene1, it1.wo);
     out.push(LightCase {
-        what: "a Lambertian floor under one square light, max_depth 2 (exact: Lambert's polygon formula)".into(),
+        what: "a Lambertian floor under one large square light close by, max_depth 2 (exact: Lambert's polygon formula)".into(),
         scene: scene1,
         ray: r1,
         exact: exact_a,
@@ -348,7 +354,7 @@ pub fn light_cases() -> Vec<LightCase> {
     let no_pmf_light = sum(&|pw, pb, _| h(pw, pb));
     let r2 = ray(&scene2, it2.wo);
     out.push(LightCase {
-        what: "the floor under two square lights, each chosen with probability 1/2, max_depth 2".into(),
+        what: "the floor under two large square lights close by, each chosen with probability 1/2, max_depth 2".into(),
         scene: scene2,
         ray: r2,
         exact: both,

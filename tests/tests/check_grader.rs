@@ -502,6 +502,9 @@ fn ex13_mis() {
 fn ex13_variance_ratios() {
     let (brdf, light) = ex13_mis::variance_ratios(fixtures::ex13::correct::mis_ratio_f64).unwrap();
     println!("MIS / BRDF only = {brdf:.3}, MIS / light only = {light:.3}");
+    for (name, f) in [("half", fixtures::ex13::wrong::mis_half as exercises::plug::PathRadianceFn), ("swapped", fixtures::ex13::wrong::mis_swapped), ("balance", fixtures::ex13::wrong::mis_balance), ("solution", exercises::ex13_mis::path_radiance_mis)] {
+        println!("{name}: {:?}", ex13_mis::variance_ratios(f));
+    }
     assert!(brdf < ex13_mis::MAX_VARIANCE_RATIO && light < ex13_mis::MAX_VARIANCE_RATIO);
 }
 
