@@ -266,9 +266,9 @@ fn check_conversion(to_solid_angle: AreaPdfFn) -> Result<(), String> {
         } else if close(got, -want, 1e-4) {
             "your density is negative: a signed cos θ_y. Here x lies behind the light (n_y points away from x), as it does for a two-sided light seen from its back, and a density is never negative"
         } else if close(got, pdf_a * d.length() / cos_y, 1e-4) {
-            "use the SQUARED distance: the solid angle of a patch falls as 1/r²"
+            "the distance is not squared: the solid angle of a patch falls as 1/r²"
         } else if close(got, pdf_a * d.length_squared(), 1e-4) {
-            "divide by |cos θ_y|, the cosine at the light: a patch seen obliquely covers a smaller solid angle"
+            "the cosine at the light is missing: a patch seen obliquely covers a smaller solid angle"
         } else if close(got, pdf_a * cos_y / d.length_squared(), 1e-4) {
             "upside down: p_ω dω = p_A dA with dω = |cos θ_y| dA / r²"
         } else {
@@ -371,7 +371,7 @@ impl NeeCase {
             .map(|(_, why)| why.clone());
         stats.check(&self.what, self.exact, |_| {
             Some(advice.clone().unwrap_or_else(|| {
-                "estimate = f_r · L_e · |cos θ_i| / (pmf · p_ω) when the shadow ray is free".into()
+                "compare your estimate with the integrand of the rendering equation, divided by the probability of every choice you made (the light, the point on it)".into()
             }))
         })
     }
@@ -549,23 +549,23 @@ pub fn cases() -> Vec<NeeCase> {
         named: vec![
             (
                 value(&a, &|_, r2, cy| cy / r2),
-                "the cosine at the surface is missing: the estimate is f_r · L_e · |cos θ_i| / (pmf · p_ω), with cos θ_i = |wi.z| in the local frame".into(),
+                "the cosine at the surface is missing: the integrand of the rendering equation has cos θ_i at x".into(),
             ),
             (
                 value(&a, &|w, r2, cy| w.y * cy / r2.sqrt()),
-                "you divided by r instead of r²: a patch of the light covers the solid angle |cos θ_y| dA / r²".into(),
+                "you divided by r instead of r²: the solid angle of a patch of the light falls with the square of its distance".into(),
             ),
             (
                 value(&a, &|w, r2, _| w.y / r2),
-                "the cosine at the light is missing: p_ω = p_A · r² / |cos θ_y|".into(),
+                "the cosine at the light is missing: a patch of the light seen obliquely covers a smaller solid angle".into(),
             ),
             (
                 value(&a, &|w, _, _| w.y),
-                "you divided by the density per unit AREA (1/A): convert it to solid angle first, p_ω = p_A · r² / |cos θ_y| (part 1)".into(),
+                "you divided by the density per unit AREA (1/A), but the integral is over directions at x: its density must be per unit solid angle (part 1)".into(),
             ),
             (
                 exact_a / f,
-                "the BRDF is missing: multiply by f_r = scene.brdf(it).eval(wo, wi, it.uv)".into(),
+                "the BRDF is missing: your estimate is the irradiance at x, not the radiance it reflects".into(),
             ),
         ],
     });
@@ -592,7 +592,7 @@ pub fn cases() -> Vec<NeeCase> {
         exact: exact_a - blocked,
         named: vec![(
             exact_a,
-            "the occluder makes no difference to your estimate: test visibility with a shadow ray, scene.unoccluded(&it.spawn_ray_to(y, n_y))".into(),
+            "the occluder makes no difference to your estimate: no shadow ray tests the visibility between x and the light point".into(),
         )],
     });
 
@@ -632,7 +632,7 @@ pub fn cases() -> Vec<NeeCase> {
         exact: exact_a,
         named: vec![(
             exact_a + d_two_sided,
-            "the light that turns its back to x lights it in your estimate: an area light emits on one side only — take L_e from AreaLight::le(n_y, −wi), which is zero behind it".into(),
+            "the light that turns its back to x lights it in your estimate: an area light emits on one side only".into(),
         )],
     });
 

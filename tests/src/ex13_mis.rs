@@ -87,8 +87,7 @@ pub fn check(f: PathFn) -> Result<(), String> {
         max_depth: Some(5),
         rr_depth: 3,
     };
-    compare(&EX13_CORNELL, &student)
-        .map_err(|e| format!("path_radiance_mis at max depth 5: {e}"))
+    compare(&EX13_CORNELL, &student).map_err(|e| format!("path_radiance_mis at max depth 5: {e}"))
 }
 
 /// The power heuristic with exponent `k` for two one-sample strategies.
@@ -264,7 +263,13 @@ impl LightCase {
     pub fn check(&self, f: PathFn) -> Result<(), String> {
         let mut stats = MeanVar::default();
         for i in 0..ESTIMATES {
-            stats.add(f(&self.scene, self.ray, Some(2), 1000, &mut Sampler::new(133, i, 0)));
+            stats.add(f(
+                &self.scene,
+                self.ray,
+                Some(2),
+                1000,
+                &mut Sampler::new(133, i, 0),
+            ));
         }
         let advice = self
             .named
@@ -302,8 +307,18 @@ pub fn light_cases() -> Vec<LightCase> {
     // Large lights close to x: the densities of the two strategies are of
     // the same order here (p_ω ≈ 0.3–1 sr⁻¹, p_BRDF ≤ 1/π), so a wrong
     // weight changes the mean by far more than the noise.
-    let a = TestLight::tilted(Vec3A::new(-1.0, 1.2, 0.0), 0.0, 2.0, Color::new(1.0, 1.5, 2.0));
-    let b = TestLight::tilted(Vec3A::new(1.2, 1.0, 0.3), 0.3, 1.8, Color::new(2.0, 1.0, 0.5));
+    let a = TestLight::tilted(
+        Vec3A::new(-1.0, 1.2, 0.0),
+        0.0,
+        2.0,
+        Color::new(1.0, 1.5, 2.0),
+    );
+    let b = TestLight::tilted(
+        Vec3A::new(1.2, 1.0, 0.3),
+        0.3,
+        1.8,
+        Color::new(2.0, 1.0, 0.5),
+    );
     let h = |x, y| heuristic(2, x, y);
     let ray = |s: &Scene, it_wo: Vec3A| {
         let _ = s;
@@ -408,8 +423,16 @@ fn check_veach(f: PathFn) -> Result<(), String> {
     compare(&EX13_VEACH, &student).map_err(|e| format!("Veach's plates (max depth 2): {e}"))?;
     let (brdf, light) = variance_ratios(f)?;
     for (ratio, alone, wins) in [
-        (brdf, "BRDF sampling alone", "small lights over rough plates"),
-        (light, "light sampling alone", "large lights over shiny plates"),
+        (
+            brdf,
+            "BRDF sampling alone",
+            "small lights over rough plates",
+        ),
+        (
+            light,
+            "light sampling alone",
+            "large lights over shiny plates",
+        ),
     ] {
         if ratio > MAX_VARIANCE_RATIO {
             return Err(format!(
