@@ -51,6 +51,10 @@
 //! - the light strategy's density of a direction that happened to hit the
 //!   light: `Light::pdf_li_w(x, p, n, wi)` (per unit solid angle at x, for
 //!   the same sampling `Light::sample_li` does), and `Scene::light_pmf`.
+//!   Take the light sample from `Light::sample_li` too (not exercise 12's
+//!   sampling by area): a weight must use the density of the sampling you
+//!   actually do, and for a sphere seen from outside `Light::sample_li`
+//!   samples the cone it subtends, not its area (Veach's lights are spheres).
 //!
 //! Receives: the scene, a camera ray, the depths, the sampler. Returns: the
 //! path's radiance estimate. `exercises::plug::StudentPathTracer` renders it
