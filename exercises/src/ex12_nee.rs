@@ -1,9 +1,10 @@
-//! Exercise 12 — next event estimation on an area light.
+//! Exercise 12 — next event estimation: a path tracer that aims at the lights.
 //!
 //! Slides: "Directions at a point" ("Посоките в една точка"), "Next event
 //! estimation" ("Next event estimation"), "Finding the light by chance"
 //! ("Светлината, намерена случайно"), "The rendering equation: the
-//! integral" ("Транспортното уравнение: интегралът").
+//! integral" ("Транспортното уравнение: интегралът"), "Path tracing in
+//! outline" ("Принципна схема на path tracing").
 //!
 //! Instead of waiting for a path to hit a light, aim at it: choose a point
 //! y on a light and connect x to it with a shadow ray. The point is drawn
@@ -35,10 +36,30 @@
 //!   `Scene::unoccluded` with the shadow ray `Interaction::spawn_ray_to`
 //!   (towards the environment: `Interaction::spawn_ray`).
 //!
-//! Receives: densities and points / the scene, a hit, the sampler.
-//! Returns: the solid-angle density / the direct light estimate.
+//!
+//! Part 3: `path_radiance_nee(scene, ray, max_depth, rr_depth, sampler)`:
+//! your path tracer of exercise 11 (copy your own loop) with next event
+//! estimation. At every vertex the path reaches, before it continues, add
+//! one light sample (part 2), weighted by the throughput β there. Now the
+//! direct light of a vertex is found by the light sample — so the emission
+//! that the *next* ray happens to hit must not be counted again: the path
+//! counts `L_e` (and the environment when it escapes) only where no light
+//! sample could have found it — the camera ray, and a ray that left a
+//! delta (mirror, glass) lobe, at whose vertex `Brdf::eval` is zero so the
+//! light sample found nothing (`BrdfSample::is_delta`; `Brdf::is_delta`
+//! says it of the whole model). Depth as in exercise 11: with `max_depth`
+//! D a path has at most D segments, and a light sample at a vertex is one
+//! more segment (D = 2: emitters seen directly plus the light sample at the
+//! first hit, the direct light of part 2). Russian roulette as in exercise
+//! 11. `exercises::plug::StudentPathTracer` renders it with
+//! `StudentRender::PathNee` (`lesson11 render --student -i path-nee`).
+//!
+//! Receives: densities and points / the scene, a hit, the sampler / the
+//! scene, a camera ray, the depths, the sampler.
+//! Returns: the solid-angle density / the direct light estimate / the
+//! path's radiance estimate.
 
-use raytracer::math::{Color, Vec3A};
+use raytracer::math::{Color, Ray, Vec3A};
 use raytracer::sampling::Sampler;
 use raytracer::scene::{Interaction, Scene};
 
@@ -51,5 +72,18 @@ pub fn area_pdf_to_solid_angle(pdf_area: f32, x: Vec3A, y: Vec3A, n_y: Vec3A) ->
 /// One next-event estimate of the direct light at `it`.
 pub fn estimate_direct(scene: &Scene, it: &Interaction, sampler: &mut Sampler) -> Color {
     // TODO: choose a light, a point on it, convert the density, test visibility.
+    todo!()
+}
+
+/// The radiance estimate of one path starting with `ray`, with next event
+/// estimation at every vertex.
+pub fn path_radiance_nee(
+    scene: &Scene,
+    ray: Ray,
+    max_depth: Option<u32>,
+    rr_depth: u32,
+    sampler: &mut Sampler,
+) -> Color {
+    // TODO: your loop of exercise 11, a light sample at each vertex, and emission counted only where no light sample could have found it.
     todo!()
 }

@@ -9,7 +9,9 @@ use raytracer::math::{Color, Ray, UVec2};
 use raytracer::sampling::Sampler;
 use raytracer::scene::{Interaction, Scene};
 
-use crate::{ex01_stereo_eyes, ex02_anaglyph, ex10_naive_recursive, ex11_path_tracing, ex12_nee};
+use crate::{
+    ex01_stereo_eyes, ex02_anaglyph, ex10_naive_recursive, ex11_path_tracing, ex12_nee, ex13_mis,
+};
 
 /// The two cameras of a stereo pair ("parallel" method): each eye from
 /// exercise 1, looking in the same direction as the middle camera.
@@ -72,7 +74,8 @@ impl Integrator for StudentNaive {
     }
 }
 
-/// The signature of exercise 11's `path_radiance`.
+/// The signature of exercise 11's `path_radiance` (and of exercise 12's
+/// `path_radiance_nee` and exercise 13's `path_radiance_mis`).
 pub type PathRadianceFn = fn(&Scene, Ray, Option<u32>, u32, &mut Sampler) -> Color;
 
 /// The signature of exercise 12's `estimate_direct`.
@@ -80,7 +83,8 @@ pub type EstimateDirectFn = fn(&Scene, &Interaction, &mut Sampler) -> Color;
 
 /// The path tracer around a `path_radiance` (exercise 11): the student's with
 /// [`StudentPathTracer::new`], or any other with the same signature (the
-/// grader's fixtures).
+/// student's NEE and MIS path tracers of exercises 12 and 13, the grader's
+/// fixtures).
 #[derive(Clone, Copy, Debug)]
 pub struct StudentPathTracer {
     pub path_radiance: PathRadianceFn,
@@ -162,8 +166,18 @@ pub enum StudentRender {
         max_depth: Option<u32>,
         rr_depth: u32,
     },
-    /// Exercise 12: direct light by next event estimation only.
+    /// Exercise 12 (part 2): direct light by next event estimation only.
     Direct,
+    /// Exercise 12 (part 3): path tracing with next event estimation.
+    PathNee {
+        max_depth: Option<u32>,
+        rr_depth: u32,
+    },
+    /// Exercise 13: path tracing with light and BRDF sampling under MIS.
+    PathMis {
+        max_depth: Option<u32>,
+        rr_depth: u32,
+    },
 }
 
 impl StudentRender {
@@ -172,7 +186,8 @@ impl StudentRender {
         match self {
             StudentRender::Naive { .. } => "ex10_naive_recursive",
             StudentRender::Path { .. } => "ex11_path_tracing",
-            StudentRender::Direct => "ex12_nee",
+            StudentRender::Direct | StudentRender::PathNee { .. } => "ex12_nee",
+            StudentRender::PathMis { .. } => "ex13_mis",
         }
     }
 
@@ -191,6 +206,22 @@ impl StudentRender {
                 rr_depth,
             } => Box::new(StudentPathTracer::new(max_depth, rr_depth)),
             StudentRender::Direct => Box::new(StudentDirect::default()),
+            StudentRender::PathNee {
+                max_depth,
+                rr_depth,
+            } => Box::new(StudentPathTracer {
+                path_radiance: ex12_nee::path_radiance_nee,
+                max_depth,
+                rr_depth,
+            }),
+            StudentRender::PathMis {
+                max_depth,
+                rr_depth,
+            } => Box::new(StudentPathTracer {
+                path_radiance: ex13_mis::path_radiance_mis,
+                max_depth,
+                rr_depth,
+            }),
         }
     }
 
@@ -214,6 +245,22 @@ impl StudentRender {
                 rr_depth: u32::MAX,
                 strategy: DirectStrategy::LightOnly,
             }),
+            StudentRender::PathNee {
+                max_depth,
+                rr_depth,
+            } => Box::new(PathTracer {
+                max_depth,
+                rr_depth,
+                strategy: DirectStrategy::LightOnly,
+            }),
+            StudentRender::PathMis {
+                max_depth,
+                rr_depth,
+            } => Box::new(PathTracer {
+                max_depth,
+                rr_depth,
+                strategy: DirectStrategy::Mis,
+            }),
         }
     }
 
@@ -228,6 +275,12 @@ impl StudentRender {
             }
             StudentRender::Direct => {
                 "the renderer's direct light by light sampling only (path-nee at max depth 2), the estimator exercise 12 asks for; `--integrator direct` adds BRDF sampling under MIS: the same mean, less noise"
+            }
+            StudentRender::PathNee { .. } => {
+                "the renderer's path tracer with light sampling only (`--integrator path-nee`), the estimator exercise 12 asks for: the same noise is expected. The MIS path tracer (`path`, exercise 13) has the same mean with less noise on glossy surfaces under large lights"
+            }
+            StudentRender::PathMis { .. } => {
+                "the renderer's path tracer with light and BRDF sampling under the power heuristic (`--integrator path`), the estimator exercise 13 asks for: the same noise is expected"
             }
         }
     }

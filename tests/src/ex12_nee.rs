@@ -13,25 +13,35 @@
 //!    instead of `r²`, the area density left unconverted, no shadow ray, no
 //!    pmf, two-sided emission, a signed cosine — computed by quadrature over
 //!    the light, and the matching one is named.
+//!    A sixth case: a two-sided light seen from its back (where a signed
+//!    cosine at the light shows).
 //! 3. Direct light in the Cornell box against the renderer, tile by tile.
+//! 4. The path tracer with next event estimation: the emitting furnace
+//!    (exact `L_e(1 + ρ + ρ²)` at max depth 3, and `L_e/(1 − ρ)` with
+//!    roulette; direct light counted twice is named), the white furnace under
+//!    a sky (the environment is a light too), a mirror that shows a light
+//!    (exact `R·L_e`: emission after a delta bounce), then the Cornell box
+//!    at max depth 5 against the renderer, tile by tile.
 //!
-//! Tolerances: |z| ≤ 5.5 per channel with the student's own variance in 5
-//! cases (false failure < 6e-7); the image comparison at family-wise
-//! α = 1e-4 ([`crate::compare`]).
+//! Tolerances: |z| ≤ 5.5 per channel with the student's own variance in 6
+//! direct-light cases and 3 furnace cases (false failure < 1e-6 in all);
+//! the mirror case is exact (1e-4 relative, no noise); the image
+//! comparisons at family-wise α = 1e-4 each ([`crate::compare`]).
 
-use exercises::plug::StudentDirect;
+use exercises::plug::{PathRadianceFn, StudentDirect, StudentPathTracer};
 use glam::DVec3;
-use raytracer::brdf::{Brdf, Lambert, Texture};
+use raytracer::brdf::{Brdf, Lambert, Mirror, Texture};
 use raytracer::camera::CameraParams;
 use raytracer::frame::Frame;
 use raytracer::geometry::{Quad, Shape};
-use raytracer::math::{Color, INV_PI, Vec2, Vec3A};
+use raytracer::math::{Color, INV_PI, Ray, Vec2, Vec3A};
 use raytracer::sampling::Sampler;
 use raytracer::scene::{
     Emitter, Interaction, LightSelection, RenderSettings, Scene, SceneObject, SceneParts,
 };
 
-use crate::compare::{EX12_CORNELL_DIRECT, compare};
+use crate::compare::{EX12_CORNELL, EX12_CORNELL_DIRECT, compare};
+use crate::ex10_naive_recursive::{LE, RHO, camera_estimates, series, small_scene};
 use crate::polygon::{corners, integrate_over_quad, irradiance, project_from};
 use crate::stats::{MeanVar, close, fmt3};
 
@@ -53,13 +63,168 @@ pub fn expected_pdf(pdf_a: f32, x: Vec3A, y: Vec3A, n_y: Vec3A) -> f32 {
     }
 }
 
-pub fn check(to_solid_angle: AreaPdfFn, direct: DirectFn) -> Result<(), String> {
+/// Paths per furnace case of the path tracer.
+pub const PATHS: u64 = 4000;
+
+pub fn check(
+    to_solid_angle: AreaPdfFn,
+    direct: DirectFn,
+    path: PathRadianceFn,
+) -> Result<(), String> {
     check_conversion(to_solid_angle)?;
     for case in cases() {
         case.check(direct)?;
     }
     compare(&EX12_CORNELL_DIRECT, &StudentDirect(direct))
-        .map_err(|e| format!("direct light by your estimate_direct: {e}"))
+        .map_err(|e| format!("direct light by your estimate_direct: {e}"))?;
+    check_path(path)
+}
+
+/// Part 3: the path tracer with next event estimation.
+pub fn check_path(path: PathRadianceFn) -> Result<(), String> {
+    let what = "path_radiance_nee";
+    check_furnaces(what, path, 120)?;
+    check_mirror(what, path, |got, want| {
+        if got == Color::ZERO {
+            "the light seen in a mirror is missing: after a delta (mirror) bounce no light sample can find the emitter (f_r of any other direction is zero there), so the ray's hit is the only way it is counted".into()
+        } else if got.element_sum() < want.element_sum() {
+            "the light seen in a mirror is too dark: the emitter hit after a delta bounce counts fully".into()
+        } else {
+            "the light seen in a mirror is too bright: it counts once, β·L_e, with β = R after the mirror".into()
+        }
+    })?;
+    let student = StudentPathTracer {
+        path_radiance: path,
+        max_depth: Some(5),
+        rr_depth: 3,
+    };
+    compare(&EX12_CORNELL, &student).map_err(|e| format!("{what} at max depth 5: {e}"))
+}
+
+/// The furnaces of a path tracer with light sampling (exercises 12 and 13):
+/// every vertex sees the light by a light sample too, so emission counted
+/// at every hit as well counts the direct light twice.
+pub fn check_furnaces(what: &str, path: PathRadianceFn, seed: u64) -> Result<(), String> {
+    let furnace = small_scene("furnace")?;
+    let d = 3;
+    let stats = camera_estimates(&furnace, seed, PATHS, |ray, s| {
+        path(&furnace, ray, Some(d), 1000, s)
+    });
+    // Counted twice: L_e + 2ρL_e + 2ρ²L_e (light sample and hit at each bounce).
+    let twice = LE * (1.0 + 2.0 * RHO + 2.0 * RHO * RHO);
+    let named = [
+        (
+            twice,
+            "too bright by the direct light once more: the emitter that a BRDF-sampled ray hits is counted although a light sample at the same vertex already counts the light arriving from it (your mean is L_e(1 + 2ρ + 2ρ²))",
+        ),
+        (
+            LE,
+            "your mean is L_e alone: only the emitter seen by the camera counts — the light samples at the vertices are missing",
+        ),
+        (
+            LE * (1.0 + 2.0 * RHO),
+            "too bright: the light sample at the second vertex brings ρL_e, not ρ²L_e — the light samples are not weighted by the throughput β of their vertex",
+        ),
+        (
+            series(d + 1, RHO),
+            "one bounce too many: with max_depth D a path has at most D segments, and a light sample adds a segment",
+        ),
+        (
+            series(d - 1, RHO),
+            "one bounce too few: with max_depth D a path has at most D segments; the light sample at the last vertex that can still add a segment is missing",
+        ),
+    ];
+    let advice = named
+        .iter()
+        .find(|(v, _)| stats.matches(Color::splat(*v as f32)))
+        .map(|(_, why)| why.to_string());
+    stats.check(
+        &format!("{what}: emitting furnace (L_e = 0.5, ρ = 0.5), max_depth {d}, no roulette: L = L_e(1 + ρ + ρ²)"),
+        Color::splat(series(d, RHO) as f32),
+        |r| {
+            advice.clone().or_else(|| {
+                Some(if r > 1.0 { "too bright" } else { "too dark" }.to_string() + ": the light of each bounce counts once, by the light sample at its vertex weighted by β")
+            })
+        },
+    )?;
+    let stats = camera_estimates(&furnace, seed + 1, PATHS, |ray, s| {
+        path(&furnace, ray, None, 1, s)
+    });
+    stats.check(
+        &format!("{what}: emitting furnace, unlimited depth, Russian roulette after 1 bounce: L = L_e/(1 − ρ)"),
+        Color::ONE,
+        |r| {
+            Some(if r < 1.0 {
+                "too dark with roulette: a path that survives the roulette must make up for those that end"
+            } else {
+                "too bright with roulette: the light of each bounce counts once, and a surviving path makes up exactly for those that end"
+            }
+            .to_string())
+        },
+    )?;
+    let white = small_scene("white-furnace")?;
+    let stats = camera_estimates(&white, seed + 2, PATHS, |ray, s| {
+        path(&white, ray, None, 2, s)
+    });
+    stats.check(
+        &format!("{what}: white furnace (white Lambert under a sky of 1), roulette after 2 bounces: L = 1"),
+        Color::ONE,
+        |r| {
+            Some(if r > 1.2 {
+                "too bright: the sky is a light as well — a ray that escapes after a bounce brings in the sky that the light sample at its vertex has already counted"
+            } else if r < 1.0 {
+                "too dark: the sky is a light (Scene::choose_light finds it, Light::sample_li samples it: an infinitely far light, shadow ray Interaction::spawn_ray); the camera ray that escapes sees it directly"
+            } else {
+                "too bright"
+            }
+            .to_string())
+        },
+    )
+}
+
+/// A mirror floor (reflectance `MIRROR_R`) under a square light (facing
+/// down): the camera ray `ray` hits the mirror and its reflection the light.
+pub fn mirror_scene() -> (Scene, Ray, Color) {
+    let le = Color::new(4.0, 3.0, 2.0);
+    let light = TestLight {
+        origin: Vec3A::new(-1.0, 2.0, -1.0),
+        // e1 × e2 = −4 y: the light faces down, towards the mirror.
+        e1: Vec3A::new(2.0, 0.0, 0.0),
+        e2: Vec3A::new(0.0, 0.0, 2.0),
+        radiance: le,
+    };
+    let (mut scene, _) = scene_with(&[light], None, 1.0, false);
+    scene.brdfs[0] = Brdf::Mirror(Mirror {
+        reflectance: MIRROR_R,
+    });
+    let d = Vec3A::new(0.3, -1.0, 0.1).normalize();
+    (scene, Ray::new(-0.8 * d, d), MIRROR_R * le)
+}
+
+/// The mirror's reflectance in [`mirror_scene`].
+pub const MIRROR_R: Color = Color::new(0.9, 0.8, 0.7);
+
+/// The mirror case at max depth 2: exactly `R·L_e`, no noise.
+pub fn check_mirror(
+    what: &str,
+    path: PathRadianceFn,
+    why: impl Fn(Color, Color) -> String,
+) -> Result<(), String> {
+    let (scene, ray, want) = mirror_scene();
+    for i in 0..16 {
+        let got = path(&scene, ray, Some(2), 1000, &mut Sampler::new(121, i, 0));
+        if !(0..3).all(|k| close(got[k], want[k], 1e-4)) {
+            return Err(format!(
+                "{what}: a light seen in a mirror (reflectance R = {}, L_e = {}), max_depth 2: your estimate is {}, expected R·L_e = {} — {}",
+                fmt3(MIRROR_R),
+                fmt3(Color::new(4.0, 3.0, 2.0)),
+                fmt3(got),
+                fmt3(want),
+                why(got, want)
+            ));
+        }
+    }
+    Ok(())
 }
 
 fn check_conversion(to_solid_angle: AreaPdfFn) -> Result<(), String> {
@@ -79,6 +244,14 @@ fn check_conversion(to_solid_angle: AreaPdfFn) -> Result<(), String> {
             Vec3A::new(0.5, 1.0, -1.0),
             Vec3A::new(0.0, 0.6, 0.8),
         ),
+        // x behind the light (a two-sided light is seen from there): the
+        // cosine between n_y and y → x is negative.
+        (
+            0.5,
+            Vec3A::new(0.2, -0.5, 0.1),
+            Vec3A::new(-0.3, 1.5, 0.4),
+            Vec3A::new(0.0, 0.8, 0.6),
+        ),
     ];
     for (pdf_a, x, y, n) in cases {
         let got = to_solid_angle(pdf_a, x, y, n);
@@ -91,11 +264,11 @@ fn check_conversion(to_solid_angle: AreaPdfFn) -> Result<(), String> {
         let why = if close(got, pdf_a, 1e-4) {
             "that is still the density per unit AREA: a patch dA at y covers the solid angle |cos θ_y| dA / r² seen from x"
         } else if close(got, -want, 1e-4) {
-            "a density is never negative: take |cos θ_y|"
+            "your density is negative: a signed cos θ_y. Here x lies behind the light (n_y points away from x), as it does for a two-sided light seen from its back, and a density is never negative"
         } else if close(got, pdf_a * d.length() / cos_y, 1e-4) {
-            "use the SQUARED distance: the solid angle of a patch falls as 1/r²"
+            "the distance is not squared: the solid angle of a patch falls as 1/r²"
         } else if close(got, pdf_a * d.length_squared(), 1e-4) {
-            "divide by |cos θ_y|, the cosine at the light: a patch seen obliquely covers a smaller solid angle"
+            "the cosine at the light is missing: a patch seen obliquely covers a smaller solid angle"
         } else if close(got, pdf_a * cos_y / d.length_squared(), 1e-4) {
             "upside down: p_ω dω = p_A dA with dω = |cos θ_y| dA / r²"
         } else {
@@ -139,7 +312,7 @@ pub struct TestLight {
 impl TestLight {
     /// A square of side `s` centred at `c` whose normal is
     /// `(−sin τ, −cos τ, 0)`: facing down (τ = 0), tilted towards −x by τ.
-    fn tilted(c: Vec3A, tau: f32, s: f32, radiance: Color) -> TestLight {
+    pub fn tilted(c: Vec3A, tau: f32, s: f32, radiance: Color) -> TestLight {
         let e1 = s * Vec3A::new(tau.cos(), -tau.sin(), 0.0);
         let e2 = Vec3A::new(0.0, 0.0, s);
         TestLight {
@@ -150,17 +323,17 @@ impl TestLight {
         }
     }
 
-    fn normal(&self) -> Vec3A {
+    pub fn normal(&self) -> Vec3A {
         self.e1.cross(self.e2).normalize()
     }
 
-    fn corners(&self) -> [Vec3A; 4] {
+    pub fn corners(&self) -> [Vec3A; 4] {
         corners(self.origin, self.e1, self.e2)
     }
 
     /// `∫ g dA` over the light, `g` of (unit direction from x, r², cos θ_y)
     /// (see [`integrate_over_quad`]).
-    fn integrate(&self, x: Vec3A, g: impl Fn(DVec3, f64, f64) -> f64) -> f64 {
+    pub fn integrate(&self, x: Vec3A, g: impl Fn(DVec3, f64, f64) -> f64) -> f64 {
         let n = self.normal();
         let n = DVec3::new(n.x as f64, n.y as f64, n.z as f64);
         let x = DVec3::new(x.x as f64, x.y as f64, x.z as f64);
@@ -198,7 +371,7 @@ impl NeeCase {
             .map(|(_, why)| why.clone());
         stats.check(&self.what, self.exact, |_| {
             Some(advice.clone().unwrap_or_else(|| {
-                "estimate = f_r · L_e · |cos θ_i| / (pmf · p_ω) when the shadow ray is free".into()
+                "compare your estimate with the integrand of the rendering equation, divided by the probability of every choice you made (the light, the point on it)".into()
             }))
         })
     }
@@ -219,7 +392,7 @@ pub fn light_a() -> TestLight {
         Color::new(4.0, 3.0, 2.0),
     )
 }
-fn light_b() -> TestLight {
+pub fn light_b() -> TestLight {
     TestLight::tilted(
         Vec3A::new(-1.2, 1.8, -0.3),
         0.0,
@@ -227,7 +400,7 @@ fn light_b() -> TestLight {
         Color::new(2.0, 2.5, 3.0),
     )
 }
-fn light_d() -> TestLight {
+pub fn light_d() -> TestLight {
     let s = 0.7;
     TestLight {
         origin: Vec3A::new(-0.8 - s / 2.0, 1.5, 0.4 - s / 2.0),
@@ -238,7 +411,7 @@ fn light_d() -> TestLight {
 }
 
 /// The receiving point: the origin, on the floor.
-const X: Vec3A = Vec3A::ZERO;
+pub const X: Vec3A = Vec3A::ZERO;
 
 /// A scene of the floor (normal `floor_normal`), the lights, and optionally
 /// an occluder, with the interaction at [`X`] seen from above.
@@ -246,6 +419,16 @@ fn scene(
     lights: &[TestLight],
     occluder: Option<TestLight>,
     floor_normal: f32,
+) -> (Scene, Interaction) {
+    scene_with(lights, occluder, floor_normal, false)
+}
+
+/// [`scene`] with the lights one- or two-sided.
+pub fn scene_with(
+    lights: &[TestLight],
+    occluder: Option<TestLight>,
+    floor_normal: f32,
+    two_sided: bool,
 ) -> (Scene, Interaction) {
     let floor = if floor_normal > 0.0 {
         // e1 × e2 = +y.
@@ -278,7 +461,7 @@ fn scene(
             brdf: 1,
             emitter: Some(Emitter {
                 radiance: l.radiance,
-                two_sided: false,
+                two_sided,
             }),
         });
     }
@@ -337,7 +520,7 @@ fn scene(
 }
 
 /// `f_r L E` at [`X`] (normal +y) for the lights, by Lambert's formula.
-fn exact(lights: &[TestLight]) -> Color {
+pub fn exact(lights: &[TestLight]) -> Color {
     lights
         .iter()
         .map(|l| {
@@ -366,23 +549,23 @@ pub fn cases() -> Vec<NeeCase> {
         named: vec![
             (
                 value(&a, &|_, r2, cy| cy / r2),
-                "the cosine at the surface is missing: the estimate is f_r · L_e · |cos θ_i| / (pmf · p_ω), with cos θ_i = |wi.z| in the local frame".into(),
+                "the cosine at the surface is missing: the integrand of the rendering equation has cos θ_i at x".into(),
             ),
             (
                 value(&a, &|w, r2, cy| w.y * cy / r2.sqrt()),
-                "you divided by r instead of r²: a patch of the light covers the solid angle |cos θ_y| dA / r²".into(),
+                "you divided by r instead of r²: the solid angle of a patch of the light falls with the square of its distance".into(),
             ),
             (
                 value(&a, &|w, r2, _| w.y / r2),
-                "the cosine at the light is missing: p_ω = p_A · r² / |cos θ_y|".into(),
+                "the cosine at the light is missing: a patch of the light seen obliquely covers a smaller solid angle".into(),
             ),
             (
                 value(&a, &|w, _, _| w.y),
-                "you divided by the density per unit AREA (1/A): convert it to solid angle first, p_ω = p_A · r² / |cos θ_y| (part 1)".into(),
+                "you divided by the density per unit AREA (1/A), but the integral is over directions at x: its density must be per unit solid angle (part 1)".into(),
             ),
             (
                 exact_a / f,
-                "the BRDF is missing: multiply by f_r = scene.brdf(it).eval(wo, wi, it.uv)".into(),
+                "the BRDF is missing: your estimate is the irradiance at x, not the radiance it reflects".into(),
             ),
         ],
     });
@@ -409,7 +592,7 @@ pub fn cases() -> Vec<NeeCase> {
         exact: exact_a - blocked,
         named: vec![(
             exact_a,
-            "the occluder makes no difference to your estimate: test visibility with a shadow ray, scene.unoccluded(&it.spawn_ray_to(y, n_y))".into(),
+            "the occluder makes no difference to your estimate: no shadow ray tests the visibility between x and the light point".into(),
         )],
     });
 
@@ -425,11 +608,11 @@ pub fn cases() -> Vec<NeeCase> {
         named: vec![
             (
                 both * 0.5,
-                "your estimate is half the light: divide by the probability of choosing the light (choice.pmf = 1/2 here), do not multiply by it".into(),
+                "your estimate is half the light: the probability of choosing the light (choice.pmf = 1/2 here) is left out — each light is chosen only half the time, so what it brings must count for both halves".into(),
             ),
             (
                 both * 0.25,
-                "your estimate is a quarter of the light: divide by the probability of choosing the light (choice.pmf), do not multiply by it".into(),
+                "your estimate is a quarter of the light: the probability of choosing the light (choice.pmf = 1/2 here) is multiplied in where it belongs in the denominator".into(),
             ),
             (
                 both * 2.0,
@@ -449,7 +632,7 @@ pub fn cases() -> Vec<NeeCase> {
         exact: exact_a,
         named: vec![(
             exact_a + d_two_sided,
-            "the light that turns its back to x lights it in your estimate: an area light emits on one side only — take L_e from AreaLight::le(n_y, −wi), which is zero behind it".into(),
+            "the light that turns its back to x lights it in your estimate: an area light emits on one side only".into(),
         )],
     });
 
@@ -469,6 +652,25 @@ pub fn cases() -> Vec<NeeCase> {
             (
                 Color::ZERO,
                 "your estimate is 0: cos θ_i clamped at 0. Here the surface is seen from its back (wo.z < 0) and so is the light (wi.z < 0): the cosine is taken with the normal on the side of ω_o, |wi.z|".into(),
+            ),
+        ],
+    });
+
+    // 6. A two-sided light above x that faces up: x sees its back, which emits too.
+    let (scene6, it6) = scene_with(&[d], None, 1.0, true);
+    out.push(NeeCase {
+        what: "a two-sided light seen from its back (it emits on both sides; its normal points away from x)".into(),
+        scene: scene6,
+        it: it6,
+        exact: d_two_sided,
+        named: vec![
+            (
+                -d_two_sided,
+                "your estimate is negative behind a two-sided light: a signed cosine at the light (cos θ_y < 0 when x lies behind the light's normal), in part 1 or here".into(),
+            ),
+            (
+                Color::ZERO,
+                "your estimate is 0 behind a two-sided light: its back emits too (AreaLight::le knows the sides), and the density of its points seen from behind is positive — a signed cosine at the light in part 1 would give a negative density, and a sample with it dropped".into(),
             ),
         ],
     });

@@ -108,9 +108,12 @@ pub const GRADERS: &[(&str, Check)] = &[
         ex12_nee::check(
             ex::ex12_nee::area_pdf_to_solid_angle,
             ex::ex12_nee::estimate_direct,
+            ex::ex12_nee::path_radiance_nee,
         )
     }),
-    ("ex13_mis", || ex13_mis::check(ex::ex13_mis::mis_weight)),
+    ("ex13_mis", || {
+        ex13_mis::check(ex::ex13_mis::path_radiance_mis)
+    }),
     ("ex14_light_tracing", || {
         ex14_light_tracing::check(ex::ex14_light_tracing::splat_light_vertex)
     }),

@@ -86,7 +86,8 @@ impl Light {
     /// seen from the receiving point `p`. `None` if the light sends nothing
     /// to `p` (behind a one-sided light) or the sample is degenerate.
     ///
-    /// - quad, sphere seen from inside: uniform by area, `p_ω = r²/(|cos θ_y| A)`;
+    /// - quad, sphere seen from inside: a point uniform by area, its density
+    ///   converted to one per unit solid angle at `p`;
     /// - sphere seen from outside: uniform in the subtended cone,
     ///   `p_ω = 1/(2π(1 − cos θ_max))`;
     /// - point: `L_i = I/r²`, `p_ω = 1`, `is_delta`;

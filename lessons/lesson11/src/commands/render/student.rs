@@ -11,7 +11,8 @@ use crate::integrators::{IntegratorArgs, IntegratorKind};
 use crate::options::SceneArgs;
 use crate::render_files::render_to_files;
 
-/// The student's integrator (exercise 10, 11 or 12, by `--integrator`)
+/// The student's integrator (exercise 10, 11, 12 or 13, by `--integrator`:
+/// naive, path-brdf, direct or path-nee, path)
 /// beside the renderer's integrator with the same estimator, and their tile
 /// z-test.
 pub fn run(
@@ -27,7 +28,15 @@ pub fn run(
     let max_depth = ia.max_depth(integrator, &scene)?;
     let rr_depth = ia.rr_depth(&scene);
     let which = match integrator {
-        IntegratorKind::Path | IntegratorKind::PathBrdf => StudentRender::Path {
+        IntegratorKind::PathBrdf => StudentRender::Path {
+            max_depth,
+            rr_depth,
+        },
+        IntegratorKind::PathNee => StudentRender::PathNee {
+            max_depth,
+            rr_depth,
+        },
+        IntegratorKind::Path => StudentRender::PathMis {
             max_depth,
             rr_depth,
         },
@@ -35,7 +44,7 @@ pub fn run(
             max_depth: max_depth.unwrap_or(crate::integrators::NAIVE_DEFAULT_DEPTH),
             branching: ia.branching()[0],
         },
-        IntegratorKind::Direct | IntegratorKind::PathNee => StudentRender::Direct,
+        IntegratorKind::Direct => StudentRender::Direct,
         IntegratorKind::Ao
         | IntegratorKind::Light
         | IntegratorKind::Bdpt
@@ -44,7 +53,8 @@ pub fn run(
         | IntegratorKind::Sppm
         | IntegratorKind::Vpl
         | IntegratorKind::IrradianceCache => bail!(
-            "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
+            "--student renders the exercises that are whole integrators: use --integrator naive (exercise 10), \
+             path-brdf (11), direct or path-nee (12) or path (13) \
              (light tracing, bidirectional tracing and Metropolis light transport are graded piece by piece: \
              exercises 14, 15 and 16; photon mapping and instant radiosity: 17 and 18)"
         ),
