@@ -112,7 +112,7 @@ pub const GRADERS: &[(&str, Check)] = &[
     }),
     ("ex13_mis", || ex13_mis::check(ex::ex13_mis::mis_weight)),
     ("ex14_light_tracing", || {
-        ex14_light_tracing::check(ex::ex14_light_tracing::splat_light_vertex)
+        ex14_light_tracing::check(ex::ex14_light_tracing::trace_light_path)
     }),
     ("ex15_bdpt_connection", || {
         ex15_bdpt_connection::check(
