@@ -1,32 +1,41 @@
 //! Grader of exercise 14 (a whole light tracer): furnaces with known answers
 //! seen by light tracing alone, then the `caustic` scene against the
-//! renderer's light tracer, tile by tile.
+//! renderer's light tracer, tile by tile, then a glass furnace.
 //!
-//! 1. The emitting furnace (camera inside a sphere emitting `L_e = 0.5`,
-//!    albedo 0.5) with a second light, a point light outside the sphere that
-//!    sends nothing in and is chosen half of the time (lights are chosen by
-//!    power): `L = L_e Σ_{k<D} ρ^k` in every pixel — 0.5 at D = 1 (the
-//!    lights seen directly), 0.75 at D = 2, 1 with no limit and roulette.
-//! 2. A glass furnace: a white (ρ = 1) ball inside a glass ball (η = 1.5),
+//! 1. The emitting furnace (camera at the centre of a sphere emitting `L_e`
+//!    with albedo ρ) with a second light, a point light outside the sphere
+//!    that sends nothing in and is chosen half of the time (lights are chosen
+//!    by power): `L = L_e Σ_{k<D} ρ^k` in every pixel — 0.5 at D = 1 (the
+//!    lights seen directly, L_e = 0.5), 0.75 at D = 2 (ρ = 0.5), and 1 with
+//!    no limit and roulette from the first bounce (L_e = 0.1, ρ = 0.9: long
+//!    paths, so that roulette matters). Every vertex is at distance 1 and
+//!    faces the camera: these cases test the light's side and `W_e`.
+//! 2. `caustic` at 32×32 against the renderer's `LightTracer` (the stored
+//!    reference, [`crate::compare::EX14_CAUSTIC`]): distances, cosines at the
+//!    surface, shadows, the caustic.
+//! 3. A glass furnace: a white (ρ = 1) ball inside a glass ball (η = 1.5),
 //!    both inside a black sphere emitting `L_e = 0.5`. In equilibrium the
 //!    radiance inside the glass is `η² L_e` in every direction (no
-//!    absorption: the white ball reflects what it gets), so the camera,
-//!    inside the glass and filled by the white ball, sees `η² L_e = 1.125`
-//!    in every pixel. A light path enters the glass once more than it
-//!    leaves: radiance transport would scale it by `1/η²` and show `L_e`.
-//! 3. `caustic` at 32×32 against the renderer's `LightTracer` (the stored
-//!    reference, [`crate::compare::EX14_CAUSTIC`]).
+//!    absorption: the white ball reflects all it gets; the renderer's path
+//!    tracer agrees), so the camera, inside the glass and filled by the white
+//!    ball, sees `η² L_e = 1.125` in every pixel. A light path that reaches
+//!    the white ball has entered the glass once more than it has left it:
+//!    radiance transport would scale it by `1/η²` and show `L_e`.
 //!
 //! Every splat the student pushes is checked on the way: on the film, finite
-//! and non-negative.
+//! and non-negative. A failing mean is compared with what the usual mistakes
+//! converge to (the furnaces: exactly; the caustic: by the ratio of the
+//! means, in ranges measured with the wrong fixtures of the self-test).
 //!
-//! Tolerances: furnaces tile by tile (4×4-pixel tiles of an 8×8 film, z-test
-//! against the exact value with the film's own variance estimate) at
-//! family-wise α = 1e-4 each ([`raytracer::metrics::z_threshold`] over 4
-//! tiles × 3 channels; four furnace cases: false failure < 4e-4 from the
-//! furnaces under the normal approximation), and the image comparison at
-//! α = 1e-4 ([`crate::compare`]). The self-test measured the false-failure
-//! rate of the whole grader over seeds (see `tests/tests/fixtures/ex14.rs`).
+//! Tolerances: each furnace is z-tested tile by tile (2×2-pixel tiles of an
+//! 8×8 film) against its exact value with the film's own variance estimate,
+//! at family-wise α = 1e-4 ([`raytracer::metrics::z_threshold`] over 16 tiles
+//! × 3 channels), and the caustic at α = 1e-4 ([`crate::compare`]): five
+//! tests, a false failure below 5e-4 under the normal approximation. Light
+//! tracing's splats are heavy-tailed, so that was measured too: 60 gradings
+//! (the reference solution and the two correct fixtures, 20 seeds each, the
+//! ignored test `ex14_false_failures` in `tests/tests/check_grader.rs`) had
+//! no false failure.
 
 use std::sync::Mutex;
 
@@ -339,7 +348,7 @@ pub fn check_with_seed(f: LightFn, seed: u64) -> Result<(), String> {
             ),
             None => recognise(
                 ratio,
-                &[(0.2, 0.95, "light is lost in long paths: with Russian roulette a path that survives with probability q must carry β/q, so that on average it brings what it would have")],
+                &[(0.2, 0.9, "light is lost in long paths: with Russian roulette a path that survives with probability q must carry β/q, so that on average it brings what it would have (if you do: a fixed q far below the albedo, q < ρ², gives the estimate an infinite variance — take q from the path's throughput)")],
             ),
         }
         .unwrap_or_else(|| format!("{} — check the throughput that leaves the light and the splat of each vertex", too(ratio)));

@@ -422,11 +422,11 @@ fn ex13_mis() {
 fn ex14_light_tracing() {
     use fixtures::ex14;
     passes(
-        "G · W_e over the lens density, q = 0.8",
+        "G · W_e over the lens density, q = 0.95",
         ex14_light_tracing::check(ex14::by_geometry),
     );
     passes(
-        "Camera::sample_wi, a uniform light choice of its own, q = 0.7",
+        "Camera::sample_wi, a uniform light choice of its own, q from the walk",
         ex14_light_tracing::check(ex14::by_sample_wi_uniform),
     );
     for (name, f, keyword) in [
@@ -448,6 +448,37 @@ fn ex14_light_tracing() {
     ] {
         fails(name, ex14_light_tracing::check(f), keyword);
     }
+}
+
+/// The false-failure rate of exercise 14's grader, measured over seeds (light
+/// tracing's splats are heavy-tailed, so the normal approximation of its
+/// z-tests is checked): the reference solution and the two correct fixtures,
+/// 20 seeds each. About 45 s on two cores, hence ignored; run it after a
+/// change to the grader or its reference:
+/// `cargo test -p grading --features solutions --test check_grader -- --ignored ex14_false_failures`.
+#[test]
+#[ignore]
+fn ex14_false_failures() {
+    use fixtures::ex14;
+    let mut failed = Vec::new();
+    for (name, f) in [
+        (
+            "reference solution",
+            exercises::ex14_light_tracing::trace_light_path as ex14_light_tracing::LightFn,
+        ),
+        ("by_geometry", ex14::by_geometry),
+        ("by_sample_wi_uniform", ex14::by_sample_wi_uniform),
+    ] {
+        if name == "reference solution" && !exercises::SOLUTIONS {
+            continue; // the stub: not started
+        }
+        for seed in 0..20u64 {
+            if let Err(e) = ex14_light_tracing::check_with_seed(f, 1000 + 10 * seed) {
+                failed.push(format!("{name}, seed {seed}: {e}"));
+            }
+        }
+    }
+    assert!(failed.is_empty(), "{} of 60 failed:\n{}", failed.len(), failed.join("\n"));
 }
 
 #[test]
