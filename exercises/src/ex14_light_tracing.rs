@@ -36,7 +36,7 @@
 //! 3. **At every surface the path hits** (`Scene::intersect`), unless its BRDF
 //!    is a delta (`Brdf::is_delta`: mirror, glass — joining those to the lens
 //!    has zero value), join the vertex to the lens:
-//!    - a lens point: [`crate::plug::sample_lens`] (a `LensPoint` with its
+//!    - a lens point: `plug::sample_lens` (a `LensPoint` with its
 //!      density `pdf_a` per unit area of the lens; the lens faces
 //!      `Camera::forward`);
 //!    - where it lands: `Camera::raster_of` (world → raster), `None` where the

@@ -87,13 +87,23 @@ impl Integrator for Watched {
         for s in &splats[start..] {
             let r = s.raster;
             let why = if !(r.x.is_finite() && r.y.is_finite()) {
-                Some(format!("a splat at the raster position {r}, not a number: a splat where the camera sees nothing (a vertex behind the camera has no raster position)"))
+                Some(format!(
+                    "a splat at the raster position {r}, not a number: a splat where the camera sees nothing (a vertex behind the camera has no raster position)"
+                ))
             } else if !(0.0..w).contains(&r.x) || !(0.0..h).contains(&r.y) {
-                Some(format!("a splat at {r}, off the {w}×{h} film: a splat where the camera sees nothing (behind the camera or outside the field of view) — such a vertex contributes nothing"))
+                Some(format!(
+                    "a splat at {r}, off the {w}×{h} film: a splat where the camera sees nothing (behind the camera or outside the field of view) — such a vertex contributes nothing"
+                ))
             } else if !s.value.is_finite() {
-                Some(format!("a splat of value {} (NaN or infinite): a division by a zero density or distance?", s.value))
+                Some(format!(
+                    "a splat of value {} (NaN or infinite): a division by a zero density or distance?",
+                    s.value
+                ))
             } else if s.value.min_element() < 0.0 {
-                Some(format!("a negative splat ({}): a signed cosine — a light path reaches surfaces (and leaves lights) on either side, the cosines count by their magnitude", s.value))
+                Some(format!(
+                    "a negative splat ({}): a signed cosine — a light path reaches surfaces (and leaves lights) on either side, the cosines count by their magnitude",
+                    s.value
+                ))
             } else {
                 None
             };
@@ -151,8 +161,7 @@ fn grader_scene(name: &str, toml: &str) -> Result<Scene, String> {
         name: format!("grader:{name}"),
         dir: std::path::PathBuf::new(),
     };
-    let parts = load_str(toml, &origin)
-        .map_err(|e| format!("grader: {e}"))?;
+    let parts = load_str(toml, &origin).map_err(|e| format!("grader: {e}"))?;
     let mut s = Scene::build(name, parts);
     s.set_resolution(8, 8);
     Ok(s)
@@ -276,7 +285,10 @@ fn without_importance(scene: &Scene, exact: f32) -> Image {
         let mut sum = 0.0;
         for j in 0..4 {
             for i in 0..4 {
-                let raster = Vec2::new(x as f32 + (i as f32 + 0.5) / 4.0, y as f32 + (j as f32 + 0.5) / 4.0);
+                let raster = Vec2::new(
+                    x as f32 + (i as f32 + 0.5) / 4.0,
+                    y as f32 + (j as f32 + 0.5) / 4.0,
+                );
                 let ray = cam.generate_ray(raster, Vec2::splat(0.5));
                 sum += 1.0 / cam.we(&ray);
             }
@@ -312,20 +324,48 @@ pub fn check(f: LightFn) -> Result<(), String> {
 /// false-failure rate over seeds).
 pub fn check_with_seed(f: LightFn, seed: u64) -> Result<(), String> {
     // (albedo, L_e, max depth, roulette depth, the answer, the case)
-    let cases: [(f64, f64, Option<u32>, u32, f64, &str); 3] = [
-        (0.5, 0.5, Some(1), 1000, 0.5, "L_e = 0.5, max_depth 1: the lights seen directly, L = L_e"),
-        (0.5, 0.5, Some(2), 1000, 0.75, "L_e = 0.5, albedo 0.5, max_depth 2: L = L_e (1 + ρ)"),
-        (0.9, 0.1, None, 1, 1.0, "L_e = 0.1, albedo 0.9, no depth limit, roulette from the first bounce: L = L_e/(1 − ρ)"),
+    type Case = (f64, f64, Option<u32>, u32, f64, &'static str);
+    let cases: [Case; 3] = [
+        (
+            0.5,
+            0.5,
+            Some(1),
+            1000,
+            0.5,
+            "L_e = 0.5, max_depth 1: the lights seen directly, L = L_e",
+        ),
+        (
+            0.5,
+            0.5,
+            Some(2),
+            1000,
+            0.75,
+            "L_e = 0.5, albedo 0.5, max_depth 2: L = L_e (1 + ρ)",
+        ),
+        (
+            0.9,
+            0.1,
+            None,
+            1,
+            1.0,
+            "L_e = 0.1, albedo 0.9, no depth limit, roulette from the first bounce: L = L_e/(1 − ρ)",
+        ),
     ];
     for (k, (rho, le, max_depth, rr_depth, exact, what)) in cases.into_iter().enumerate() {
         let furnace = two_light_furnace(rho, le)?;
         let exact = exact as f32;
-        let spp = if max_depth == Some(1) { 4 * FURNACE_SPP } else { FURNACE_SPP };
+        let spp = if max_depth == Some(1) {
+            4 * FURNACE_SPP
+        } else {
+            FURNACE_SPP
+        };
         let result = render_watched(&furnace, f, max_depth, rr_depth, spp, seed + k as u64)?;
         let (m, verdict) = furnace_tiles(&result, exact);
         let Err(why) = verdict else { continue };
         let ratio = m / exact as f64;
-        let case = format!("emitting furnace with two lights (camera inside a sphere; a point light outside it, chosen half of the time), {what}");
+        let case = format!(
+            "emitting furnace with two lights (camera inside a sphere; a point light outside it, chosen half of the time), {what}"
+        );
         if agrees(&result, &without_importance(&furnace, exact)) {
             return Err(format!("{case}: {why} — {NO_IMPORTANCE}"));
         }
@@ -410,7 +450,9 @@ fn caustic(f: LightFn, seed: u64) -> Result<(), String> {
             too(ratio)
         )
     });
-    Err(format!("{why} — your image ×{ratio:.2} the reference's mean: {advice}"))
+    Err(format!(
+        "{why} — your image ×{ratio:.2} the reference's mean: {advice}"
+    ))
 }
 
 /// Depth of the caustic comparison: the caustic needs 4 light vertices

@@ -435,15 +435,35 @@ fn ex14_light_tracing() {
             ex14::no_importance as ex14_light_tracing::LightFn,
             "importance W_e",
         ),
-        ("no cosine at the surface", ex14::no_cos_surface, "cosine at the surface"),
+        (
+            "no cosine at the surface",
+            ex14::no_cos_surface,
+            "cosine at the surface",
+        ),
         ("signed cosines", ex14::signed_cos, "signed cosine"),
         ("1/d", ex14::inv_distance, "1/d², once"),
-        ("no 1/d²", ex14::no_inv_distance2, "do not fall off with distance"),
-        ("radiance mode at glass", ex14::radiance_mode, "radiance transport"),
-        ("splats off the film", ex14::off_film, "where the camera sees nothing"),
+        (
+            "no 1/d²",
+            ex14::no_inv_distance2,
+            "do not fall off with distance",
+        ),
+        (
+            "radiance mode at glass",
+            ex14::radiance_mode,
+            "radiance transport",
+        ),
+        (
+            "splats off the film",
+            ex14::off_film,
+            "where the camera sees nothing",
+        ),
         ("roulette without 1/q", ex14::roulette_no_divide, "roulette"),
         ("no light-choice pmf", ex14::no_light_pmf, "probability"),
-        ("β without the cosine at the light", ex14::no_cos_light, "cosine at the light"),
+        (
+            "β without the cosine at the light",
+            ex14::no_cos_light,
+            "cosine at the light",
+        ),
         ("no shadow ray", ex14::no_visibility, "shadow test"),
     ] {
         fails(name, ex14_light_tracing::check(f), keyword);
@@ -478,7 +498,12 @@ fn ex14_false_failures() {
             }
         }
     }
-    assert!(failed.is_empty(), "{} of 60 failed:\n{}", failed.len(), failed.join("\n"));
+    assert!(
+        failed.is_empty(),
+        "{} of 60 failed:\n{}",
+        failed.len(),
+        failed.join("\n")
+    );
 }
 
 #[test]
