@@ -351,6 +351,15 @@ pub fn check_with_seed(f: LightFn, seed: u64) -> Result<(), String> {
             "L_e = 0.1, albedo 0.9, no depth limit, roulette from the first bounce: L = L_e/(1 − ρ)",
         ),
     ];
+    // One light path here first, on this thread: a `todo!()` is reported
+    // with its place (a panic inside the parallel render is not).
+    f(
+        &two_light_furnace(0.5, 0.5)?,
+        &mut Sampler::new(seed, 0, 0),
+        None,
+        1,
+        &mut Vec::new(),
+    );
     for (k, (rho, le, max_depth, rr_depth, exact, what)) in cases.into_iter().enumerate() {
         let furnace = two_light_furnace(rho, le)?;
         let exact = exact as f32;
