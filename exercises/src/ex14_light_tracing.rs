@@ -74,6 +74,8 @@ use raytracer::sampling::Sampler;
 use raytracer::scene::Scene;
 
 /// One light path and its connections to the lens, pushed onto `splats`.
+// A `Vec`, not a slice: you push onto it (clippy cannot know before you do).
+#[allow(clippy::ptr_arg)]
 pub fn trace_light_path(
     scene: &Scene,
     sampler: &mut Sampler,
