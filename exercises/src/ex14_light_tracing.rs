@@ -24,11 +24,12 @@
 //!    normal `n`, the emitted `le` along the ray, the density `pdf_a` of the
 //!    point per unit area and `pdf_w` of the direction per unit solid
 //!    angle). Skip the environment (`Light::is_environment`): it has no light
-//!    paths here. The path's throughput after leaving the light is the
-//!    Monte Carlo weight of everything chosen so far (the slide's `β_1`,
-//!    with the cosine at the light). A point light (`is_delta_position`) has
-//!    no surface: its `n` is zero, its cosine counts as 1, and its `le` is its
-//!    intensity.
+//!    paths here. The path's throughput β as it leaves the light is the
+//!    light's `L_e` weighted as a Monte Carlo estimate of everything chosen
+//!    so far (the slide's "divided by the densities of the choices"); `L_e`
+//!    is radiance, so mind the cosine at the light. A point light
+//!    (`is_delta_position`) has no surface: its `n` is zero, its cosine
+//!    counts as 1, and its `le` is its intensity.
 //! 2. **The light seen directly**: join the light's point `y_0` to the lens
 //!    too, with `L_e` towards the lens (`Scene::emitted_by` with the light's
 //!    `LightChoice::index`) in place of `β f_r`: a pinhole cannot be hit by a
