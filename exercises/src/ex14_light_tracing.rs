@@ -1,45 +1,89 @@
-//! Exercise 14 — light tracing: connecting a light-path vertex to the camera.
+//! Exercise 14 — a light tracer: light paths joined to the camera.
 //!
 //! Slides: "Light tracing" ("Light tracing"), "The connection to the camera"
 //! ("Свързването с камерата").
 //!
-//! Light tracing starts paths at the lights and connects every vertex to
-//! the camera's lens, adding its contribution to whatever pixel it lands on
-//! (a "splat"). The camera's importance `W_e` plays the role that `L_e`
-//! plays for lights; the connection is the slide's `C = β f_r G W_e`.
+//! Light tracing is path tracing run backwards: a path starts on a light,
+//! bounces through the scene by BRDF sampling, and every vertex it makes is
+//! joined to the camera's lens. The contribution of such a connection is the
+//! slide's `C = β f_r G W_e` (divided by the density of the lens point): it
+//! lands on the pixel where the camera sees the vertex, as a *splat*. The
+//! camera's importance `W_e` plays the role `L_e` plays for lights. This is
+//! how the caustic of the `caustic` scene is found — a path tracer would
+//! have to hit a point light after a refraction.
 //!
-//! Task: the splat of the light-path vertex `p` (surface normal `n`),
-//! reached with throughput `beta`, whose BRDF towards a direction `w`
-//! (pointing away from `p`, towards the camera) is `f_r(w)`. The lens point
-//! is chosen by `Camera::sample_wi`, which returns `None` if the camera
-//! cannot see `p` (behind it, or off the film), or else a `CameraSample`:
-//! the raster position `raster`, the unit direction `wi` from `p` towards
-//! the lens point, the importance `we` (`W_e`) of that ray, and `pdf_w`, the
-//! density per unit solid angle at `p` with which that lens point was drawn.
-//! (`wi` is the camera's name for it, as in pbrt: the direction from which
-//! importance arrives at `p`. For the BRDF at `p` it is the slide's `ω_o`,
-//! the way the light leaves towards the lens.)
-//! Return the splat at that raster position whose value is an unbiased
-//! estimate of the vertex's contribution to the image: the slide's `C`
-//! integrated over the lens, estimated with the one lens point drawn. The
-//! vertex's normal may face either way (a light path can reach the back of a
-//! surface). Occlusion is the caller's job.
+//! Task: trace ONE light path and push the splat of every vertex that the
+//! camera sees onto `splats`. Everything you find goes to the film as
+//! splats (the integrator around you returns 0 for the pixel sample); the
+//! film scales a pixel's splats by `W·H / M` (M pixel samples in all), so a
+//! splat's value is the estimate `C` of one path, nothing more.
 //!
-//! Returns `None` exactly when `Camera::sample_wi` does.
+//! 1. **Start on a light**: choose one with `Scene::choose_light` (it gives
+//!    `P(light)`, `LightChoice::pmf`), and emit a ray from it with
+//!    `Light::sample_le` (an `Emission`: the point `p` on the light, its
+//!    normal `n`, the emitted `le` along the ray, the density `pdf_a` of the
+//!    point per unit area and `pdf_w` of the direction per unit solid
+//!    angle). Skip the environment (`Light::is_environment`): it has no light
+//!    paths here. The path's throughput β as it leaves the light is the
+//!    light's `L_e` weighted as a Monte Carlo estimate of everything chosen
+//!    so far (the slide's "divided by the densities of the choices"); `L_e`
+//!    is radiance, so mind the cosine at the light. A point light
+//!    (`is_delta_position`) has no surface: its `n` is zero, its cosine
+//!    counts as 1, and its `le` is its intensity.
+//! 2. **The light seen directly**: join the light's point `y_0` to the lens
+//!    too, with `L_e` towards the lens (`Scene::emitted_by` with the light's
+//!    `LightChoice::index`) in place of `β f_r`: a pinhole cannot be hit by a
+//!    light path, so this is the only way the camera sees an area light.
+//! 3. **At every surface the path hits** (`Scene::intersect`), unless its BRDF
+//!    is a delta (`Brdf::is_delta`: mirror, glass — joining those to the lens
+//!    has zero value), join the vertex to the lens:
+//!    - a lens point: `plug::sample_lens` (a `LensPoint` with its
+//!      density `pdf_a` per unit area of the lens; the lens faces
+//!      `Camera::forward`);
+//!    - where it lands: `Camera::raster_of` (world → raster), `None` where the
+//!      camera cannot see the vertex (behind the lens, outside the film);
+//!    - the importance `W_e`: `Camera::we` of the ray from the lens point
+//!      towards the vertex;
+//!    - the geometry term of the connection, with the cosine at the vertex
+//!      taken with the shading normal `it.frame.n` (a light path may reach a
+//!      surface from behind: what counts is the magnitude);
+//!    - the BRDF in **importance transport**: look at `TransportMode` and
+//!      decide which of your two directions is the slide's `ω_o` and which
+//!      `ω_i` (`Brdf::eval` takes local directions: `it.frame.to_local`);
+//!    - visibility: a shadow ray from the vertex to the lens point
+//!      (`Ray::spawn_to` with a zero normal at the lens, `Scene::unoccluded`);
+//!    - push `Splat { raster, value }`.
+//! 4. **Continue** by sampling the BRDF (`Brdf::sample` — in which
+//!    `TransportMode`?), updating β as in exercise 11; Russian roulette once
+//!    the path has made `rr_depth` bounces (a survival probability q of your
+//!    choice; unbiased). Every path must end.
+//!
+//! Depth, as everywhere in the course: `max_depth` = D is the largest number
+//! of segments of a whole path, lens included (`None`: no limit). The light's
+//! point joined to the lens is a path of 1 segment (D = 1: lights seen
+//! directly); a vertex after k bounces joined to the lens has k + 1. So the
+//! light path keeps at most D vertices, the light's point included.
+//!
+//! Conventions: directions point away from the surface; `it.wo` points back
+//! where the path came from (towards the light). Smooth-shaded meshes would
+//! need Veach's adjoint correction for shading normals; the graded scenes
+//! have none, leave it out. `exercises::plug::StudentLightTracer` renders with
+//! your function (`lesson11 render --student -i light`).
 
-use raytracer::camera::Camera;
 use raytracer::film::Splat;
-use raytracer::math::{Color, Vec2, Vec3A};
+use raytracer::sampling::Sampler;
+use raytracer::scene::Scene;
 
-/// The contribution of a light-path vertex to the film.
-pub fn splat_light_vertex(
-    camera: &Camera,
-    p: Vec3A,
-    n: Vec3A,
-    beta: Color,
-    f_r: &dyn Fn(Vec3A) -> Color,
-    u_lens: Vec2,
-) -> Option<Splat> {
-    // TODO: camera.sample_wi, then the estimate; what does dividing by pdf_w replace?
+/// One light path and its connections to the lens, pushed onto `splats`.
+// A `Vec`, not a slice: you push onto it (clippy cannot know before you do).
+#[allow(clippy::ptr_arg)]
+pub fn trace_light_path(
+    scene: &Scene,
+    sampler: &mut Sampler,
+    max_depth: Option<u32>,
+    rr_depth: u32,
+    splats: &mut Vec<Splat>,
+) {
+    // TODO: start on a light, join every vertex to the lens (a splat), continue by BRDF sampling.
     todo!()
 }

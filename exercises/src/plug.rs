@@ -4,13 +4,16 @@
 
 use raytracer::camera::{Camera, CameraParams};
 use raytracer::film::{Image, Splat};
-use raytracer::integrator::{DirectStrategy, Integrator, NaiveRecursive, PathTracer, camera_ray};
-use raytracer::math::{Color, Ray, UVec2};
+use raytracer::integrator::{
+    DirectStrategy, Integrator, LightTracer, NaiveRecursive, PathTracer, camera_ray,
+};
+use raytracer::math::{Color, Ray, UVec2, Vec2, Vec3A};
 use raytracer::sampling::Sampler;
 use raytracer::scene::{Interaction, Scene};
 
 use crate::{
     ex01_stereo_eyes, ex02_anaglyph, ex10_naive_recursive, ex11_path_tracing, ex12_nee, ex13_mis,
+    ex14_light_tracing,
 };
 
 /// The two cameras of a stereo pair ("parallel" method): each eye from
@@ -153,6 +156,73 @@ impl Integrator for StudentDirect {
     }
 }
 
+/// A point on the camera's lens, where light tracing joins a light-path
+/// vertex to the camera (exercise 14).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LensPoint {
+    /// The point, in world space.
+    pub p: Vec3A,
+    /// Its density per unit area of the lens. A pinhole is a single point,
+    /// taken as a lens of area 1 (density 1), as [`Camera::we`] counts it.
+    pub pdf_a: f32,
+}
+
+/// A lens point chosen by `u_lens`, uniformly on the lens disk of a thin-lens
+/// camera (the centre of a pinhole). The lens faces along `Camera::forward`.
+pub fn sample_lens(camera: &Camera, u_lens: Vec2) -> LensPoint {
+    // The lens point of any primary ray drawn with u_lens: the one through
+    // the film's centre.
+    let centre = Vec2::new(camera.width as f32, camera.height as f32) * 0.5;
+    let ray = camera.generate_ray(centre, u_lens);
+    LensPoint {
+        p: ray.o,
+        pdf_a: camera.pdf_we(&ray).pdf_a,
+    }
+}
+
+/// The signature of exercise 14's `trace_light_path`.
+pub type LightPathFn = fn(&Scene, &mut Sampler, Option<u32>, u32, &mut Vec<Splat>);
+
+/// The light tracer around a `trace_light_path` (exercise 14; the student's
+/// with [`StudentLightTracer::new`]): every pixel sample traces one light
+/// path and returns 0 — everything it finds, the lights seen directly
+/// included, reaches the film as splats, which the film scales by `W·H/M`
+/// (M pixel samples in all), as for the renderer's `LightTracer`.
+#[derive(Clone, Copy, Debug)]
+pub struct StudentLightTracer {
+    pub trace_light_path: LightPathFn,
+    pub max_depth: Option<u32>,
+    pub rr_depth: u32,
+}
+
+impl StudentLightTracer {
+    /// The student's light tracer.
+    pub fn new(max_depth: Option<u32>, rr_depth: u32) -> Self {
+        StudentLightTracer {
+            trace_light_path: ex14_light_tracing::trace_light_path,
+            max_depth,
+            rr_depth,
+        }
+    }
+}
+
+impl Integrator for StudentLightTracer {
+    fn name(&self) -> &'static str {
+        "student-light"
+    }
+
+    fn sample(
+        &self,
+        scene: &Scene,
+        _: UVec2,
+        sampler: &mut Sampler,
+        splats: &mut Vec<Splat>,
+    ) -> Color {
+        (self.trace_light_path)(scene, sampler, self.max_depth, self.rr_depth, splats);
+        Color::ZERO
+    }
+}
+
 /// What `lesson11 render --student` renders: one of the exercises that are
 /// whole integrators, with the renderer's integrator that computes the same
 /// estimator beside it, so that the two pictures compare like with like
@@ -178,6 +248,11 @@ pub enum StudentRender {
         max_depth: Option<u32>,
         rr_depth: u32,
     },
+    /// Exercise 14: light tracing.
+    Light {
+        max_depth: Option<u32>,
+        rr_depth: u32,
+    },
 }
 
 impl StudentRender {
@@ -188,6 +263,7 @@ impl StudentRender {
             StudentRender::Path { .. } => "ex11_path_tracing",
             StudentRender::Direct | StudentRender::PathNee { .. } => "ex12_nee",
             StudentRender::PathMis { .. } => "ex13_mis",
+            StudentRender::Light { .. } => "ex14_light_tracing",
         }
     }
 
@@ -222,6 +298,10 @@ impl StudentRender {
                 max_depth,
                 rr_depth,
             }),
+            StudentRender::Light {
+                max_depth,
+                rr_depth,
+            } => Box::new(StudentLightTracer::new(max_depth, rr_depth)),
         }
     }
 
@@ -261,6 +341,13 @@ impl StudentRender {
                 rr_depth,
                 strategy: DirectStrategy::Mis,
             }),
+            StudentRender::Light {
+                max_depth,
+                rr_depth,
+            } => Box::new(LightTracer {
+                max_depth,
+                rr_depth,
+            }),
         }
     }
 
@@ -281,6 +368,9 @@ impl StudentRender {
             }
             StudentRender::PathMis { .. } => {
                 "the renderer's path tracer with light and BRDF sampling under the power heuristic (`--integrator path`), the estimator exercise 13 asks for: the same noise is expected"
+            }
+            StudentRender::Light { .. } => {
+                "the renderer's light tracer (`--integrator light`) with the same max depth and roulette depth: the same estimator, so the same noise is expected. Both leave dark what the camera sees only through a mirror or glass (and the environment)"
             }
         }
     }

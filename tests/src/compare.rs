@@ -10,7 +10,7 @@
 use raytracer::film::Image;
 use std::path::{Path, PathBuf};
 
-use raytracer::integrator::{DirectStrategy, Integrator, PathTracer};
+use raytracer::integrator::{DirectStrategy, Integrator, LightTracer, PathTracer};
 use raytracer::metrics::{z_test, z_threshold};
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
@@ -100,6 +100,24 @@ pub const EX12_CORNELL: Comparison = Comparison {
         })
     },
 };
+/// Exercise 14: the student's light tracer on `caustic` against the
+/// renderer's light tracer (the same estimator; the caustic on the floor is
+/// found only by light paths). 16-pixel tiles at 64 spp (65 536 light paths):
+/// see `tests/tests/fixtures/ex14.rs` for the false-failure rate measured
+/// over seeds.
+pub const EX14_CAUSTIC: Comparison = Comparison {
+    name: "ex14_caustic",
+    scene: "caustic",
+    size: 32,
+    tile: 16,
+    spp: 64,
+    reference: || {
+        Box::new(LightTracer {
+            max_depth: crate::ex14_light_tracing::EX14_MAX_DEPTH,
+            rr_depth: crate::ex14_light_tracing::EX14_RR_DEPTH,
+        })
+    },
+};
 
 /// Exercise 13: the MIS path tracer in the Cornell box (the reference is the
 /// renderer's path tracer with the same estimator).
@@ -129,12 +147,13 @@ pub const EX13_VEACH: Comparison = Comparison {
 };
 
 /// Every comparison with a stored reference (`lesson11 references` renders them).
-pub const COMPARISONS: [&Comparison; 5] = [
+pub const COMPARISONS: &[&Comparison] = &[
     &EX11_CORNELL,
     &EX12_CORNELL_DIRECT,
     &EX12_CORNELL,
     &EX13_CORNELL,
     &EX13_VEACH,
+    &EX14_CAUSTIC,
 ];
 
 pub fn options(spp: u32, seed: u64, progress: bool, label: &str) -> RenderOptions {

@@ -14,7 +14,8 @@
 //!    formula, the density of photons spread uniformly), z-tests that use the
 //!    student's own variance (exercises 9–16);
 //! 3. whole integrators: the Cornell box tile by tile against the renderer
-//!    ([`compare`]; exercises 11, 12).
+//!    ([`compare`]; exercises 11, 12), and the `caustic` scene against its
+//!    light tracer (exercise 14).
 //!
 //! Every grading function takes the student's functions as parameters
 //! (`exNN::check(f) -> Result<(), String>`), so the grader's self-test can
@@ -115,7 +116,7 @@ pub const GRADERS: &[(&str, Check)] = &[
         ex13_mis::check(ex::ex13_mis::path_radiance_mis)
     }),
     ("ex14_light_tracing", || {
-        ex14_light_tracing::check(ex::ex14_light_tracing::splat_light_vertex)
+        ex14_light_tracing::check(ex::ex14_light_tracing::trace_light_path)
     }),
     ("ex15_bdpt_connection", || {
         ex15_bdpt_connection::check(

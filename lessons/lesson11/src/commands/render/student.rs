@@ -11,8 +11,8 @@ use crate::integrators::{IntegratorArgs, IntegratorKind};
 use crate::options::SceneArgs;
 use crate::render_files::render_to_files;
 
-/// The student's integrator (exercise 10, 11, 12 or 13, by `--integrator`:
-/// naive, path-brdf, direct or path-nee, path)
+/// The student's integrator (exercise 10, 11, 12, 13 or 14, by `--integrator`:
+/// naive, path-brdf, direct or path-nee, path, light)
 /// beside the renderer's integrator with the same estimator, and their tile
 /// z-test.
 pub fn run(
@@ -45,8 +45,11 @@ pub fn run(
             branching: ia.branching()[0],
         },
         IntegratorKind::Direct => StudentRender::Direct,
+        IntegratorKind::Light => StudentRender::Light {
+            max_depth,
+            rr_depth,
+        },
         IntegratorKind::Ao
-        | IntegratorKind::Light
         | IntegratorKind::Bdpt
         | IntegratorKind::Mlt
         | IntegratorKind::Photon
@@ -54,9 +57,9 @@ pub fn run(
         | IntegratorKind::Vpl
         | IntegratorKind::IrradianceCache => bail!(
             "--student renders the exercises that are whole integrators: use --integrator naive (exercise 10), \
-             path-brdf (11), direct or path-nee (12) or path (13) \
-             (light tracing, bidirectional tracing and Metropolis light transport are graded piece by piece: \
-             exercises 14, 15 and 16; photon mapping and instant radiosity: 17 and 18)"
+             path-brdf (11), direct or path-nee (12), path (13) or light (14) \
+             (bidirectional tracing and Metropolis light transport are graded piece by piece: \
+             exercises 15 and 16; photon mapping and instant radiosity: 17 and 18)"
         ),
     };
     let exercise = which.exercise();
