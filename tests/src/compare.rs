@@ -10,7 +10,7 @@
 use raytracer::film::Image;
 use std::path::{Path, PathBuf};
 
-use raytracer::integrator::{DirectStrategy, Integrator, PathTracer};
+use raytracer::integrator::{Bdpt, DirectStrategy, Integrator, PathTracer};
 use raytracer::metrics::{z_test, z_threshold};
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
@@ -81,8 +81,26 @@ pub const EX12_CORNELL_DIRECT: Comparison = Comparison {
     },
 };
 
+/// Exercise 15: bidirectional path tracing at max depth 4 against the
+/// renderer's BDPT (the same expected value; the renderer's `s = 1` takes a
+/// fresh light sample where the student's joins `y_0`).
+pub const EX15_CORNELL: Comparison = Comparison {
+    name: "ex15_cornell",
+    scene: "cornell",
+    size: 32,
+    tile: 8,
+    spp: 16,
+    reference: || {
+        Box::new(Bdpt {
+            max_depth: Some(4),
+            rr_depth: 3,
+            strategy_images: None,
+        })
+    },
+};
+
 /// Every comparison with a stored reference (`lesson11 references` renders them).
-pub const COMPARISONS: [&Comparison; 2] = [&EX11_CORNELL, &EX12_CORNELL_DIRECT];
+pub const COMPARISONS: [&Comparison; 3] = [&EX11_CORNELL, &EX12_CORNELL_DIRECT, &EX15_CORNELL];
 
 fn options(spp: u32, seed: u64, progress: bool, label: &str) -> RenderOptions {
     RenderOptions {

@@ -40,7 +40,7 @@ pub mod ex11_path_tracing;
 pub mod ex12_nee;
 pub mod ex13_mis;
 pub mod ex14_light_tracing;
-pub mod ex15_bdpt_connection;
+pub mod ex15_bdpt;
 pub mod ex16_metropolis_step;
 pub mod ex17_photon_density;
 pub mod ex18_vpl_contribution;
@@ -114,10 +114,11 @@ pub const GRADERS: &[(&str, Check)] = &[
     ("ex14_light_tracing", || {
         ex14_light_tracing::check(ex::ex14_light_tracing::splat_light_vertex)
     }),
-    ("ex15_bdpt_connection", || {
-        ex15_bdpt_connection::check(
-            ex::ex15_bdpt_connection::geometry_term,
-            ex::ex15_bdpt_connection::bdpt_mis_weight,
+    ("ex15_bdpt", || {
+        ex15_bdpt::check(
+            ex::ex15_bdpt::geometry_term,
+            ex::ex15_bdpt::connect,
+            ex::ex15_bdpt::mis_weight,
         )
     }),
     ("ex16_metropolis_step", || {

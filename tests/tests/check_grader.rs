@@ -452,37 +452,8 @@ fn ex14_light_tracing() {
 }
 
 #[test]
-fn ex15_bdpt_connection() {
-    let (g, w) = (correct::geometry_term, correct::power_many_f64);
-    passes(
-        "|d·n| products over r⁴, f64 weights",
-        ex15_bdpt_connection::check(g, w),
-    );
-    fails(
-        "signed cosines",
-        ex15_bdpt_connection::check(wrong::g_signed, w),
-        "absolute",
-    );
-    fails(
-        "distance not squared",
-        ex15_bdpt_connection::check(wrong::g_not_squared, w),
-        "SQUARED",
-    );
-    fails(
-        "one cosine",
-        ex15_bdpt_connection::check(wrong::g_one_cosine, w),
-        "the cosine at y is missing",
-    );
-    fails(
-        "balance heuristic",
-        ex15_bdpt_connection::check(g, wrong::balance_many),
-        "balance heuristic",
-    );
-    fails(
-        "weights by the max",
-        ex15_bdpt_connection::check(g, wrong::weights_by_max),
-        "sum of the squares",
-    );
+fn ex15_bdpt() {
+    fixtures::ex15::check();
 }
 
 #[test]

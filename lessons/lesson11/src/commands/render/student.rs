@@ -11,7 +11,7 @@ use crate::integrators::{IntegratorArgs, IntegratorKind};
 use crate::options::SceneArgs;
 use crate::render_files::render_to_files;
 
-/// The student's integrator (exercise 10, 11 or 12, by `--integrator`)
+/// The student's integrator (exercise 10, 11, 12 or 15, by `--integrator`)
 /// beside the renderer's integrator with the same estimator, and their tile
 /// z-test.
 pub fn run(
@@ -36,17 +36,20 @@ pub fn run(
             branching: ia.branching()[0],
         },
         IntegratorKind::Direct | IntegratorKind::PathNee => StudentRender::Direct,
+        IntegratorKind::Bdpt => StudentRender::Bdpt {
+            max_depth,
+            rr_depth,
+        },
         IntegratorKind::Ao
         | IntegratorKind::Light
-        | IntegratorKind::Bdpt
         | IntegratorKind::Mlt
         | IntegratorKind::Photon
         | IntegratorKind::Sppm
         | IntegratorKind::Vpl
         | IntegratorKind::IrradianceCache => bail!(
-            "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
-             (light tracing, bidirectional tracing and Metropolis light transport are graded piece by piece: \
-             exercises 14, 15 and 16; photon mapping and instant radiosity: 17 and 18)"
+            "--student renders the exercises that are whole integrators: use --integrator path, naive, direct or bdpt \
+             (light tracing and Metropolis light transport are graded piece by piece: \
+             exercises 14 and 16; photon mapping and instant radiosity: 17 and 18)"
         ),
     };
     let exercise = which.exercise();
