@@ -85,8 +85,8 @@
 //!
 //! Impossible strategies have density 0 and count for nothing: one whose
 //! edge would end at a vertex with a delta BRDF (mirror), or `s' = 0` ending
-//! on a point light (no ray hits it). If `(s, t)` itself is impossible,
-//! return 0. A delta's own density is the same delta in every strategy that
+//! on a point light (no ray hits it). If the edge of `(s, t)` itself ends
+//! at a vertex with a delta BRDF, return 0. A delta's own density is the same delta in every strategy that
 //! can make the path, so it does not change the weights (it is stored as 0).
 //! The weights of the possible strategies of one path sum to 1.
 //!

@@ -89,7 +89,7 @@ pub const EX15_CORNELL: Comparison = Comparison {
     scene: "cornell",
     size: 32,
     tile: 8,
-    spp: 16,
+    spp: 32,
     reference: || {
         Box::new(Bdpt {
             max_depth: Some(4),

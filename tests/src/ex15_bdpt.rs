@@ -348,6 +348,11 @@ struct Case {
     st: [usize; 2],
 }
 
+/// A colour in scientific notation (connections span many magnitudes).
+fn sci(c: Color) -> String {
+    format!("({:.4e}, {:.4e}, {:.4e})", c.x, c.y, c.z)
+}
+
 fn same_color(a: Color, b: Color) -> bool {
     (a - b).abs().cmple(Color::splat(1e-3) * b.abs().max(Color::splat(1e-6))).all()
         || (a - b).abs().max_element() <= 1e-6
@@ -467,8 +472,8 @@ fn check_connect(scene: &Scene, connect: ConnectFn) -> Result<(), String> {
         c.st[1],
         c.camera.len(),
         c.light.len(),
-        fmt3(got[k].0),
-        fmt3(e.0)
+        sci(got[k].0),
+        sci(e.0)
     ))
 }
 
@@ -766,7 +771,9 @@ fn check_weights(scene: &Scene, weight: BdptWeightFn) -> Result<(), String> {
     }
     let mut cases = Vec::new();
     for (k, p) in paths.iter().enumerate() {
-        for s in 0..p.n() {
+        // Not s = 0 on a point light: no camera path ends there, and
+        // bidirectional tracing never asks.
+        for s in (0..p.n()).filter(|&s| s > 0 || !p.point_light) {
             cases.push(WeightCase { path: k, s });
         }
     }
