@@ -117,7 +117,7 @@ pub fn mis_weight(
     if s == 0 && z[t - 1].light == NO_LIGHT {
         return 0.0;
     }
-    if (s > 0 && !z[t - 1].is_connectible(scene)) || (s > 0 && !y[s - 1].is_connectible(scene)) {
+    if s > 0 && !(z[t - 1].is_connectible(scene) && y[s - 1].is_connectible(scene)) {
         return 0.0;
     }
     // The edge's ends are joined deterministically: not deltas here.

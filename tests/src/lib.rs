@@ -24,6 +24,7 @@
 //! Fixed seeds everywhere: a given solution passes or fails deterministically;
 //! each tolerance states the probability that a correct solution fails it.
 
+pub mod bdpt_paths;
 pub mod compare;
 pub mod cone;
 pub mod ex01_stereo_eyes;
