@@ -693,7 +693,11 @@ fn render_student_puts_the_same_estimator_beside() {
         max_depth: Some(5),
         rr_depth: 3,
     };
-    for which in [path, StudentRender::Direct] {
+    let bdpt = StudentRender::Bdpt {
+        max_depth: Some(4),
+        rr_depth: 3,
+    };
+    for which in [path, StudentRender::Direct, bdpt] {
         let (a, b) = (
             noise(which.student().as_ref(), 3),
             noise(which.reference().as_ref(), 4),
