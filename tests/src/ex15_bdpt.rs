@@ -54,7 +54,9 @@ pub fn check(geometry: GeometryFn, connect: ConnectFn, weight: BdptWeightFn) -> 
         rr_depth: 3,
     };
     compare(&EX15_CORNELL, &student).map_err(|e| {
-        format!("{e} — your connections and weights passed the exact checks of the test scene, so look for what only the Cornell box has (a vertex's cosine with the shading normal, the lens point of t = 1)")
+        format!(
+            "{e} — your connect and mis_weight agreed with the grader's on every path of the test scene, so the difference lies in how they work together over whole subpaths of the Cornell box (a state kept between calls, or a case those paths did not reach)"
+        )
     })
 }
 
