@@ -166,6 +166,7 @@ enum Way {
     NoVisibility,
     NoBetaLight,
     LensNoCosine,
+    PointLightDark,
 }
 
 /// The cosine a vertex uses, signed (with the normal it stores).
@@ -217,7 +218,7 @@ fn expected_connect(
         return (value, Some(cs.raster));
     }
     let z = &camera[t - 1];
-    if !z.is_connectible(scene) {
+    if !z.is_connectible(scene) || (way == Way::PointLightDark && !y.is_on_surface()) {
         return none;
     }
     let d = z.p() - y.p();
@@ -309,6 +310,7 @@ fn check_connect(scene: &Scene, connect: ConnectFn) -> Result<(), String> {
     };
     let values: Vec<Color> = got.iter().map(|g| g.0).collect();
     let model = |way: Way| move |c: &Case| want(c, way).0;
+    let m9 = model(Way::PointLightDark);
     let (m1, m2, m3, m4, m5, m6, m7, m8) = (
         model(Way::SignedCosines),
         model(Way::RNotSquared),
@@ -319,7 +321,7 @@ fn check_connect(scene: &Scene, connect: ConnectFn) -> Result<(), String> {
         model(Way::NoBetaLight),
         model(Way::LensNoCosine),
     );
-    let mistakes: [Mistake<Case, Color>; 8] = [
+    let mistakes: [Mistake<Case, Color>; 9] = [
         (
             "signed cosines: some of your contributions are negative where a vertex's normal faces away from the edge (the back wall of the test scene); light arrives from either side, only the cosines' magnitudes count",
             &m1,
@@ -351,6 +353,10 @@ fn check_connect(scene: &Scene, connect: ConnectFn) -> Result<(), String> {
         (
             "t = 1: the cosine at the light vertex is missing (Camera::sample_wi's density per unit solid angle holds the lens's cosine, not the vertex's)",
             &m8,
+        ),
+        (
+            "your connections from the point light to z_{t−1} are all zero: a point light has no surface, so there is no cosine at its end of the edge (a zero normal makes one zero)",
+            &m9,
         ),
     ];
     let why = recognise(&cases, &values, &mistakes, same_color).unwrap_or_else(|| {
