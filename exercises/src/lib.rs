@@ -66,8 +66,8 @@ pub mod ex13_mis;
 #[cfg_attr(feature = "solutions", path = "../solutions/ex14_light_tracing.rs")]
 pub mod ex14_light_tracing;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex15_bdpt_connection.rs")]
-pub mod ex15_bdpt_connection;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex15_bdpt.rs")]
+pub mod ex15_bdpt;
 #[allow(unused_variables)]
 #[cfg_attr(feature = "solutions", path = "../solutions/ex16_metropolis_step.rs")]
 pub mod ex16_metropolis_step;
@@ -94,7 +94,7 @@ pub const MODULES: &[&str] = &[
     "ex12_nee",
     "ex13_mis",
     "ex14_light_tracing",
-    "ex15_bdpt_connection",
+    "ex15_bdpt",
     "ex16_metropolis_step",
     "ex17_photon_density",
     "ex18_vpl_contribution",

@@ -4,8 +4,10 @@
 
 use raytracer::camera::{Camera, CameraParams};
 use raytracer::film::{Image, Splat};
+use raytracer::integrator::subpath::{camera_subpath, light_subpath};
+use raytracer::integrator::vertex::{Vertex, path_vertices, with_subpaths};
 use raytracer::integrator::{
-    DirectStrategy, Integrator, LightTracer, NaiveRecursive, PathTracer, camera_ray,
+    Bdpt, DirectStrategy, Integrator, LightTracer, NaiveRecursive, PathTracer, camera_ray,
 };
 use raytracer::math::{Color, Ray, UVec2, Vec2, Vec3A};
 use raytracer::sampling::Sampler;
@@ -13,7 +15,7 @@ use raytracer::scene::{Interaction, Scene};
 
 use crate::{
     ex01_stereo_eyes, ex02_anaglyph, ex10_naive_recursive, ex11_path_tracing, ex12_nee, ex13_mis,
-    ex14_light_tracing,
+    ex14_light_tracing, ex15_bdpt,
 };
 
 /// The two cameras of a stereo pair ("parallel" method): each eye from
@@ -223,6 +225,103 @@ impl Integrator for StudentLightTracer {
     }
 }
 
+/// What exercise 15's `connect` returns: the unweighted contribution of one
+/// strategy `(s, t)` and, for `t = 1`, where it lands.
+#[derive(Clone, Copy, Debug)]
+pub struct BdptConnection {
+    /// The strategy's unweighted contribution `C_{s,t}` (radiance: a pixel
+    /// value before the MIS weight).
+    pub value: Color,
+    /// `t = 1` only: the raster position where the light vertex is seen; the
+    /// contribution is splatted there instead of being added to the pixel
+    /// that made the sample. `None` for `t ≥ 2`.
+    pub raster: Option<Vec2>,
+    /// `t = 1` only: the lens point the connection used (built by
+    /// `Vertex::camera`); it takes the place of the camera subpath's `z_0` in
+    /// the MIS weight. `None` for `t ≥ 2`.
+    pub lens: Option<Vertex>,
+}
+
+/// The signature of exercise 15's `connect`: scene, light subpath, camera
+/// subpath, `s`, `t`, sampler.
+pub type ConnectFn =
+    fn(&Scene, &[Vertex], &[Vertex], usize, usize, &mut Sampler) -> Option<BdptConnection>;
+
+/// The signature of exercise 15's `mis_weight`: scene, light subpath, camera
+/// subpath, `s`, `t`, the lens point of a `t = 1` connection.
+pub type BdptWeightFn = fn(&Scene, &[Vertex], &[Vertex], usize, usize, Option<Vertex>) -> f32;
+
+/// Bidirectional path tracing around a `connect` and a `mis_weight`
+/// (exercise 15; the student's with [`StudentBdpt::new`]): the library grows
+/// the camera subpath (up to `D + 1` vertices) and the light subpath (up to
+/// `D`), the student's code joins every prefix pair `(s, t)` with
+/// `s + t ≤ D + 1` and weights it. A camera subpath that escapes adds the
+/// environment with weight 1 (no other strategy makes such paths). Unlike the
+/// renderer's [`Bdpt`], `s = 1` joins the light subpath's own `y_0` instead of
+/// a fresh light sample: the same expected value.
+#[derive(Clone, Copy, Debug)]
+pub struct StudentBdpt {
+    pub connect: ConnectFn,
+    pub weight: BdptWeightFn,
+    pub max_depth: Option<u32>,
+    pub rr_depth: u32,
+}
+
+impl StudentBdpt {
+    /// The student's bidirectional path tracer.
+    pub fn new(max_depth: Option<u32>, rr_depth: u32) -> Self {
+        StudentBdpt {
+            connect: ex15_bdpt::connect,
+            weight: ex15_bdpt::mis_weight,
+            max_depth,
+            rr_depth,
+        }
+    }
+}
+
+impl Integrator for StudentBdpt {
+    fn name(&self) -> &'static str {
+        "student-bdpt"
+    }
+
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        splats: &mut Vec<Splat>,
+    ) -> Color {
+        let max_vertices = path_vertices(self.max_depth);
+        with_subpaths(|camera, light| {
+            let escaped =
+                camera_subpath(scene, pixel, sampler, camera, max_vertices, self.rr_depth);
+            light_subpath(scene, sampler, light, max_vertices - 1, self.rr_depth);
+            let mut l = Color::ZERO;
+            if let Some(e) = escaped
+                && camera.len() < max_vertices
+            {
+                l += e.beta * scene.escaped_radiance(e.d);
+            }
+            for t in 1..=camera.len() {
+                for s in 0..=light.len() {
+                    if s + t < 2 || s + t > max_vertices {
+                        continue;
+                    }
+                    let Some(c) = (self.connect)(scene, light, camera, s, t, sampler) else {
+                        continue;
+                    };
+                    let value = c.value * (self.weight)(scene, light, camera, s, t, c.lens);
+                    match c.raster {
+                        Some(raster) => splats.push(Splat { raster, value }),
+                        None => l += value,
+                    }
+                }
+            }
+            l
+        })
+    }
+}
+
 /// What `lesson11 render --student` renders: one of the exercises that are
 /// whole integrators, with the renderer's integrator that computes the same
 /// estimator beside it, so that the two pictures compare like with like
@@ -253,6 +352,11 @@ pub enum StudentRender {
         max_depth: Option<u32>,
         rr_depth: u32,
     },
+    /// Exercise 15: bidirectional path tracing, every strategy under MIS.
+    Bdpt {
+        max_depth: Option<u32>,
+        rr_depth: u32,
+    },
 }
 
 impl StudentRender {
@@ -264,6 +368,7 @@ impl StudentRender {
             StudentRender::Direct | StudentRender::PathNee { .. } => "ex12_nee",
             StudentRender::PathMis { .. } => "ex13_mis",
             StudentRender::Light { .. } => "ex14_light_tracing",
+            StudentRender::Bdpt { .. } => "ex15_bdpt",
         }
     }
 
@@ -302,6 +407,10 @@ impl StudentRender {
                 max_depth,
                 rr_depth,
             } => Box::new(StudentLightTracer::new(max_depth, rr_depth)),
+            StudentRender::Bdpt {
+                max_depth,
+                rr_depth,
+            } => Box::new(StudentBdpt::new(max_depth, rr_depth)),
         }
     }
 
@@ -348,6 +457,14 @@ impl StudentRender {
                 max_depth,
                 rr_depth,
             }),
+            StudentRender::Bdpt {
+                max_depth,
+                rr_depth,
+            } => Box::new(Bdpt {
+                max_depth,
+                rr_depth,
+                strategy_images: None,
+            }),
         }
     }
 
@@ -371,6 +488,9 @@ impl StudentRender {
             }
             StudentRender::Light { .. } => {
                 "the renderer's light tracer (`--integrator light`) with the same max depth and roulette depth: the same estimator, so the same noise is expected. Both leave dark what the camera sees only through a mirror or glass (and the environment)"
+            }
+            StudentRender::Bdpt { .. } => {
+                "the renderer's bidirectional path tracer with the same max depth and roulette; its s = 1 strategy takes a fresh light sample where yours joins the light subpath's first vertex: the same mean, nearly the same noise"
             }
         }
     }

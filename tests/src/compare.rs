@@ -10,7 +10,7 @@
 use raytracer::film::Image;
 use std::path::{Path, PathBuf};
 
-use raytracer::integrator::{DirectStrategy, Integrator, LightTracer, PathTracer};
+use raytracer::integrator::{Bdpt, DirectStrategy, Integrator, LightTracer, PathTracer};
 use raytracer::metrics::{z_test, z_threshold};
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
@@ -119,6 +119,24 @@ pub const EX14_CAUSTIC: Comparison = Comparison {
     },
 };
 
+/// Exercise 15: bidirectional path tracing at max depth 4 against the
+/// renderer's BDPT (the same expected value; the renderer's `s = 1` takes a
+/// fresh light sample where the student's joins `y_0`).
+pub const EX15_CORNELL: Comparison = Comparison {
+    name: "ex15_cornell",
+    scene: "cornell",
+    size: 32,
+    tile: 8,
+    spp: 32,
+    reference: || {
+        Box::new(Bdpt {
+            max_depth: Some(4),
+            rr_depth: 3,
+            strategy_images: None,
+        })
+    },
+};
+
 /// Exercise 13: the MIS path tracer in the Cornell box (the reference is the
 /// renderer's path tracer with the same estimator).
 pub const EX13_CORNELL: Comparison = Comparison {
@@ -154,6 +172,7 @@ pub const COMPARISONS: &[&Comparison] = &[
     &EX13_CORNELL,
     &EX13_VEACH,
     &EX14_CAUSTIC,
+    &EX15_CORNELL,
 ];
 
 pub fn options(spp: u32, seed: u64, progress: bool, label: &str) -> RenderOptions {

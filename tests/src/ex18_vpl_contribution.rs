@@ -8,7 +8,7 @@
 
 use raytracer::math::{Color, Vec3A};
 
-use crate::ex15_bdpt_connection::expected_g;
+use crate::ex15_bdpt::expected_g;
 use crate::stats::{Mistake, fmt3, recognise};
 
 /// The signature of exercise 18.

@@ -14,8 +14,9 @@
 //!    formula, the density of photons spread uniformly), z-tests that use the
 //!    student's own variance (exercises 9–16);
 //! 3. whole integrators: the Cornell box tile by tile against the renderer
-//!    ([`compare`]; exercises 11, 12), and the `caustic` scene against its
-//!    light tracer (exercise 14).
+//!    ([`compare`]; exercises 11, 12, 15: the renderer's path tracer or
+//!    bidirectional path tracer renders the reference), and the `caustic`
+//!    scene against its light tracer (exercise 14).
 //!
 //! Every grading function takes the student's functions as parameters
 //! (`exNN::check(f) -> Result<(), String>`), so the grader's self-test can
@@ -25,6 +26,7 @@
 //! Fixed seeds everywhere: a given solution passes or fails deterministically;
 //! each tolerance states the probability that a correct solution fails it.
 
+pub mod bdpt_paths;
 pub mod compare;
 pub mod cone;
 pub mod ex01_stereo_eyes;
@@ -41,7 +43,7 @@ pub mod ex11_path_tracing;
 pub mod ex12_nee;
 pub mod ex13_mis;
 pub mod ex14_light_tracing;
-pub mod ex15_bdpt_connection;
+pub mod ex15_bdpt;
 pub mod ex16_metropolis_step;
 pub mod ex17_photon_density;
 pub mod ex18_vpl_contribution;
@@ -118,10 +120,11 @@ pub const GRADERS: &[(&str, Check)] = &[
     ("ex14_light_tracing", || {
         ex14_light_tracing::check(ex::ex14_light_tracing::trace_light_path)
     }),
-    ("ex15_bdpt_connection", || {
-        ex15_bdpt_connection::check(
-            ex::ex15_bdpt_connection::geometry_term,
-            ex::ex15_bdpt_connection::bdpt_mis_weight,
+    ("ex15_bdpt", || {
+        ex15_bdpt::check(
+            ex::ex15_bdpt::geometry_term,
+            ex::ex15_bdpt::connect,
+            ex::ex15_bdpt::mis_weight,
         )
     }),
     ("ex16_metropolis_step", || {

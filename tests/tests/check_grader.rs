@@ -677,37 +677,8 @@ fn ex14_false_failures() {
 }
 
 #[test]
-fn ex15_bdpt_connection() {
-    let (g, w) = (correct::geometry_term, correct::power_many_f64);
-    passes(
-        "|d·n| products over r⁴, f64 weights",
-        ex15_bdpt_connection::check(g, w),
-    );
-    fails(
-        "signed cosines",
-        ex15_bdpt_connection::check(wrong::g_signed, w),
-        "absolute",
-    );
-    fails(
-        "distance not squared",
-        ex15_bdpt_connection::check(wrong::g_not_squared, w),
-        "SQUARED",
-    );
-    fails(
-        "one cosine",
-        ex15_bdpt_connection::check(wrong::g_one_cosine, w),
-        "the cosine at y is missing",
-    );
-    fails(
-        "balance heuristic",
-        ex15_bdpt_connection::check(g, wrong::balance_many),
-        "balance heuristic",
-    );
-    fails(
-        "weights by the max",
-        ex15_bdpt_connection::check(g, wrong::weights_by_max),
-        "sum of the squares",
-    );
+fn ex15_bdpt() {
+    fixtures::ex15::check();
 }
 
 #[test]
@@ -981,7 +952,11 @@ fn render_student_puts_the_same_estimator_beside() {
         max_depth: Some(5),
         rr_depth: 3,
     };
-    for which in [path, StudentRender::Direct, nee, mis_student] {
+    let bdpt = StudentRender::Bdpt {
+        max_depth: Some(4),
+        rr_depth: 3,
+    };
+    for which in [path, StudentRender::Direct, nee, mis_student, bdpt] {
         let (a, b) = (
             noise(which.student().as_ref(), 3),
             noise(which.reference().as_ref(), 4),

@@ -5,23 +5,23 @@
 //! joins every prefix pair: the strategy `(s, t)` uses `s` light and `t`
 //! camera vertices and forms the path `y_0 … y_{s−1} z_{t−1} … z_0`:
 //!
-//! - `s = 0`: the camera subpath itself hits a light, `C = β_z · L_e`
-//!   (what a path tracer without next event estimation does);
+//! - `s = 0`: the camera subpath itself hits a light (what a path tracer
+//!   without next event estimation does);
 //! - `s = 1`: next event estimation — the light vertex is *resampled* from
 //!   `z_{t−1}` by the path tracer's own light sampling
 //!   ([`nee::sample_light_point`]; pbrt does the same: it is a better point
-//!   than `y_0`), `C = β_z f_r |cos θ| L_i / (P(light) p_ω)`;
+//!   than `y_0`);
 //! - `t = 1`: light tracing — `y_{s−1}` joined to a new lens point and
 //!   splatted where it lands ([`connect_to_camera`]);
-//! - otherwise: `C = β_y f_r(y_{s−2} → y_{s−1} → z_{t−1}) G(y_{s−1}, z_{t−1})
-//!   f_r(y_{s−1} → z_{t−1} → z_{t−2}) β_z`, with the geometry term
-//!   `G = V |cos θ_y| |cos θ_z| / d²`.
+//! - otherwise: `y_{s−1}` and `z_{t−1}` joined by a shadow ray; the edge
+//!   brings the scattering at both of its ends and its geometry term.
 //!
-//! Every `C` is weighted by the power heuristic over all strategies that
-//! could have generated the same path ([`mis_weight`]), so the sum
-//! over `(s, t)` is an unbiased estimate that keeps the best of each: NEE for
-//! small lights, light tracing for caustics seen through diffuse surfaces,
-//! hitting for large lights and glossy paths.
+//! Each contribution is unweighted: the path's measurement contribution over
+//! the strategy's density (area measure). Every one is weighted by the power
+//! heuristic over all strategies that could have generated the same path
+//! ([`mis_weight`]), so the sum over `(s, t)` is an unbiased estimate that
+//! keeps the best of each: NEE for small lights, light tracing for caustics
+//! seen through diffuse surfaces, hitting for large lights and glossy paths.
 //!
 //! Depth: paths of at most `D + 1` vertices for Mitsuba's `max_depth = D`, so
 //! `s + t ≤ D + 1`; the camera subpath keeps at most `D + 1` vertices, the
@@ -99,7 +99,7 @@ fn connect(
 ) -> Option<Connection> {
     let pt = &camera[t - 1];
     if s == 0 {
-        // The camera path hit an emitter: C = β_z · L_e(z_{t−1} → z_{t−2}).
+        // The camera path hit an emitter.
         let value = pt.beta * pt.le_towards(scene, &camera[t - 2]);
         return (value != Color::ZERO).then_some(Connection {
             value,
@@ -127,7 +127,6 @@ fn connect(
             // only through escaping camera paths.
             return None;
         }
-        // C = β_z f_r |cos θ_z| L_i / (P(light) p_ω).
         let pdf_light_w = choice.pmf * ls.pdf_w;
         let value = pt.beta * pt.f(scene, ls.wi) * (pt.abs_cos(ls.wi) / pdf_light_w) * ls.li;
         if value == Color::ZERO {
@@ -148,7 +147,7 @@ fn connect(
             sampled: Some(y),
         });
     }
-    // General connection: C = β_y f_y G f_z β_z with G = |cos θ_y| |cos θ_z| / d².
+    // General connection: both ends' scattering and the edge's geometry term.
     let qs = &light[s - 1];
     if !qs.is_connectible(scene) {
         return None;

@@ -4,20 +4,21 @@
 //! produce the same path, and MIS lets each count where it is good.
 //!
 //! **MIS** ([`mis_weight`]): the power heuristic (β = 2, thesis eq. 9.13) over
-//! all strategies that could have produced the same path,
-//! `w_{s,t} = p_s² / Σ_i p_i²` with `p_i` short for `p_{i, s+t−i}`. Only ratios
-//! are needed (thesis, eq. 10.9): moving the connection one vertex along the
-//! path changes a single factor, `p_{i+1}/p_i = p_rev(x_i) / p_fwd(x_i)`, so
-//! `w_{s,t} = 1 / (1 + Σ_{i≠s} (p_i/p_s)²)` is computed from the stored pairs
-//! by running products. This is pbrt-v4's `MISWeight` (with the power
-//! heuristic instead of the balance heuristic); SmallVCM's running `dVCM/dVC`
-//! quantities compute the same sums incrementally.
+//! all strategies that could have produced the same path, each strategy's
+//! density being a product of the path's vertices' area densities, from the
+//! camera side up to its connection and from the light side after it. Only
+//! ratios of these densities are needed (thesis, eq. 10.9), and neighbouring
+//! strategies differ in a single vertex, so the weight is computed from the
+//! densities every vertex stores, in one pass along each subpath. This is
+//! pbrt-v4's `MISWeight` (with the power heuristic instead of the balance
+//! heuristic); SmallVCM's running `dVCM/dVC` quantities compute the same sums
+//! incrementally.
 //!
 //! **Deltas.** A strategy that would connect at a delta vertex (mirror,
-//! glass), or next to it, has density 0 and is skipped in the sum; its zero
-//! pdfs are remapped to 1 so that the running products stay finite. A point
-//! light is a delta in position: no path can hit it, so the strategy `s = 0`
-//! is skipped for it.
+//! glass), or next to it, has density 0 and is left out; the delta's own
+//! density, common to the strategies that remain, cancels. A point light is a
+//! delta in position: no path can hit it, so the strategy `s = 0` is skipped
+//! for it.
 
 use super::vertex::Vertex;
 use crate::scene::Scene;
@@ -29,10 +30,10 @@ use crate::scene::Scene;
 /// the two endpoints and their predecessors, which now depend on the other
 /// subpath — so they are set here and restored afterwards.
 ///
-/// With `r_i = p_i / p_s` built by running products of
-/// `p_rev(x)/p_fwd(x)` (thesis eq. 10.9), the weight is `1 / Σ_i r_i²`
-/// (power heuristic, `r_s = 1`), skipping strategies whose connection would
-/// touch a delta vertex (their density is zero). Every density is the one
+/// The weight is the power heuristic of the strategies' path densities,
+/// computed from their ratios to strategy `s`'s (thesis eq. 10.9), skipping
+/// strategies whose connection would touch a delta vertex (their density is
+/// zero). Every density is the one
 /// its strategy actually samples with, also that of the light point that
 /// `s = 1` resamples by next event estimation (a sphere light's cone), so
 /// the weights of a path sum to 1 by construction (`tests::weights_sum_to_one`).

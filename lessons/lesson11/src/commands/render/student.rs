@@ -11,8 +11,8 @@ use crate::integrators::{IntegratorArgs, IntegratorKind};
 use crate::options::SceneArgs;
 use crate::render_files::render_to_files;
 
-/// The student's integrator (exercise 10, 11, 12, 13 or 14, by `--integrator`:
-/// naive, path-brdf, direct or path-nee, path, light)
+/// The student's integrator (exercise 10–15, by `--integrator`: naive,
+/// path-brdf, direct or path-nee, path, light, bdpt)
 /// beside the renderer's integrator with the same estimator, and their tile
 /// z-test.
 pub fn run(
@@ -49,17 +49,20 @@ pub fn run(
             max_depth,
             rr_depth,
         },
+        IntegratorKind::Bdpt => StudentRender::Bdpt {
+            max_depth,
+            rr_depth,
+        },
         IntegratorKind::Ao
-        | IntegratorKind::Bdpt
         | IntegratorKind::Mlt
         | IntegratorKind::Photon
         | IntegratorKind::Sppm
         | IntegratorKind::Vpl
         | IntegratorKind::IrradianceCache => bail!(
             "--student renders the exercises that are whole integrators: use --integrator naive (exercise 10), \
-             path-brdf (11), direct or path-nee (12), path (13) or light (14) \
-             (bidirectional tracing and Metropolis light transport are graded piece by piece: \
-             exercises 15 and 16; photon mapping and instant radiosity: 17 and 18)"
+             path-brdf (11), direct or path-nee (12), path (13), light (14) or bdpt (15) \
+             (Metropolis light transport is graded piece by piece: exercise 16; \
+             photon mapping and instant radiosity: 17 and 18)"
         ),
     };
     let exercise = which.exercise();
