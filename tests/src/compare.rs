@@ -10,7 +10,7 @@
 use raytracer::film::Image;
 use std::path::{Path, PathBuf};
 
-use raytracer::integrator::{DirectStrategy, Integrator, PathTracer};
+use raytracer::integrator::{Bdpt, DirectStrategy, Integrator, PathTracer};
 use raytracer::metrics::{z_test, z_threshold};
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;
@@ -81,8 +81,32 @@ pub const EX12_CORNELL_DIRECT: Comparison = Comparison {
     },
 };
 
+/// Maximum depth of exercise 16's door (its chains run over bidirectional
+/// path tracing to this depth).
+pub const EX16_DOOR_MAX_DEPTH: u32 = 5;
+
+/// Exercise 16: the student's Metropolis chains on the door, against
+/// bidirectional path tracing (the estimator the chains run over, so the
+/// same expected image). The grader renders the chains itself
+/// ([`crate::ex16_metropolis::check_door`]): `spp` counts the mutations per
+/// pixel of all its chains together.
+pub const EX16_DOOR: Comparison = Comparison {
+    name: "ex16_door",
+    scene: "door",
+    size: 32,
+    tile: 8,
+    spp: 128,
+    reference: || {
+        Box::new(Bdpt {
+            max_depth: Some(EX16_DOOR_MAX_DEPTH),
+            rr_depth: 5,
+            strategy_images: None,
+        })
+    },
+};
+
 /// Every comparison with a stored reference (`lesson11 references` renders them).
-pub const COMPARISONS: [&Comparison; 2] = [&EX11_CORNELL, &EX12_CORNELL_DIRECT];
+pub const COMPARISONS: [&Comparison; 3] = [&EX11_CORNELL, &EX12_CORNELL_DIRECT, &EX16_DOOR];
 
 fn options(spp: u32, seed: u64, progress: bool, label: &str) -> RenderOptions {
     RenderOptions {

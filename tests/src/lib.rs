@@ -41,7 +41,7 @@ pub mod ex12_nee;
 pub mod ex13_mis;
 pub mod ex14_light_tracing;
 pub mod ex15_bdpt_connection;
-pub mod ex16_metropolis_step;
+pub mod ex16_metropolis;
 pub mod ex17_photon_density;
 pub mod ex18_vpl_contribution;
 pub mod outcome;
@@ -120,11 +120,8 @@ pub const GRADERS: &[(&str, Check)] = &[
             ex::ex15_bdpt_connection::bdpt_mis_weight,
         )
     }),
-    ("ex16_metropolis_step", || {
-        ex16_metropolis_step::check(
-            ex::ex16_metropolis_step::acceptance,
-            ex::ex16_metropolis_step::expected_value_splat,
-        )
+    ("ex16_metropolis", || {
+        ex16_metropolis::check(ex::ex16_metropolis::metropolis_chain)
     }),
     ("ex17_photon_density", || {
         ex17_photon_density::check(ex::ex17_photon_density::photon_radiance)
