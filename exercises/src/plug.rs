@@ -4,7 +4,9 @@
 
 use raytracer::camera::{Camera, CameraParams};
 use raytracer::film::{Film, Image, Splat};
-use raytracer::integrator::{DirectStrategy, Integrator, NaiveRecursive, PathTracer, camera_ray};
+use raytracer::integrator::{
+    Bdpt, DirectStrategy, Integrator, NaiveRecursive, PathTracer, camera_ray,
+};
 use raytracer::math::{Color, Ray, UVec2, luminance};
 use raytracer::render::metropolis::chain::{PathSample, evaluate};
 use raytracer::sampling::{PrimarySample, Sampler};
@@ -165,6 +167,17 @@ pub enum StudentRender {
     },
     /// Exercise 12: direct light by next event estimation only.
     Direct,
+    /// Exercise 16: Metropolis light transport, the student's chains over
+    /// bidirectional path tracing of this maximum depth ([`run_chains`]),
+    /// beside the renderer's Metropolis over the same
+    /// (`raytracer::render::metropolis`). Both are whole-image loops, not
+    /// integrators of pixel samples: [`StudentRender::student`] and
+    /// [`StudentRender::reference`] give the integrator their chains run
+    /// over, and the front-end runs the chains.
+    Metropolis {
+        max_depth: Option<u32>,
+        rr_depth: u32,
+    },
 }
 
 impl StudentRender {
@@ -174,6 +187,7 @@ impl StudentRender {
             StudentRender::Naive { .. } => "ex10_naive_recursive",
             StudentRender::Path { .. } => "ex11_path_tracing",
             StudentRender::Direct => "ex12_nee",
+            StudentRender::Metropolis { .. } => "ex16_metropolis",
         }
     }
 
@@ -192,6 +206,7 @@ impl StudentRender {
                 rr_depth,
             } => Box::new(StudentPathTracer::new(max_depth, rr_depth)),
             StudentRender::Direct => Box::new(StudentDirect::default()),
+            StudentRender::Metropolis { .. } => self.reference(),
         }
     }
 
@@ -215,6 +230,14 @@ impl StudentRender {
                 rr_depth: u32::MAX,
                 strategy: DirectStrategy::LightOnly,
             }),
+            StudentRender::Metropolis {
+                max_depth,
+                rr_depth,
+            } => Box::new(Bdpt {
+                max_depth,
+                rr_depth,
+                strategy_images: None,
+            }),
         }
     }
 
@@ -229,6 +252,9 @@ impl StudentRender {
             }
             StudentRender::Direct => {
                 "the renderer's direct light by light sampling only (path-nee at max depth 2), the estimator exercise 12 asks for; `--integrator direct` adds BRDF sampling under MIS: the same mean, less noise"
+            }
+            StudentRender::Metropolis { .. } => {
+                "the renderer's Metropolis light transport (`--integrator mlt`) over the same bidirectional path tracer: the same estimator, the same streaks; its chains share one bootstrap, yours have one each"
             }
         }
     }

@@ -94,7 +94,7 @@ pub const EX16_DOOR: Comparison = Comparison {
     name: "ex16_door",
     scene: "door",
     size: 32,
-    tile: 8,
+    tile: 16,
     spp: 128,
     reference: || {
         Box::new(Bdpt {

@@ -68,7 +68,7 @@ pub const SHORT_STEPS: u64 = 2;
 /// Largest |t| of a pixel of the 1-D images (see the module doc).
 pub const T_MAX: f64 = 6.0;
 /// Chains of the door, and the settings of each.
-pub const DOOR_CHAINS: u32 = 32;
+pub const DOOR_CHAINS: u32 = 64;
 /// Largest |t| of a door tile (see the module doc).
 pub const DOOR_T_MAX: f64 = 6.0;
 
@@ -415,7 +415,7 @@ pub fn door_settings() -> ChainSettings {
     let pixels = (EX16_DOOR.size * EX16_DOOR.size) as u64;
     ChainSettings {
         dimensions: PrimaryPaths::bdpt_dimensions(crate::compare::EX16_DOOR_MAX_DEPTH),
-        bootstrap: 256,
+        bootstrap: 512,
         mutations: EX16_DOOR.spp as u64 * pixels / DOOR_CHAINS as u64,
         large_step_probability: 0.3,
         mutation_size: 0.02,
