@@ -46,7 +46,7 @@
 //! in `image`. Edge cases: paths with `f = 0` (a proposal that finds no
 //! light) bring nothing and must not make a NaN.
 //!
-//! `exercises::plug::render_chains` runs many independent chains of yours
+//! `exercises::plug::run_chains` runs many independent chains of yours
 //! over bidirectional path tracing (`lesson11 render --integrator mlt
 //! --student`), beside the renderer's own Metropolis.
 

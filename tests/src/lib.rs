@@ -3,8 +3,8 @@
 //! Layered as the course's design describes:
 //! 0. deterministic answers (stereo eyes, anaglyph, BRDF values and their
 //!    normalizations, reflection, the density of a warp, change of measure,
-//!    MIS weights, geometry term, splat values, Metropolis acceptance and
-//!    splat weights): exact comparisons against the grader's own formulas; a wrong answer is compared with the answers
+//!    MIS weights, geometry term, splat values, the total brightness of a
+//!    Metropolis chain): exact comparisons against the grader's own formulas; a wrong answer is compared with the answers
 //!    of the usual mistakes in every case at once, and the one that matches
 //!    is named ([`stats::recognise`]);
 //! 1. sampling routines: chi-square against the grader's own pdf

@@ -540,13 +540,12 @@ fn ex18_vpl_contribution() {
 fn ex16_metropolis() {
     use fixtures::ex16;
     use grading::ex16_metropolis::check;
-    passes("reservoir start, normal small steps", check(ex16::reservoir));
-    passes("list and cumulative sum in f64", check(ex16::in_f64));
-    fails(
-        "ratio upside down",
-        check(ex16::upside_down),
-        "upside down",
+    passes(
+        "reservoir start, normal small steps",
+        check(ex16::reservoir),
     );
+    passes("list and cumulative sum in f64", check(ex16::in_f64));
+    fails("ratio upside down", check(ex16::upside_down), "upside down");
     fails(
         "accepted state only",
         check(ex16::accepted_only),
@@ -563,21 +562,13 @@ fn ex16_metropolis() {
         check(ex16::no_wrap),
         "leave [0, 1)",
     );
-    fails(
-        "uniform start",
-        check(ex16::uniform_start),
-        "start-up bias",
-    );
+    fails("uniform start", check(ex16::uniform_start), "start-up bias");
     fails(
         "b over the paths that found light",
         check(ex16::b_over_nonzero),
         "found light only",
     );
-    fails(
-        "b over n - 1",
-        check(ex16::b_over_n_minus_one),
-        "n/(n − 1)",
-    );
+    fails("b over n - 1", check(ex16::b_over_n_minus_one), "n/(n − 1)");
 }
 
 /// The tables of deterministic answers the grader compares with: a change
