@@ -7,7 +7,7 @@ use raytracer::film::{Film, Image, Splat};
 use raytracer::integrator::{
     Bdpt, DirectStrategy, Integrator, NaiveRecursive, PathTracer, camera_ray,
 };
-use raytracer::math::{Color, Ray, UVec2, luminance};
+use raytracer::math::{Color, Ray, UVec2};
 use raytracer::render::metropolis::chain::{PathSample, evaluate};
 use raytracer::sampling::{PrimarySample, Sampler};
 use raytracer::scene::{Interaction, Scene};
@@ -308,14 +308,6 @@ impl ChainImage {
                 *s += weight * v as f64;
             }
         }
-    }
-
-    /// The sum of the luminances of all pixels.
-    pub fn total_luminance(&self) -> f64 {
-        self.sums
-            .iter()
-            .map(|s| luminance(Color::new(s[0] as f32, s[1] as f32, s[2] as f32)) as f64)
-            .sum()
     }
 }
 

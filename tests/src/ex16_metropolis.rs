@@ -56,7 +56,6 @@ use std::cell::Cell;
 
 use exercises::plug::{ChainImage, ChainSettings, MetropolisChainFn, PrimaryPaths, run_chains};
 use raytracer::film::Image;
-use raytracer::integrator::Integrator;
 use raytracer::math::Color;
 use raytracer::metrics::{tile_means, tile_variances};
 use raytracer::render::metropolis::chain::PathSample;
@@ -562,9 +561,4 @@ fn chains_image(image: &ChainImage, size: u32) -> Image {
             (s[2] * scale) as f32,
         )
     })
-}
-
-/// Grader-side access for the self-test: the door's integrator.
-pub fn door_integrator() -> Box<dyn Integrator> {
-    (EX16_DOOR.reference)()
 }
