@@ -69,8 +69,8 @@ pub mod ex14_light_tracing;
 #[cfg_attr(feature = "solutions", path = "../solutions/ex15_bdpt.rs")]
 pub mod ex15_bdpt;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex16_metropolis_step.rs")]
-pub mod ex16_metropolis_step;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex16_metropolis.rs")]
+pub mod ex16_metropolis;
 #[allow(unused_variables)]
 #[cfg_attr(feature = "solutions", path = "../solutions/ex17_photon_density.rs")]
 pub mod ex17_photon_density;
@@ -95,7 +95,7 @@ pub const MODULES: &[&str] = &[
     "ex13_mis",
     "ex14_light_tracing",
     "ex15_bdpt",
-    "ex16_metropolis_step",
+    "ex16_metropolis",
     "ex17_photon_density",
     "ex18_vpl_contribution",
 ];

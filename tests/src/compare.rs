@@ -119,6 +119,30 @@ pub const EX14_CAUSTIC: Comparison = Comparison {
     },
 };
 
+/// Maximum depth of exercise 16's door (its chains run over bidirectional
+/// path tracing to this depth).
+pub const EX16_DOOR_MAX_DEPTH: u32 = 5;
+
+/// Exercise 16: the student's Metropolis chains on the door, against
+/// bidirectional path tracing (the estimator the chains run over, so the
+/// same expected image). The grader renders the chains itself
+/// ([`crate::ex16_metropolis::check_door`]): `spp` counts the mutations per
+/// pixel of all its chains together.
+pub const EX16_DOOR: Comparison = Comparison {
+    name: "ex16_door",
+    scene: "door",
+    size: 32,
+    tile: 16,
+    spp: 128,
+    reference: || {
+        Box::new(Bdpt {
+            max_depth: Some(EX16_DOOR_MAX_DEPTH),
+            rr_depth: 5,
+            strategy_images: None,
+        })
+    },
+};
+
 /// Exercise 15: bidirectional path tracing at max depth 4 against the
 /// renderer's BDPT (the same expected value; the renderer's `s = 1` takes a
 /// fresh light sample where the student's joins `y_0`).
@@ -173,6 +197,7 @@ pub const COMPARISONS: &[&Comparison] = &[
     &EX13_VEACH,
     &EX14_CAUSTIC,
     &EX15_CORNELL,
+    &EX16_DOOR,
 ];
 
 pub fn options(spp: u32, seed: u64, progress: bool, label: &str) -> RenderOptions {

@@ -3,8 +3,8 @@
 //! Layered as the course's design describes:
 //! 0. deterministic answers (stereo eyes, anaglyph, BRDF values and their
 //!    normalizations, reflection, the density of a warp, change of measure,
-//!    MIS weights, geometry term, splat values, Metropolis acceptance and
-//!    splat weights): exact comparisons against the grader's own formulas; a wrong answer is compared with the answers
+//!    MIS weights, geometry term, splat values, the total brightness of a
+//!    Metropolis chain): exact comparisons against the grader's own formulas; a wrong answer is compared with the answers
 //!    of the usual mistakes in every case at once, and the one that matches
 //!    is named ([`stats::recognise`]);
 //! 1. sampling routines: chi-square against the grader's own pdf
@@ -44,7 +44,7 @@ pub mod ex12_nee;
 pub mod ex13_mis;
 pub mod ex14_light_tracing;
 pub mod ex15_bdpt;
-pub mod ex16_metropolis_step;
+pub mod ex16_metropolis;
 pub mod ex17_photon_density;
 pub mod ex18_vpl_contribution;
 pub mod outcome;
@@ -127,11 +127,8 @@ pub const GRADERS: &[(&str, Check)] = &[
             ex::ex15_bdpt::mis_weight,
         )
     }),
-    ("ex16_metropolis_step", || {
-        ex16_metropolis_step::check(
-            ex::ex16_metropolis_step::acceptance,
-            ex::ex16_metropolis_step::expected_value_splat,
-        )
+    ("ex16_metropolis", || {
+        ex16_metropolis::check(ex::ex16_metropolis::metropolis_chain)
     }),
     ("ex17_photon_density", || {
         ex17_photon_density::check(ex::ex17_photon_density::photon_radiance)

@@ -733,45 +733,38 @@ fn ex18_vpl_contribution() {
 }
 
 #[test]
-fn ex16_metropolis_step() {
-    use ex16_metropolis_step::{check, check_chain};
-    let (a, w) = (correct::acceptance_by_branch, correct::splat_in_f64);
-    passes("branch, weights as 1/f − a/f in f64", check(a, w));
+fn ex16_metropolis() {
+    use fixtures::ex16;
+    use grading::ex16_metropolis::check;
+    passes(
+        "reservoir start, normal small steps",
+        check(ex16::reservoir),
+    );
+    passes("list and cumulative sum in f64", check(ex16::in_f64));
+    fails("ratio upside down", check(ex16::upside_down), "upside down");
     fails(
-        "upside down",
-        check(wrong::acceptance_upside_down, w),
-        "upside down",
+        "accepted state only",
+        check(ex16::accepted_only),
+        "only the state the chain moves to",
+    );
+    fails("splats without b", check(ex16::no_b), "normalization b̂");
+    fails(
+        "splats without 1/I",
+        check(ex16::not_over_i),
+        "not divided by the scalar contribution",
     );
     fails(
-        "unclamped",
-        check(wrong::acceptance_unclamped, w),
-        "min(1, f(y)/f(x))",
+        "small step without wrapping",
+        check(ex16::no_wrap),
+        "leave [0, 1)",
     );
-    fails("Barker", check(wrong::acceptance_barker, w), "Barker");
+    fails("uniform start", check(ex16::uniform_start), "start-up bias");
     fails(
-        "stuck at f(x) = 0",
-        check(wrong::acceptance_stuck_at_zero, w),
-        "must leave it",
+        "b over the paths that found light",
+        check(ex16::b_over_nonzero),
+        "found light only",
     );
-    fails(
-        "weights not over f",
-        check(a, wrong::splat_not_over_f),
-        "not divided by f",
-    );
-    fails("swapped weights", check(a, wrong::splat_swapped), "swapped");
-    fails(
-        "proposal only",
-        check(a, wrong::splat_proposal_only),
-        "only the proposal",
-    );
-    fails("NaN at f = 0", check(a, wrong::splat_nan_at_zero), "finite");
-    // The chain alone can fail: weights not over f make every pixel's
-    // estimate follow f² instead of f.
-    fails(
-        "chain with weights not over f",
-        check_chain(a, wrong::splat_not_over_f),
-        "biased",
-    );
+    fails("b over n - 1", check(ex16::b_over_n_minus_one), "n/(n − 1)");
 }
 
 /// The tables of deterministic answers the grader compares with: a change

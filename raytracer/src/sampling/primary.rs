@@ -89,6 +89,25 @@ impl PrimarySample {
         }
     }
 
+    /// The point whose first coordinates are `values` (each in `[0, 1)`)
+    /// and whose later ones are those of `Sampler::new(seed, index, sample)`:
+    /// a fixed vector of numbers for an integrator to read through
+    /// [`Sampler::primary`](super::Sampler::primary) (exercise 16's chains
+    /// keep their states as such vectors and move them themselves).
+    pub fn from_coordinates(values: &[f32], seed: u64, index: u64, sample: u64) -> Self {
+        let mut point = PrimarySample::new(seed, index, sample, 0.0);
+        point.coordinates = values
+            .iter()
+            .map(|&value| Coordinate {
+                value,
+                moved: 0,
+                backup_value: value,
+                backup_moved: 0,
+            })
+            .collect();
+        point
+    }
+
     /// The number of steps the state has taken (accepted proposals), plus
     /// one while a proposal is open.
     pub fn iteration(&self) -> u64 {
@@ -215,6 +234,14 @@ mod tests {
         let mut primary = Sampler::primary(PrimarySample::new(3, 4, 5, 0.01));
         let drawn: Vec<f32> = (0..10).map(|_| primary.next_1d()).collect();
         assert_eq!(drawn, expected);
+    }
+
+    #[test]
+    fn from_coordinates_reads_the_values_then_the_address() {
+        let mut p = PrimarySample::from_coordinates(&[0.25, 0.5], 3, 4, 5);
+        let mut s = Sampler::new(3, 4, 5);
+        let expected: Vec<f32> = (0..4).map(|_| s.next_1d()).collect();
+        assert_eq!(read(&mut p, 4), vec![0.25, 0.5, expected[2], expected[3]]);
     }
 
     #[test]

@@ -9,10 +9,10 @@
 //!
 //! 1. propose `y`: a large step with probability `p_large`, else a small one;
 //! 2. evaluate `f(y)` (one sample of the integrator, on `y`'s numbers);
-//! 3. the Metropolis acceptance probability for a symmetric proposal,
-//!    `a = min(1, f(y) / f(x))` ([`acceptance`]);
-//! 4. splat *both* states, `x` with weight `(1 − a) / f(x)` and `y` with
-//!    `a / f(y)` ([`expected_value_splat`]): the expected value of what the
+//! 3. the Metropolis acceptance probability for a symmetric proposal
+//!    ([`acceptance`], the slide's `a`);
+//! 4. splat *both* states, each with its probability of being the next
+//!    state ([`expected_value_splat`]): the expected value of what the
 //!    next state would splat, `g/f` of whichever is kept; no random number
 //!    is wasted on it, and rejected proposals still count (Veach's
 //!    "expected values" optimisation, pbrt's `MLTIntegrator`);
@@ -39,18 +39,22 @@ pub const STEP_KIND: Draw<1> = Draw::new("large or small step");
 pub const ACCEPT: Draw<1> = Draw::new("accept the proposal");
 
 /// The factors that multiply the contributions of the two states of one
-/// step before the chain's common factor `W·H · b / N`.
+/// step before the chain's common factor `W·H · b / N`: each state's
+/// probability of being the next one, over its own `f`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SplatWeights {
-    /// Weight of the current state's contributions, `(1 − a) / f(x)`.
+    /// Weight of the current state's contributions (it stays with the
+    /// probability that the proposal is rejected).
     pub current: f32,
-    /// Weight of the proposal's contributions, `a / f(y)`.
+    /// Weight of the proposal's contributions (taken with the acceptance
+    /// probability).
     pub proposed: f32,
 }
 
-/// The Metropolis acceptance probability of a symmetric proposal,
-/// `a(x → y) = min(1, f(y) / f(x))`; 1 when `f(x) = 0` (a chain that starts
-/// on a path that brings nothing leaves it at once).
+/// The Metropolis acceptance probability of a symmetric proposal from a
+/// state of luminance `f_current` to one of `f_proposed` (the slide's `a`);
+/// 1 when `f(x) = 0` (a chain that starts on a path that brings nothing
+/// leaves it at once).
 #[inline]
 pub fn acceptance(f_current: f32, f_proposed: f32) -> f32 {
     if f_current > 0.0 {
@@ -60,11 +64,11 @@ pub fn acceptance(f_current: f32, f_proposed: f32) -> f32 {
     }
 }
 
-/// The expected-value splat of one step: `(1 − a) / f(x)` for the current
-/// state and `a / f(y)` for the proposal (0 for a state with `f = 0`, which
-/// brings nothing). The two weights times `f` add up to 1: every step splats
-/// one unit of luminance, shared by the two states as the coin would share it
-/// on average.
+/// The expected-value splat of one step: each state's weight is its
+/// probability of being the next state over its `f` (0 for a state with
+/// `f = 0`, which brings nothing). The two weights times `f` add up to 1:
+/// every step splats one unit of luminance, shared by the two states as the
+/// coin would share it on average.
 #[inline]
 pub fn expected_value_splat(f_current: f32, f_proposed: f32) -> SplatWeights {
     let a = acceptance(f_current, f_proposed);

@@ -1,26 +1,33 @@
 //! `lesson11 render --student`: the student's own integrator rendered beside
 //! the reference one, and the grader's tile z-test between the two.
 
+use std::time::Instant;
+
 use anyhow::{Result, bail};
-use exercises::plug::StudentRender;
+use exercises::ex16_metropolis;
+use exercises::plug::{ChainSettings, PrimaryPaths, StudentRender, chains_film, run_chains};
 use grading::Outcome;
 use raytracer::metrics::{z_test, z_threshold};
-use raytracer::render::render;
+use raytracer::render::metropolis::render_metropolis;
+use raytracer::render::{RenderStats, render};
 
-use crate::integrators::{IntegratorArgs, IntegratorKind};
+use crate::integrators::{IntegratorArgs, IntegratorKind, IntegratorPlan};
 use crate::options::SceneArgs;
-use crate::render_files::render_to_files;
+use crate::render_files::{OutputFiles, render_to_files};
 
 /// The student's integrator (exercise 10–15, by `--integrator`: naive,
-/// path-brdf, direct or path-nee, path, light, bdpt)
-/// beside the renderer's integrator with the same estimator, and their tile
-/// z-test.
+/// path-brdf, direct or path-nee, path, light, bdpt; 16 with `--integrator
+/// mlt`, see [`run_metropolis`]) beside the renderer's integrator with the
+/// same estimator, and their tile z-test.
 pub fn run(
     scene_args: &SceneArgs,
     integrator: IntegratorKind,
     ia: &IntegratorArgs,
     exposure: f32,
 ) -> Result<()> {
+    if integrator == IntegratorKind::Mlt {
+        return run_metropolis(scene_args, ia, exposure);
+    }
     let (scene, options) = scene_args.load("cornell")?;
     // The checks of the options (naive recursion's ray budget among them)
     // apply to the student's integrator as to the renderer's.
@@ -53,16 +60,15 @@ pub fn run(
             max_depth,
             rr_depth,
         },
+        IntegratorKind::Mlt => unreachable!("handled by run_metropolis"),
         IntegratorKind::Ao
-        | IntegratorKind::Mlt
         | IntegratorKind::Photon
         | IntegratorKind::Sppm
         | IntegratorKind::Vpl
         | IntegratorKind::IrradianceCache => bail!(
             "--student renders the exercises that are whole integrators: use --integrator naive (exercise 10), \
-             path-brdf (11), direct or path-nee (12), path (13), light (14) or bdpt (15) \
-             (Metropolis light transport is graded piece by piece: exercise 16; \
-             photon mapping and instant radiosity: 17 and 18)"
+             path-brdf (11), direct or path-nee (12), path (13), light (14), bdpt (15) or mlt (16) \
+             (photon mapping and instant radiosity: 17 and 18)"
         ),
     };
     let exercise = which.exercise();
@@ -106,6 +112,104 @@ pub fn run(
         &a.film.variance_image(),
         &b.film.image(),
         &b.film.variance_image(),
+        16,
+    );
+    let threshold = z_threshold(z.z.len() * 3, 1e-4);
+    println!(
+        "  tile z-test: largest |z| = {:.1} in tile {} (threshold {threshold:.1}): {}",
+        z.max_abs_z,
+        z.worst_tile,
+        if (z.max_abs_z as f64) <= threshold {
+            "consistent with the reference"
+        } else {
+            "DIFFERS from the reference"
+        }
+    );
+    Ok(())
+}
+
+/// The student's Metropolis chains (exercise 16) over bidirectional path
+/// tracing beside the renderer's Metropolis over the same, with the same
+/// options (`--spp` mutations per pixel, `--chains`, `--bootstrap`,
+/// `--large-step-probability`, `--mutation-size`), and their tile z-test.
+/// Each of the student's chains makes its own bootstrap (an equal share
+/// of `--bootstrap`, at least 256 paths).
+fn run_metropolis(scene_args: &SceneArgs, ia: &IntegratorArgs, exposure: f32) -> Result<()> {
+    let (scene, options) = scene_args.load("door")?;
+    let IntegratorPlan::Metropolis(bdpt, metropolis) =
+        IntegratorKind::Mlt.plan(ia, &scene, &options, scene_args.force)?
+    else {
+        bail!("--integrator mlt planned no Metropolis render");
+    };
+    let which = StudentRender::Metropolis {
+        max_depth: bdpt.max_depth,
+        rr_depth: bdpt.rr_depth,
+    };
+    let exercise = which.exercise();
+    let outcome = grading::grade_exercise(exercise).unwrap_or(Outcome::NotStarted(None));
+    if outcome.is_not_started() {
+        bail!(
+            "{exercise} is not started yet ({outcome}): fill in exercises/src/{exercise}.rs first"
+        );
+    }
+    println!("{exercise}: {outcome}");
+    println!("  beside it: {}", which.reference_note());
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    let chains = metropolis.chains;
+    let settings = ChainSettings {
+        // Unlimited depth: paths longer than 16 bounces read fixed numbers
+        // past the state (rare with Russian roulette).
+        dimensions: PrimaryPaths::bdpt_dimensions(bdpt.max_depth.unwrap_or(16)),
+        bootstrap: (metropolis.bootstrap_paths(w, h) / chains as u64).max(256) as usize,
+        mutations: (options.spp as u64 * w as u64 * h as u64 / chains as u64).max(1),
+        large_step_probability: metropolis.large_step_probability,
+        mutation_size: metropolis.mutation_size,
+    };
+    let out = &scene_args.out;
+    let stem = format!("{}-mlt", scene.name);
+    let start = Instant::now();
+    let integrator = which.student();
+    let images = run_chains(
+        ex16_metropolis::metropolis_chain,
+        &scene,
+        integrator.as_ref(),
+        &settings,
+        chains,
+        options.seed,
+    );
+    let student = chains_film(&images, w, h);
+    let stats = RenderStats {
+        elapsed: start.elapsed(),
+        samples: settings.mutations * chains as u64,
+        interrupted: false,
+        nonfinite: student.nonfinite_count(),
+    };
+    OutputFiles::new(out, &format!("{stem}-student"))?.write(
+        &student,
+        &stats,
+        options.spp,
+        exposure,
+        String::new,
+    )?;
+    // The renderer's Metropolis with another seed: correlated pictures
+    // would hide a difference.
+    let mut quiet = options.clone();
+    quiet.seed = quiet.seed.wrapping_add(1);
+    let reference = render_metropolis(&scene, &bdpt, &quiet, &metropolis);
+    OutputFiles::new(out, &format!("{stem}-reference"))?.write(
+        &reference.film,
+        &reference.stats,
+        options.spp,
+        exposure,
+        || "INTERRUPTED".to_string(),
+    )?;
+    // Pixels of one chain are not independent (its streaks), so this test
+    // is only a guide; the grader tests tiles with the chains' own spread.
+    let z = z_test(
+        &student.image(),
+        &student.variance_image(),
+        &reference.film.image(),
+        &reference.film.variance_image(),
         16,
     );
     let threshold = z_threshold(z.z.len() * 3, 1e-4);
