@@ -11,7 +11,7 @@ use crate::integrators::{IntegratorArgs, IntegratorKind};
 use crate::options::SceneArgs;
 use crate::render_files::render_to_files;
 
-/// The student's integrator (exercise 10, 11 or 12, by `--integrator`)
+/// The student's integrator (exercise 10, 11, 12 or 17, by `--integrator`)
 /// beside the renderer's integrator with the same estimator, and their tile
 /// z-test.
 pub fn run(
@@ -36,17 +36,35 @@ pub fn run(
             branching: ia.branching()[0],
         },
         IntegratorKind::Direct | IntegratorKind::PathNee => StudentRender::Direct,
+        IntegratorKind::Photon => {
+            // Exercise 17 has no depth limit and no final gathering.
+            // (A scene's own max_depth is not a request: it is ignored here.)
+            if (ia.max_depth.is_some() && max_depth.is_some())
+                || ia.biased.final_gather.is_some_and(|g| g > 0)
+            {
+                bail!(
+                    "--student -i photon (exercise 17) traces photons with no depth limit and reads the maps                      directly: drop --max-depth and --final-gather"
+                );
+            }
+            let s = ia.biased.photon(None, rr_depth, options.seed)?;
+            StudentRender::Photon {
+                photons: s.photons,
+                k: s.k,
+                radius_bits: s.radius.map(f32::to_bits),
+                rr_depth,
+                seed: options.seed,
+            }
+        }
         IntegratorKind::Ao
         | IntegratorKind::Light
         | IntegratorKind::Bdpt
         | IntegratorKind::Mlt
-        | IntegratorKind::Photon
         | IntegratorKind::Sppm
         | IntegratorKind::Vpl
         | IntegratorKind::IrradianceCache => bail!(
-            "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
+            "--student renders the exercises that are whole integrators: use --integrator path, naive, direct or photon \
              (light tracing, bidirectional tracing and Metropolis light transport are graded piece by piece: \
-             exercises 14, 15 and 16; photon mapping and instant radiosity: 17 and 18)"
+             exercises 14, 15 and 16; instant radiosity: 18)"
         ),
     };
     let exercise = which.exercise();
