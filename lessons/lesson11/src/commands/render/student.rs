@@ -43,7 +43,7 @@ pub fn run(
                 || ia.biased.final_gather.is_some_and(|g| g > 0)
             {
                 bail!(
-                    "--student -i photon (exercise 17) traces photons with no depth limit and reads the maps                      directly: drop --max-depth and --final-gather"
+                    "--student -i photon (exercise 17) traces photons with no depth limit and reads the maps directly: drop --max-depth and --final-gather"
                 );
             }
             let s = ia.biased.photon(None, rr_depth, options.seed)?;
