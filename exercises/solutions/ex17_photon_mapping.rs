@@ -88,9 +88,12 @@ pub fn trace_photon_path(
 pub fn photon_radiance(map: &PhotonMap, it: &Interaction, brdf: &Brdf, search: Search) -> Color {
     // The candidates: every photon within the largest radius, with d².
     let mut near: Vec<(f32, Photon)> = Vec::new();
-    map.for_each_within(it.p, search.max_radius(), |_| true, |_, ph, d2| {
-        near.push((d2, *ph))
-    });
+    map.for_each_within(
+        it.p,
+        search.max_radius(),
+        |_| true,
+        |_, ph, d2| near.push((d2, *ph)),
+    );
     // r²: the fixed radius, or the k-th nearest's distance (with k or
     // fewer candidates, the whole disk of the largest radius).
     let r2 = match search {

@@ -233,8 +233,7 @@ impl StudentPhotonMapping {
     pub fn map(&self, scene: &Scene) -> &(PhotonMap, Search) {
         self.map.get_or_init(|| {
             let s = &self.settings;
-            let mut photons =
-                trace_photons_with(scene, self.trace, s.photons, s.rr_depth, s.seed);
+            let mut photons = trace_photons_with(scene, self.trace, s.photons, s.rr_depth, s.seed);
             // Direct light comes from the light sample, not from photons.
             photons.retain(|p| p.segments >= 2);
             let search = match s.radius {
@@ -442,10 +441,15 @@ impl StudentRender {
             StudentRender::Path { .. } => {
                 "the renderer's path tracer with BRDF sampling only (`--integrator path-brdf`), the estimator exercise 11 asks for: the same noise is expected. The MIS path tracer (`path`) has the same mean with far less noise, so it would look better than a correct solution"
             }
-            StudentRender::Photon { radius_bits: Some(_), .. } => {
+            StudentRender::Photon {
+                radius_bits: Some(_),
+                ..
+            } => {
                 "the renderer's photon mapping with the same photon count, radius and roulette, no final gathering: the same estimate (direct light by a light sample, caustics and indirect light from the photons)"
             }
-            StudentRender::Photon { radius_bits: None, .. } => {
+            StudentRender::Photon {
+                radius_bits: None, ..
+            } => {
                 "the renderer's photon mapping with the same photon count, k and roulette, no final gathering; it searches the k nearest in its caustic and global maps apart, yours in one map of both, so the two differ a little in bias where the caustic meets indirect light (with --radius they are the same estimate)"
             }
             StudentRender::Direct => {

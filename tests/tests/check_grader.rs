@@ -500,19 +500,71 @@ fn ex17_photon_mapping() {
     let t = trace::<0>;
     let r = radiance::<0>;
     for (name, result, keyword) in [
-        ("flux not shared among the N paths", check(trace::<NO_SHARE>, r), "N paths"),
-        ("roulette without dividing the flux", check(trace::<ROULETTE_UNDIVIDED>, r), "not divided by its survival"),
-        ("photons stored on glass", check(trace::<STORE_AT_SPECULAR>, r), "specular hits"),
-        ("cosine at the hit in the stored flux", check(trace::<COSINE_AT_HIT>, r), "cosine at the hit"),
-        ("no cosine at the light", check(trace::<NO_COSINE_AT_LIGHT>, r), "cosine at the light"),
-        ("no π in the kernel", check(t, radiance::<NO_PI>), "misses the π"),
-        ("the radius not squared", check(t, radiance::<RADIUS_NOT_SQUARED>), "its square"),
-        ("half the radius", check(t, radiance::<HALF_RADIUS>), "half as wide"),
-        ("the (k+1)-th neighbour's distance", check(t, radiance::<K_PLUS_ONE>), "(k+1)-th"),
-        ("the mean distance as the radius", check(t, radiance::<MEAN_DISTANCE>), "mean distance"),
-        ("f_r in world space", check(t, radiance::<WORLD_FRAME>), "local frame"),
-        ("f_r with the direction of travel", check(t, radiance::<TRAVEL_DIRECTION>), "direction of travel"),
-        ("the cosine at x in the estimate", check(t, radiance::<COSINE_IN_ESTIMATE>), "already carries"),
+        (
+            "flux not shared among the N paths",
+            check(trace::<NO_SHARE>, r),
+            "N paths",
+        ),
+        (
+            "roulette without dividing the flux",
+            check(trace::<ROULETTE_UNDIVIDED>, r),
+            "not divided by its survival",
+        ),
+        (
+            "photons stored on glass",
+            check(trace::<STORE_AT_SPECULAR>, r),
+            "specular hits",
+        ),
+        (
+            "cosine at the hit in the stored flux",
+            check(trace::<COSINE_AT_HIT>, r),
+            "cosine at the hit",
+        ),
+        (
+            "no cosine at the light",
+            check(trace::<NO_COSINE_AT_LIGHT>, r),
+            "cosine at the light",
+        ),
+        (
+            "no π in the kernel",
+            check(t, radiance::<NO_PI>),
+            "misses the π",
+        ),
+        (
+            "the radius not squared",
+            check(t, radiance::<RADIUS_NOT_SQUARED>),
+            "its square",
+        ),
+        (
+            "half the radius",
+            check(t, radiance::<HALF_RADIUS>),
+            "half as wide",
+        ),
+        (
+            "the (k+1)-th neighbour's distance",
+            check(t, radiance::<K_PLUS_ONE>),
+            "(k+1)-th",
+        ),
+        (
+            "the mean distance as the radius",
+            check(t, radiance::<MEAN_DISTANCE>),
+            "mean distance",
+        ),
+        (
+            "f_r in world space",
+            check(t, radiance::<WORLD_FRAME>),
+            "local frame",
+        ),
+        (
+            "f_r with the direction of travel",
+            check(t, radiance::<TRAVEL_DIRECTION>),
+            "direction of travel",
+        ),
+        (
+            "the cosine at x in the estimate",
+            check(t, radiance::<COSINE_IN_ESTIMATE>),
+            "already carries",
+        ),
     ] {
         fails(name, result, keyword);
     }

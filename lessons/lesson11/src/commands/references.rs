@@ -33,7 +33,10 @@ pub fn run(args: &ReferencesArgs) -> Result<()> {
         grading::ex17_photon_mapping::REFERENCE_MAPS
     );
     let path = grading::ex17_photon_mapping::render_reference(true).map_err(|e| anyhow!(e))?;
-    println!("  wrote {} and its -variance.exr (per tile)", path.display());
+    println!(
+        "  wrote {} and its -variance.exr (per tile)",
+        path.display()
+    );
     if !args.grader_only {
         for stored in [door_settings(), caustic_settings()] {
             println!(
