@@ -27,7 +27,14 @@
 //! 4e-8 per channel for layers 1 and 2; for layer 3, 40 maps, Student's t
 //! with 39 degrees of freedom: below 3e-6 per case); layer 4 at
 //! family-wise α = 1e-4 with the t quantile of [`STUDENT_MAPS`] − 1
-//! degrees of freedom.
+//! degrees of freedom (the tile means of independent photon maps are
+//! independent, so the student's variance estimate includes the photon
+//! map's randomness; pixels of one map are not independent of each other,
+//! which is why the variance is taken over maps, tile by tile). Measured:
+//! over 25 seeds of the reference solution the largest |z| stayed below
+//! 0.52 of the threshold, over 24 of a fixture with another roulette below
+//! 0.60 (`check_grader`'s ignored `ex17_caustic_comparison_over_seeds`);
+//! the whole grading takes about 1 s in the test profile.
 
 use std::path::{Path, PathBuf};
 
