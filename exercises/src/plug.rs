@@ -445,12 +445,12 @@ impl StudentRender {
                 radius_bits: Some(_),
                 ..
             } => {
-                "the renderer's photon mapping with the same photon count, radius and roulette, no final gathering: the same estimate (direct light by a light sample, caustics and indirect light from the photons)"
+                "the renderer's photon mapping with the same photon count, radius and roulette, no final gathering: the same estimate (direct light by a light sample, caustics and indirect light from the photons). Each picture has its own photon map, whose noise a single render's variance does not show: with few photons the tile z-test below can flag a difference that is only that (the grader compares over many maps)"
             }
             StudentRender::Photon {
                 radius_bits: None, ..
             } => {
-                "the renderer's photon mapping with the same photon count, k and roulette, no final gathering; it searches the k nearest in its caustic and global maps apart, yours in one map of both, so the two differ a little in bias where the caustic meets indirect light (with --radius they are the same estimate)"
+                "the renderer's photon mapping with the same photon count, k and roulette, no final gathering; it searches the k nearest in its caustic and global maps apart, yours in one map of both, so the two differ a little in bias where the caustic meets indirect light (with --radius they are the same estimate); each picture has its own photon map, whose noise the tile z-test below does not count"
             }
             StudentRender::Direct => {
                 "the renderer's direct light by light sampling only (path-nee at max depth 2), the estimator exercise 12 asks for; `--integrator direct` adds BRDF sampling under MIS: the same mean, less noise"
