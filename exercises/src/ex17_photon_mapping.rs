@@ -81,6 +81,7 @@ use raytracer::scene::{Interaction, Scene};
 
 /// Traces light path number `i` of `paths` (its sampler given) and pushes
 /// the photons it leaves onto `photons`.
+#[allow(clippy::ptr_arg)] // a Vec: the photons are pushed onto it
 pub fn trace_photon_path(
     scene: &Scene,
     paths: u64,
