@@ -72,8 +72,8 @@ pub mod ex15_bdpt;
 #[cfg_attr(feature = "solutions", path = "../solutions/ex16_metropolis.rs")]
 pub mod ex16_metropolis;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex17_photon_density.rs")]
-pub mod ex17_photon_density;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex17_photon_mapping.rs")]
+pub mod ex17_photon_mapping;
 #[allow(unused_variables)]
 #[cfg_attr(feature = "solutions", path = "../solutions/ex18_vpl_contribution.rs")]
 pub mod ex18_vpl_contribution;
@@ -96,7 +96,7 @@ pub const MODULES: &[&str] = &[
     "ex14_light_tracing",
     "ex15_bdpt",
     "ex16_metropolis",
-    "ex17_photon_density",
+    "ex17_photon_mapping",
     "ex18_vpl_contribution",
 ];
 

@@ -45,7 +45,7 @@ pub mod ex13_mis;
 pub mod ex14_light_tracing;
 pub mod ex15_bdpt;
 pub mod ex16_metropolis;
-pub mod ex17_photon_density;
+pub mod ex17_photon_mapping;
 pub mod ex18_vpl_contribution;
 pub mod outcome;
 pub mod pictures;
@@ -130,8 +130,11 @@ pub const GRADERS: &[(&str, Check)] = &[
     ("ex16_metropolis", || {
         ex16_metropolis::check(ex::ex16_metropolis::metropolis_chain)
     }),
-    ("ex17_photon_density", || {
-        ex17_photon_density::check(ex::ex17_photon_density::photon_radiance)
+    ("ex17_photon_mapping", || {
+        ex17_photon_mapping::check(
+            ex::ex17_photon_mapping::trace_photon_path,
+            ex::ex17_photon_mapping::photon_radiance,
+        )
     }),
     ("ex18_vpl_contribution", || {
         ex18_vpl_contribution::check(ex::ex18_vpl_contribution::vpl_contribution)

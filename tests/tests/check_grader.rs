@@ -682,31 +682,113 @@ fn ex15_bdpt() {
 }
 
 #[test]
-fn ex17_photon_density() {
+fn ex17_photon_mapping() {
+    use fixtures::ex17::*;
+    use grading::ex17_photon_mapping::check;
     passes(
-        "full sort, f64 kernel",
-        ex17_photon_density::check(correct::photon_radiance_sorted),
+        "other order of numbers, survival 1/2, f64 flux; full sort, f64 kernel",
+        check(trace::<0>, radiance::<0>),
     );
-    fails(
-        "box kernel",
-        ex17_photon_density::check(wrong::density_box),
-        "box kernel",
+    passes(
+        "survival by the throughput capped at 0.9; the renderer's kernel",
+        check(trace::<OTHER_ROULETTE>, radiance::<LIBRARY_KERNEL>),
     );
-    fails(
-        "kernel normalized by 1/(π r²)",
-        ex17_photon_density::check(wrong::density_half),
-        "not normalized",
-    );
-    fails(
-        "every photon",
-        ex17_photon_density::check(wrong::density_all),
-        "only the k nearest",
-    );
-    fails(
-        "π (r²)²",
-        ex17_photon_density::check(wrong::density_area_of_r4),
-        "SQUARED distances",
-    );
+    let t = trace::<0>;
+    let r = radiance::<0>;
+    for (name, result, keyword) in [
+        (
+            "flux not shared among the N paths",
+            check(trace::<NO_SHARE>, r),
+            "N paths",
+        ),
+        (
+            "roulette without dividing the flux",
+            check(trace::<ROULETTE_UNDIVIDED>, r),
+            "not divided by its survival",
+        ),
+        (
+            "photons stored on glass",
+            check(trace::<STORE_AT_SPECULAR>, r),
+            "specular hits",
+        ),
+        (
+            "cosine at the hit in the stored flux",
+            check(trace::<COSINE_AT_HIT>, r),
+            "cosine at the hit",
+        ),
+        (
+            "no cosine at the light",
+            check(trace::<NO_COSINE_AT_LIGHT>, r),
+            "cosine at the light",
+        ),
+        (
+            "no π in the kernel",
+            check(t, radiance::<NO_PI>),
+            "misses the π",
+        ),
+        (
+            "the radius not squared",
+            check(t, radiance::<RADIUS_NOT_SQUARED>),
+            "its square",
+        ),
+        (
+            "half the radius",
+            check(t, radiance::<HALF_RADIUS>),
+            "half as wide",
+        ),
+        (
+            "the (k+1)-th neighbour's distance",
+            check(t, radiance::<K_PLUS_ONE>),
+            "(k+1)-th",
+        ),
+        (
+            "the mean distance as the radius",
+            check(t, radiance::<MEAN_DISTANCE>),
+            "mean distance",
+        ),
+        (
+            "f_r in world space",
+            check(t, radiance::<WORLD_FRAME>),
+            "local frame",
+        ),
+        (
+            "f_r with the direction of travel",
+            check(t, radiance::<TRAVEL_DIRECTION>),
+            "direction of travel",
+        ),
+        (
+            "the cosine at x in the estimate",
+            check(t, radiance::<COSINE_IN_ESTIMATE>),
+            "already carries",
+        ),
+    ] {
+        fails(name, result, keyword);
+    }
+}
+
+/// The caustic comparison of exercise 17 over many seeds of the student's
+/// photon maps: a correct solution (another roulette, another order of the
+/// random numbers) passes for every seed, with the largest |z| well under
+/// the threshold (measured: see `tests/src/ex17_photon_mapping.rs`).
+#[test]
+#[ignore = "slow: 24 renders of 32 photon maps each; run with --ignored to measure the margin"]
+fn ex17_caustic_comparison_over_seeds() {
+    use fixtures::ex17::*;
+    let mut largest = 0.0f64;
+    for seed in 0..24u64 {
+        let mut z = 0.0;
+        passes(
+            &format!("seed {seed}"),
+            ex17_photon_mapping::compare_caustic_z(
+                trace::<OTHER_ROULETTE>,
+                radiance::<0>,
+                1_000 + 97 * seed,
+                Some(&mut z),
+            ),
+        );
+        largest = largest.max(z);
+    }
+    println!("largest |z| / threshold over 24 seeds: {largest:.3}");
 }
 
 #[test]

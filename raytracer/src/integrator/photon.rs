@@ -4,12 +4,9 @@
 //! Lecture topic: "photon mapping" (Jensen 1996), the first of the lecture's
 //! biased algorithms, and its progressive form. A photon is a light-subpath
 //! vertex `y_k` (`k ≥ 1`) on a surface that is not a mirror or glass, kept
-//! with the direction it came from and its flux
-//!
-//! ```text
-//!   Φ = β_k / N,   β_k = L_e |cos θ_0| / (P(light) p_A p_ω) · Π_{j<k} f_r |cos θ| / p
-//! ```
-//!
+//! with the direction it came from and its flux `Φ`: the path's throughput
+//! `β_k` at `y_k` (a Monte Carlo estimate of the power the lights emit,
+//! carried through the bounces before `y_k`) divided by `N`,
 //! where `N` is the number of light paths traced (each path's `β` is a flux
 //! estimate of the whole scene's light: dividing by `N` shares it out). The
 //! paths are the light subpaths of light and bidirectional tracing

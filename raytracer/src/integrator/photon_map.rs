@@ -5,16 +5,16 @@
 //!
 //! ```text
 //!   L_r(x, ω_o) ≈ Σ_p f_r(x, ω_p, ω_o) Φ_p K(‖x − x_p‖),
-//!   K(d) = 2/(π r²) · (1 − d²/r²)     for d < r, 0 beyond
+//!   K(d) ∝ 1 − d²/r²     for d < r, 0 beyond
 //! ```
 //!
 //! `K` is the **Epanechnikov kernel** on a disk of radius `r`, normalised so
-//! that `∫ K dA = 1` (the disk's area `π r²` with the factor 2 for the
-//! kernel's mean of 1/2). With the `k` nearest photons, `r` is the distance
+//! that `∫ K dA = 1` over the disk (a density per unit area; exercise 17
+//! derives its constant). With the `k` nearest photons, `r` is the distance
 //! to the k-th one, which then weighs 0: given `r`, the other `k − 1` are
 //! uniform in the disk (where the density is constant) and `π r²` is a
-//! Gamma(k) variable, so `E[Σ K] = (k − 1)/2 · 2 · E[1/(π r²)] = λ`, the true
-//! density — no bias where the light is uniform (the furnace test holds it
+//! Gamma(k) variable, so the expected estimate is the true density `λ` —
+//! no bias where the light is uniform (the furnace test holds it
 //! exactly). Where it is not, the disk averages the light over its area:
 //! blur at a caustic's edge, light from one wall counted on the other at a
 //! corner. That is photon mapping's bias; with more photons `r` shrinks and
@@ -51,7 +51,8 @@ impl Search {
     }
 }
 
-/// `K(d)` of the module doc for `d² = d2`, `r² = r2`.
+/// The normalised Epanechnikov kernel `K(d)` of the module doc (per unit
+/// area, 0 from `d = r` on) for `d² = d2`, `r² = r2`.
 #[inline]
 pub fn epanechnikov(d2: f32, r2: f32) -> f32 {
     if d2 >= r2 {

@@ -28,6 +28,15 @@ pub fn run(args: &ReferencesArgs) -> Result<()> {
         let path = grading::compare::render_reference(c, true).map_err(|e| anyhow!(e))?;
         println!("  wrote {} and its -variance.exr", path.display());
     }
+    println!(
+        "ex17_caustic: caustic with the renderer's photon mapping, {} independent photon maps",
+        grading::ex17_photon_mapping::REFERENCE_MAPS
+    );
+    let path = grading::ex17_photon_mapping::render_reference(true).map_err(|e| anyhow!(e))?;
+    println!(
+        "  wrote {} and its -variance.exr (per tile)",
+        path.display()
+    );
     if !args.grader_only {
         for stored in [door_settings(), caustic_settings()] {
             println!(

@@ -15,10 +15,10 @@ use crate::integrators::{IntegratorArgs, IntegratorKind, IntegratorPlan};
 use crate::options::SceneArgs;
 use crate::render_files::{OutputFiles, render_to_files};
 
-/// The student's integrator (exercise 10–15, by `--integrator`: naive,
-/// path-brdf, direct or path-nee, path, light, bdpt; 16 with `--integrator
-/// mlt`, see [`run_metropolis`]) beside the renderer's integrator with the
-/// same estimator, and their tile z-test.
+/// The student's integrator (exercise 10–15 and 17, by `--integrator`:
+/// naive, path-brdf, direct or path-nee, path, light, bdpt, photon; 16 with
+/// `--integrator mlt`, see [`run_metropolis`]) beside the renderer's
+/// integrator with the same estimator, and their tile z-test.
 pub fn run(
     scene_args: &SceneArgs,
     integrator: IntegratorKind,
@@ -61,14 +61,32 @@ pub fn run(
             rr_depth,
         },
         IntegratorKind::Mlt => unreachable!("handled by run_metropolis"),
+        IntegratorKind::Photon => {
+            // Exercise 17 has no depth limit and no final gathering.
+            // (A scene's own max_depth is not a request: it is ignored here.)
+            if (ia.max_depth.is_some() && max_depth.is_some())
+                || ia.biased.final_gather.is_some_and(|g| g > 0)
+            {
+                bail!(
+                    "--student -i photon (exercise 17) traces photons with no depth limit and reads the maps directly: drop --max-depth and --final-gather"
+                );
+            }
+            let s = ia.biased.photon(None, rr_depth, options.seed)?;
+            StudentRender::Photon {
+                photons: s.photons,
+                k: s.k,
+                radius_bits: s.radius.map(f32::to_bits),
+                rr_depth,
+                seed: options.seed,
+            }
+        }
         IntegratorKind::Ao
-        | IntegratorKind::Photon
         | IntegratorKind::Sppm
         | IntegratorKind::Vpl
         | IntegratorKind::IrradianceCache => bail!(
             "--student renders the exercises that are whole integrators: use --integrator naive (exercise 10), \
-             path-brdf (11), direct or path-nee (12), path (13), light (14), bdpt (15) or mlt (16) \
-             (photon mapping and instant radiosity: 17 and 18)"
+             path-brdf (11), direct or path-nee (12), path (13), light (14), bdpt (15), mlt (16) \
+             or photon (17) (instant radiosity: 18)"
         ),
     };
     let exercise = which.exercise();

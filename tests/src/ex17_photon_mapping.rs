@@ -1,0 +1,968 @@
+//! Grader of exercise 17 (photon mapping: photon tracing and the radiance
+//! estimate), in four layers:
+//!
+//! 1. the estimate exactly, over hand-made photon maps (a tilted surface, a
+//!    glossy and a diffuse BRDF, k nearest with more, exactly and fewer than
+//!    k candidates, a fixed radius): the usual mistakes are named by
+//!    comparing all cases at once; then its lack of bias where the photon
+//!    density is uniform (the k = 20 nearest of 400 photons spread uniformly
+//!    over the unit disk: the density 400/π exactly in expectation);
+//! 2. the photon tracer in the closed furnace (L_e = 0.5, ρ = 0.5 on the
+//!    inside of a unit sphere, emitted flux Φ = π L_e A = 2π²): the photons
+//!    that travelled k segments carry Φ ρ^(k−1) in total, k = 1, 2, 3
+//!    before roulette and k = 6 after it; every photon lies on the sphere
+//!    with `wi` pointing back inside; none is kept on glass (the caustic
+//!    scene);
+//! 3. the whole photon mapper in the furnace: L = 1 exactly (no bias: the
+//!    photon density is uniform, and on a sphere a cap of chord radius r
+//!    has area π r² exactly), with the k nearest and with a fixed radius,
+//!    over [`FURNACE_MAPS`] independent photon maps;
+//! 4. the caustic scene tile by tile against the renderer's photon mapping
+//!    with the same photons, radius and roulette ([`compare_caustic`]): the
+//!    student's tile means over [`STUDENT_MAPS`] independent photon maps
+//!    against the reference's over [`REFERENCE_MAPS`].
+//!
+//! Tolerances: exact values to 1e-4 relative; the means of layers 1–3
+//! |z| ≤ 5.5 with the student's own standard error (false failure below
+//! 4e-8 per channel for layers 1 and 2; for layer 3, 40 maps, Student's t
+//! with 39 degrees of freedom: below 3e-6 per case); layer 4 at
+//! family-wise α = 1e-4 with the t quantile of [`STUDENT_MAPS`] − 1
+//! degrees of freedom (the tile means of independent photon maps are
+//! independent, so the student's variance estimate includes the photon
+//! map's randomness; pixels of one map are not independent of each other,
+//! which is why the variance is taken over maps, tile by tile). Measured:
+//! over 25 seeds of the reference solution the largest |z| stayed below
+//! 0.52 of the threshold, over 24 of a fixture with another roulette below
+//! 0.60 (`check_grader`'s ignored `ex17_caustic_comparison_over_seeds`);
+//! the whole grading takes about 1 s in the test profile.
+
+use std::path::{Path, PathBuf};
+
+use exercises::plug::{StudentPhotonMapping, trace_photons_with};
+use raytracer::brdf::{Brdf, Lambert, Phong, Texture};
+use raytracer::film::Image;
+use raytracer::frame::Frame;
+use raytracer::integrator::photon::{Photon, photon_sample_index};
+use raytracer::integrator::photon_map::{PhotonMap, Search};
+use raytracer::integrator::{Integrator, PhotonMapping, PhotonSettings};
+use raytracer::math::{Color, PI, Ray, Vec2, Vec3, Vec3A};
+use raytracer::metrics::tile_means;
+use raytracer::render::{RenderOptions, render};
+use raytracer::sampling::Sampler;
+use raytracer::sampling::warp::concentric_disk;
+use raytracer::scene::{Interaction, Scene};
+
+use crate::pictures::write_enlarged;
+use crate::stats::{MeanVar, fmt3, output_dir};
+
+/// The signatures of exercise 17.
+pub use exercises::plug::{PhotonRadianceFn as RadianceFn, TracePhotonPathFn as TraceFn};
+
+/// Trials of the uniform-density estimate, photons per trial, k.
+pub const TRIALS: u64 = 1_000;
+pub const PHOTONS: u64 = 400;
+pub const K: usize = 20;
+
+/// Light paths of the furnace's flux test.
+pub const FLUX_PATHS: u64 = 4_000;
+/// Roulette from this many bounces on in the flux test.
+pub const FLUX_RR: u32 = 3;
+
+/// Independent photon maps of the whole mapper in the furnace, and their size.
+pub const FURNACE_MAPS: u64 = 40;
+pub const FURNACE_PATHS: u64 = 1_000;
+
+/// Flux emitted into the furnace: π L_e A = π · 0.5 · 4π.
+const FURNACE_FLUX: f32 = 2.0 * PI * PI;
+
+// ---------------------------------------------------------------------------
+// 1. The estimate, exactly.
+
+/// A case: the map, the hit, its BRDF, the search.
+type Case = (PhotonMap, Interaction, Brdf, Search);
+
+/// The usual mistakes of the estimate, computed by [`variant`].
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum V {
+    #[cfg_attr(not(test), allow(dead_code))]
+    Right,
+    BoxKernel,
+    NoPi,
+    RadiusNotSquared,
+    HalfRadius,
+    KPlusOne,
+    MeanDistance,
+    FewerFarthest,
+    AllWithinMax,
+    LinearKernel,
+    Cosine,
+    WorldFrame,
+    TravelDirection,
+}
+
+/// What a solution that makes mistake `v` answers in case `c`.
+fn variant((map, it, brdf, search): &Case, v: V) -> Color {
+    let mut near: Vec<(f32, Photon)> = Vec::new();
+    map.for_each_within(
+        it.p,
+        search.max_radius(),
+        |_| true,
+        |_, ph, d2| near.push((d2, *ph)),
+    );
+    near.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut r2 = match *search {
+        Search::Radius(r) => r * r,
+        Search::Nearest { k, max_radius } => {
+            if near.len() > k {
+                match v {
+                    V::KPlusOne => near[k].0,
+                    V::MeanDistance => {
+                        let m = near[..k].iter().map(|p| p.0.sqrt()).sum::<f32>() / k as f32;
+                        m * m
+                    }
+                    V::AllWithinMax => max_radius * max_radius,
+                    _ => near[k - 1].0,
+                }
+            } else if v == V::FewerFarthest {
+                near.last().map_or(0.0, |p| p.0)
+            } else {
+                max_radius * max_radius
+            }
+        }
+    };
+    if v == V::HalfRadius {
+        r2 /= 4.0;
+    }
+    if r2 <= 0.0 {
+        return Color::ZERO;
+    }
+    let wo = it.frame.to_local(it.wo);
+    let mut l = Color::ZERO;
+    for &(d2, ph) in &near {
+        if d2 >= r2 {
+            continue;
+        }
+        let kernel = match v {
+            V::BoxKernel => 1.0 / (PI * r2),
+            V::NoPi => 2.0 / r2 * (1.0 - d2 / r2),
+            V::RadiusNotSquared => 2.0 / (PI * r2.sqrt()) * (1.0 - d2 / r2),
+            V::LinearKernel => 2.0 / (PI * r2) * (1.0 - (d2 / r2).sqrt()),
+            _ => 2.0 / (PI * r2) * (1.0 - d2 / r2),
+        };
+        let wi_world = Vec3A::from(ph.wi);
+        let f = match v {
+            V::WorldFrame => brdf.eval(it.wo, wi_world, it.uv),
+            V::TravelDirection => brdf.eval(wo, it.frame.to_local(-wi_world), it.uv),
+            _ => brdf.eval(wo, it.frame.to_local(wi_world), it.uv),
+        };
+        let cos = if v == V::Cosine {
+            it.frame.n.dot(wi_world).abs()
+        } else {
+            1.0
+        };
+        l += f * Color::from(ph.power) * (kernel * cos);
+    }
+    l
+}
+
+/// A hit at `x` with normal `n`, viewed from `wo`.
+fn hit(x: Vec3A, n: Vec3A, wo: Vec3A) -> Interaction {
+    Interaction {
+        p: x,
+        ng: n,
+        frame: Frame::from_normal(n),
+        uv: Vec2::ZERO,
+        wo: wo.normalize(),
+        t: 1.0,
+        shape: 0,
+    }
+}
+
+/// `n` photons around `it.p` in its tangent plane, at distances up to
+/// `reach`, from directions all over the upper hemisphere, with varied
+/// colours (a fixed stream of numbers per `seed`).
+fn photons_around(it: &Interaction, n: u32, reach: f32, seed: u64) -> Vec<Photon> {
+    (0..n)
+        .map(|i| {
+            let mut s = Sampler::new(seed, i as u64, 0);
+            let (a, b, c) = (s.next_2d(), s.next_2d(), s.next_2d());
+            let d = reach * a.x.sqrt();
+            let phi = 2.0 * PI * a.y;
+            let local = Vec3A::new(d * phi.cos(), d * phi.sin(), 0.0);
+            let z = 0.05 + 0.95 * b.x;
+            let r = (1.0 - z * z).sqrt();
+            let wi = Vec3A::new(r * (2.0 * PI * b.y).cos(), r * (2.0 * PI * b.y).sin(), z);
+            Photon {
+                p: Vec3::from(it.p + it.frame.to_world(local)),
+                wi: Vec3::from(it.frame.to_world(wi)),
+                power: Vec3::new(0.2 + c.x, 0.3 + 0.5 * c.y, 1.2 - c.x),
+                segments: 2,
+            }
+        })
+        .collect()
+}
+
+fn cases() -> Vec<Case> {
+    let glossy = Brdf::Phong(Phong {
+        albedo: Color::new(0.8, 0.6, 0.4),
+        exponent: 3.0,
+    });
+    let diffuse = Brdf::Lambert(Lambert {
+        albedo: Texture::Constant(Color::new(0.7, 0.5, 0.3)),
+    });
+    let tilted = Vec3A::new(0.3, 1.0, 0.2).normalize();
+    let it = hit(
+        Vec3A::new(0.2, -0.1, 0.4),
+        tilted,
+        Vec3A::new(-0.4, 1.0, 0.3),
+    );
+    let it2 = hit(
+        Vec3A::new(-1.0, 0.5, 0.0),
+        Vec3A::Z,
+        Vec3A::new(0.5, 0.2, 1.0),
+    );
+    let map = |it: &Interaction, n, reach, seed, max_r| {
+        PhotonMap::build(photons_around(it, n, reach, seed), max_r)
+    };
+    vec![
+        // More candidates than k, some beyond the largest radius.
+        (
+            map(&it, 30, 0.8, 1, 0.5),
+            it,
+            glossy.clone(),
+            Search::Nearest {
+                k: 6,
+                max_radius: 0.5,
+            },
+        ),
+        (
+            map(&it2, 40, 0.5, 2, 0.4),
+            it2,
+            diffuse.clone(),
+            Search::Nearest {
+                k: 9,
+                max_radius: 0.4,
+            },
+        ),
+        // Fewer than k within the largest radius: all of them, over its disk.
+        (
+            map(&it, 7, 0.35, 3, 0.4),
+            it,
+            glossy.clone(),
+            Search::Nearest {
+                k: 10,
+                max_radius: 0.4,
+            },
+        ),
+        // A fixed radius.
+        (
+            map(&it2, 25, 0.6, 4, 0.35),
+            it2,
+            glossy.clone(),
+            Search::Radius(0.35),
+        ),
+        (
+            map(&it, 50, 0.5, 5, 0.25),
+            it,
+            diffuse,
+            Search::Nearest {
+                k: 12,
+                max_radius: 0.25,
+            },
+        ),
+        (map(&it2, 60, 1.2, 6, 0.9), it2, glossy, Search::Radius(0.9)),
+    ]
+}
+
+fn search_text(s: &Search) -> String {
+    match *s {
+        Search::Radius(r) => format!("Search::Radius({r})"),
+        Search::Nearest { k, max_radius } => {
+            format!("Search::Nearest {{ k: {k}, max_radius: {max_radius} }}")
+        }
+    }
+}
+
+/// Layer 1: the estimate over hand-made maps, then uniform photons.
+pub fn check_estimate(radiance: RadianceFn) -> Result<(), String> {
+    let cases = cases();
+    let got: Vec<Color> = cases
+        .iter()
+        .map(|(m, it, b, s)| radiance(m, it, b, *s))
+        .collect();
+    let expected: Vec<Color> = cases
+        .iter()
+        .map(|(m, it, b, s)| m.radiance(it, b, *s, |_| true))
+        .collect();
+    let same = |g: Color, e: Color| {
+        let scale = e.abs().max_element().max(1e-3);
+        (g - e).abs().max_element() <= 1e-4 * scale
+    };
+    if let Some(i) = (0..cases.len()).find(|&i| !same(got[i], expected[i])) {
+        let named: [(&str, V); 12] = [
+            (
+                "a plain average over the disk (a box kernel): a valid density estimate, but not the renderer's kernel — the task asks for Epanechnikov's, which falls to 0 at the disk's edge",
+                V::BoxKernel,
+            ),
+            (
+                "too bright by π: the kernel's normalization misses the π of the disk's area",
+                V::NoPi,
+            ),
+            (
+                "the disk's area uses the radius where its square belongs (PhotonMap::for_each_within hands you SQUARED distances)",
+                V::RadiusNotSquared,
+            ),
+            (
+                "the disk is half as wide as it should be: its radius is the distance of the k-th nearest photon (not half of it: a distance from x is a radius, not a diameter)",
+                V::HalfRadius,
+            ),
+            (
+                "the disk reaches one photon too far: its radius is the distance of the k-th nearest photon, not the (k+1)-th",
+                V::KPlusOne,
+            ),
+            (
+                "the disk's radius is the MEAN distance of the k nearest photons: it is the distance of the k-th nearest",
+                V::MeanDistance,
+            ),
+            (
+                "with k or fewer photons within max_radius, the disk shrank to the farthest of them: it is the whole disk of max_radius then",
+                V::FewerFarthest,
+            ),
+            (
+                "every photon within max_radius was used: only the k nearest count, the radius being the k-th's distance",
+                V::AllWithinMax,
+            ),
+            (
+                "the kernel falls linearly with the distance d: Epanechnikov's falls with d² (1 − d²/r²)",
+                V::LinearKernel,
+            ),
+            (
+                "the cosine at x is multiplied in: a photon's flux already carries it (flux through the disk = radiance · cos θ · dω · dA)",
+                V::Cosine,
+            ),
+            (
+                "f_r was evaluated with world-space directions: Brdf::eval takes them in the local frame of the hit",
+                V::WorldFrame,
+            ),
+            (
+                "f_r was evaluated with the photon's direction of travel: ω_p points from x back to where the photon came from (Photon::wi), like ω_o away from the surface",
+                V::TravelDirection,
+            ),
+        ];
+        // The mistake whose answers agree with the student's in every case.
+        let known = named
+            .iter()
+            .find(|(_, v)| {
+                cases
+                    .iter()
+                    .zip(&got)
+                    .all(|(c, &g)| same(g, variant(c, *v)))
+            })
+            .map(|(why, _)| why.to_string());
+        let why = known.unwrap_or_else(|| {
+            let ratio = got[i].element_sum() / expected[i].element_sum();
+            format!(
+                "not a mistake the grader knows; your estimate is ×{ratio:.3} the expected one in this case"
+            )
+        });
+        let (map, _, brdf, search) = &cases[i];
+        return Err(format!(
+            "photon_radiance({} photons, a {} BRDF, {}) is {}, expected {} — {why}",
+            map.len(),
+            if matches!(brdf, Brdf::Phong(_)) {
+                "glossy"
+            } else {
+                "diffuse"
+            },
+            search_text(search),
+            fmt3(got[i]),
+            fmt3(expected[i])
+        ));
+    }
+    // No photon near x.
+    let (_, it, brdf, _) = &cases[0];
+    let far = PhotonMap::build(
+        vec![Photon {
+            p: Vec3::from(it.p + Vec3A::splat(3.0)),
+            wi: Vec3::from(it.frame.n),
+            power: Vec3::ONE,
+            segments: 2,
+        }],
+        0.5,
+    );
+    let none = radiance(
+        &far,
+        it,
+        brdf,
+        Search::Nearest {
+            k: 3,
+            max_radius: 0.5,
+        },
+    );
+    if none != Color::ZERO {
+        return Err(format!(
+            "photon_radiance(no photon within max_radius) is {}: with no photon near x, no light is estimated",
+            fmt3(none)
+        ));
+    }
+    uniform_density(radiance)
+}
+
+/// The k nearest of uniform photons: no bias (see the module doc).
+fn uniform_density(radiance: RadianceFn) -> Result<(), String> {
+    let rho = 0.5;
+    let brdf = Brdf::Lambert(Lambert {
+        albedo: Texture::Constant(Color::splat(rho)),
+    });
+    let it = hit(Vec3A::ZERO, Vec3A::Y, Vec3A::new(0.2, 1.0, 0.1));
+    let mut stats = MeanVar::default();
+    for t in 0..TRIALS {
+        let photons = (0..PHOTONS)
+            .map(|i| {
+                let mut s = Sampler::new(16, t * PHOTONS + i, 0);
+                let d = concentric_disk(s.next_2d());
+                Photon {
+                    p: Vec3::new(d.x, 0.0, d.y),
+                    wi: Vec3::new(0.3, 0.9, -0.2).normalize(),
+                    power: Vec3::ONE,
+                    segments: 2,
+                }
+            })
+            .collect();
+        let map = PhotonMap::build(photons, 1.0);
+        stats.add(radiance(
+            &map,
+            &it,
+            &brdf,
+            Search::Nearest {
+                k: K,
+                max_radius: 1.0,
+            },
+        ));
+    }
+    stats.check(
+        "the k = 20 nearest of 400 photons of flux 1 spread uniformly over the unit disk around x (density 400/π), white-ish Lambert ρ = 0.5: L = ρ/π · 400/π",
+        Color::splat(rho / PI * PHOTONS as f32 / PI),
+        |ratio| {
+            ((ratio - K as f64 / (K - 1) as f64).abs() < 0.01).then(|| {
+                "k/(k − 1) too bright: the k-th photon, at the edge of the disk, must weigh 0"
+                    .into()
+            })
+        },
+    )
+}
+
+// ---------------------------------------------------------------------------
+// 2. The photon tracer.
+
+fn builtin(name: &str) -> Result<Scene, String> {
+    Scene::builtin(name).map_err(|e| format!("grader: {e}"))
+}
+
+/// Layer 2: the flux per depth in the furnace, where the photons lie, and
+/// none on glass.
+pub fn check_tracing(trace: TraceFn) -> Result<(), String> {
+    let furnace = builtin("furnace")?;
+    let depths = [1u32, 2, 3, 6];
+    let mut stats: Vec<MeanVar> = depths.iter().map(|_| MeanVar::default()).collect();
+    let mut photons = Vec::new();
+    for i in 0..FLUX_PATHS {
+        photons.clear();
+        let mut sampler = Sampler::new(5, i, photon_sample_index(0));
+        trace(&furnace, FLUX_PATHS, FLUX_RR, &mut sampler, &mut photons);
+        for ph in &photons {
+            let p = Vec3A::from(ph.p);
+            if (p.length() - 1.0).abs() > 1e-3 {
+                return Err(format!(
+                    "furnace (a unit sphere): a photon at {} is not on the sphere — store the hit point it.p",
+                    fmt3(p)
+                ));
+            }
+            let wi = Vec3A::from(ph.wi);
+            if (wi.length() - 1.0).abs() > 1e-3 || wi.dot(-p) <= 0.0 {
+                return Err(format!(
+                    "furnace: a photon at {} has wi = {}, which does not point back inside the sphere: wi is the unit direction from the hit back to where the photon came from",
+                    fmt3(p),
+                    fmt3(wi)
+                ));
+            }
+            if ph.segments == 0 {
+                return Err(
+                    "furnace: a photon with 0 segments: a photon that came straight from the light travelled 1"
+                        .into(),
+                );
+            }
+            if !Vec3A::from(ph.power).is_finite() {
+                return Err(format!(
+                    "furnace: a photon's power is {}: NaN or infinite (a division by a zero density?)",
+                    fmt3(Vec3A::from(ph.power))
+                ));
+            }
+        }
+        for (s, &k) in stats.iter_mut().zip(&depths) {
+            let total: Vec3A = photons
+                .iter()
+                .filter(|p| p.segments == k)
+                .map(|p| Vec3A::from(p.power))
+                .sum();
+            s.add(total * FLUX_PATHS as f32);
+        }
+    }
+    for (s, &k) in stats.iter().zip(&depths) {
+        let exact = FURNACE_FLUX * 0.5f32.powi(k as i32 - 1);
+        let n = FLUX_PATHS as f64;
+        s.check(
+            &format!(
+                "furnace (L_e = 0.5, ρ = 0.5, emitted flux Φ = 2π² W): the total flux of the photons that travelled {k} segment(s), N = {FLUX_PATHS} paths, roulette after {FLUX_RR} bounces, should be Φ·ρ^{} ",
+                k - 1
+            ),
+            Color::splat(exact),
+            |r| {
+                Some(if (r / n - 1.0).abs() < 0.05 {
+                    "×N: each path's flux is not shared among the N paths (paths)".into()
+                } else if (r - 2.0 / 3.0).abs() < 0.03 {
+                    "×2/3: the cosine at the hit is multiplied into the photon's flux: the flux arriving already carries it".into()
+                } else if k == 1 && (r - 2.0).abs() < 0.3 {
+                    format!("×{r:.2}, about 2 (the mean of 1/cos θ over cosine-distributed directions): the cosine at the light is missing (the emitted power integrates L_e cos θ)")
+                } else if k == 1 && (r - 0.5).abs() < 0.03 {
+                    "×1/2: the light emits on both sides here; half of the emitted directions leave the sphere and carry no photon — do not count them twice, and do not drop the density of the side".into()
+                } else if k == 1 {
+                    format!(
+                        "the photons straight from the light carry ×{r:.3} the light's power: the starting flux is L_e cos θ over the densities of the light's choice, of the point and of the direction, shared by the N paths"
+                    )
+                } else if k <= FLUX_RR + 1 {
+                    format!(
+                        "the photons straight from the light are right, those after {} bounce(s) carry ×{r:.3}: after a bounce the flux is multiplied by what BRDF sampling gives (f_r |cos θ_i| over the density)",
+                        k - 1
+                    )
+                } else if r < 1.0 {
+                    format!(
+                        "×{r:.3} after Russian roulette (every photon before it is right): a survivor's flux is not divided by its survival probability (roulette)"
+                    )
+                } else {
+                    format!(
+                        "×{r:.3} after Russian roulette (every photon before it is right): the survivors' flux is divided by more than their survival probability (roulette)"
+                    )
+                })
+            },
+        )?;
+    }
+    // No photon on glass: the caustic scene's glass ball.
+    let caustic = builtin("caustic")?;
+    let photons = trace_photons_with(&caustic, trace, 3_000, 5, 7);
+    for ph in &photons {
+        let (p, wi) = (Vec3A::from(ph.p), Vec3A::from(ph.wi));
+        let probe = Ray::new(p + 1e-3 * wi, -wi);
+        if let Some(it) = caustic.intersect(&probe)
+            && it.t < 2e-3
+            && caustic.brdf(&it).is_delta()
+        {
+            return Err(format!(
+                "caustic scene: a photon is stored on the glass ball at {}: photons are stored at specular hits (mirrors and glass) — the camera side follows those by ray tracing, so their photons count light twice",
+                fmt3(p)
+            ));
+        }
+    }
+    if !photons.iter().any(|p| p.segments >= 3) {
+        return Err(
+            "caustic scene: no photon travelled 3 or more segments: the photons that go through the glass ball (the caustic) are lost — a photon goes on after a specular hit without being stored".into(),
+        );
+    }
+    Ok(())
+}
+
+// ---------------------------------------------------------------------------
+// 3. The whole photon mapper in the furnace.
+
+/// Layer 3: L = 1 in the furnace, with the k nearest and with a radius.
+pub fn check_furnace(trace: TraceFn, radiance: RadianceFn) -> Result<(), String> {
+    let mut furnace = builtin("furnace")?;
+    furnace.set_resolution(8, 8);
+    for (what, k, radius) in [
+        ("the k = 20 nearest photons", 20, None),
+        ("a radius of 0.25", 20, Some(0.25f32)),
+    ] {
+        let mut stats = MeanVar::default();
+        for m in 0..FURNACE_MAPS {
+            let pm = StudentPhotonMapping::with(
+                trace,
+                radiance,
+                settings(FURNACE_PATHS, k, radius, 3, 100 + m),
+            );
+            let r = render(&furnace, &pm, &options(2, m));
+            stats.add(raytracer::metrics::mean(&r.film.image()));
+        }
+        stats.check(
+            &format!(
+                "the whole photon mapper in the emitting furnace ({FURNACE_MAPS} photon maps of {FURNACE_PATHS} paths, {what}): L = L_e + direct (light sample) + photons = 0.5 + 0.25 + 0.25 = 1, with no bias"
+            ),
+            Color::ONE,
+            |r| {
+                let f = (r - 0.75) / 0.25;
+                Some(format!(
+                    "the photons' share (0.25 of the 1) comes out ×{f:.3}{}",
+                    if (f - PI as f64).abs() < 0.1 {
+                        ": a π is missing from the kernel's normalization"
+                    } else if (f - 2.0 / 3.0).abs() < 0.05 {
+                        ": the cosine at x is multiplied in (the photon's flux already carries it)"
+                    } else if f < 0.05 {
+                        ": almost nothing comes from the photons"
+                    } else {
+                        ""
+                    }
+                ))
+            },
+        )?;
+    }
+    Ok(())
+}
+
+// ---------------------------------------------------------------------------
+// 4. The caustic scene against the renderer.
+
+/// The caustic comparison: 32×32, 8-pixel tiles.
+pub const SIZE: u32 = 32;
+pub const TILE: u32 = 8;
+/// Photon paths per map, the fixed radius, roulette, camera samples per
+/// pixel per map.
+pub const CAUSTIC_PATHS: u64 = 20_000;
+pub const CAUSTIC_RADIUS: f32 = 0.1;
+pub const CAUSTIC_RR: u32 = 5;
+pub const CAUSTIC_SPP: u32 = 4;
+/// Independent photon maps of the student's render, and of the reference.
+pub const STUDENT_MAPS: u64 = 32;
+pub const REFERENCE_MAPS: u64 = 1024;
+/// Family-wise false-failure probability of the comparison.
+pub const ALPHA: f64 = 1e-4;
+
+fn settings(
+    photons: u64,
+    k: usize,
+    radius: Option<f32>,
+    rr_depth: u32,
+    seed: u64,
+) -> PhotonSettings {
+    PhotonSettings {
+        photons,
+        k,
+        radius,
+        final_gather: 0,
+        max_depth: None,
+        rr_depth,
+        seed,
+    }
+}
+
+fn options(spp: u32, seed: u64) -> RenderOptions {
+    RenderOptions {
+        spp,
+        seed,
+        threads: None,
+        tile_size: 16,
+        progress: false,
+        label: String::new(),
+    }
+}
+
+fn caustic_scene() -> Result<Scene, String> {
+    let mut scene = builtin("caustic")?;
+    scene.set_resolution(SIZE, SIZE);
+    Ok(scene)
+}
+
+/// Where the reference is stored: the mean image, and an image of the
+/// variance of each tile's mean (every pixel of a tile holds that tile's
+/// variance times the tile's pixel count, so that
+/// `raytracer::metrics::tile_variances` gives it back).
+pub fn reference_paths() -> (PathBuf, PathBuf) {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("references");
+    (
+        dir.join("ex17_caustic.exr"),
+        dir.join("ex17_caustic-variance.exr"),
+    )
+}
+
+/// `maps` renders of `integrator(seed)` for seeds `first..first + maps`:
+/// the mean image and each tile's mean per render.
+fn many_maps(
+    scene: &Scene,
+    maps: u64,
+    first: u64,
+    integrator: impl Fn(u64) -> Box<dyn Integrator>,
+    progress: bool,
+) -> (Image, Vec<Vec<Color>>) {
+    let mut sum = Image::new(SIZE, SIZE);
+    let mut tiles = Vec::new();
+    for m in 0..maps {
+        let r = render(
+            scene,
+            integrator(first + m).as_ref(),
+            &options(CAUSTIC_SPP, first + m),
+        );
+        let img = r.film.image();
+        for (s, p) in sum.pixels.iter_mut().zip(&img.pixels) {
+            *s += *p;
+        }
+        tiles.push(tile_means(&img, TILE));
+        if progress {
+            eprint!("\r  map {}/{maps}", m + 1);
+        }
+    }
+    if progress {
+        eprintln!();
+    }
+    for s in &mut sum.pixels {
+        *s /= maps as f32;
+    }
+    (sum, tiles)
+}
+
+/// Per tile: the mean over the maps, and the variance of that mean.
+fn tile_stats(tiles: &[Vec<Color>]) -> Vec<(Vec3A, Vec3A)> {
+    let n = tiles.len() as f32;
+    (0..tiles[0].len())
+        .map(|t| {
+            let mean = tiles.iter().map(|m| m[t]).sum::<Vec3A>() / n;
+            let var = tiles
+                .iter()
+                .map(|m| (m[t] - mean) * (m[t] - mean))
+                .sum::<Vec3A>()
+                / (n - 1.0);
+            (mean, var / n)
+        })
+        .collect()
+}
+
+/// Renders the reference of the caustic comparison (the renderer's photon
+/// mapping, [`REFERENCE_MAPS`] independent maps) and stores it (the
+/// instructor's `lesson11 references`).
+pub fn render_reference(progress: bool) -> Result<PathBuf, String> {
+    let scene = caustic_scene()?;
+    let (mean, tiles) = many_maps(
+        &scene,
+        REFERENCE_MAPS,
+        1_000_000,
+        |seed| {
+            Box::new(
+                PhotonMapping::build(
+                    &scene,
+                    settings(CAUSTIC_PATHS, 50, Some(CAUSTIC_RADIUS), CAUSTIC_RR, seed),
+                    &std::sync::atomic::AtomicBool::new(false),
+                )
+                .expect("valid settings"),
+            )
+        },
+        progress,
+    );
+    let stats = tile_stats(&tiles);
+    let grid_x = SIZE.div_ceil(TILE);
+    let per_tile = (TILE * TILE) as f32;
+    let variance = Image::from_fn(SIZE, SIZE, |x, y| {
+        stats[(y / TILE * grid_x + x / TILE) as usize].1 * per_tile
+    });
+    let (mp, vp) = reference_paths();
+    std::fs::create_dir_all(mp.parent().unwrap()).map_err(|e| e.to_string())?;
+    mean.write_exr(&mp).map_err(|e| e.to_string())?;
+    variance.write_exr(&vp).map_err(|e| e.to_string())?;
+    Ok(mp)
+}
+
+/// The upper `p` quantile of Student's t with `nu` degrees of freedom
+/// (bisection on the tail, integrated numerically).
+pub fn t_quantile(nu: u32, p: f64) -> f64 {
+    let nu_f = nu as f64;
+    // Γ((ν+1)/2) / Γ(ν/2) for integer ν, by the half-integer recurrence.
+    // Γ((ν+1)/2) / Γ(ν/2): 1/√π at ν = 1, √π/2 at ν = 2, and ×(ν+1)/ν per step of 2.
+    let mut ratio = if nu % 2 == 1 {
+        1.0 / std::f64::consts::PI.sqrt()
+    } else {
+        std::f64::consts::PI.sqrt() / 2.0
+    };
+    let mut x = if nu % 2 == 1 { 1.0 } else { 2.0 };
+    while x < nu_f {
+        ratio *= (x + 1.0) / x;
+        x += 2.0;
+    }
+    let c = ratio / (nu_f * std::f64::consts::PI).sqrt();
+    let density = |t: f64| c * (1.0 + t * t / nu_f).powf(-(nu_f + 1.0) / 2.0);
+    // P(T > x) = ∫_0^1 f(x/u) x/u² du (Simpson).
+    let tail = |x: f64| {
+        let n = 4000;
+        let h = 1.0 / n as f64;
+        let g = |u: f64| {
+            if u <= 0.0 {
+                0.0
+            } else {
+                density(x / u) * x / (u * u)
+            }
+        };
+        let mut s = g(0.0) + g(1.0);
+        for i in 1..n {
+            s += g(i as f64 * h) * if i % 2 == 1 { 4.0 } else { 2.0 };
+        }
+        s * h / 3.0
+    };
+    let (mut lo, mut hi) = (0.5f64, 200.0f64);
+    for _ in 0..80 {
+        let mid = 0.5 * (lo + hi);
+        if tail(mid) > p {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// Layer 4: the student's photon mapper over [`STUDENT_MAPS`] independent
+/// maps (seed `seed`, `seed + 1`, …) against the stored reference, tile by
+/// tile: z = (m_a − m_b)/√(v_a + v_b) with the variances of the tile means
+/// over the maps; threshold the t quantile (ν = maps − 1) at α/(2·tests).
+pub fn compare_caustic(trace: TraceFn, radiance: RadianceFn, seed: u64) -> Result<(), String> {
+    compare_caustic_z(trace, radiance, seed, None)
+}
+
+/// [`compare_caustic`], also giving the largest |z| over the threshold
+/// (the self-test measures the margin over many seeds).
+pub fn compare_caustic_z(
+    trace: TraceFn,
+    radiance: RadianceFn,
+    seed: u64,
+    largest_z: Option<&mut f64>,
+) -> Result<(), String> {
+    let scene = caustic_scene()?;
+    let (mp, vp) = reference_paths();
+    let read = |p: &Path| {
+        Image::read_exr(p).map_err(|e| {
+            format!(
+                "grader: the reference {} is missing or unreadable ({e}): run `cargo run --release -p lesson11 -- references`",
+                p.display()
+            )
+        })
+    };
+    let (bi, bv) = (read(&mp)?, read(&vp)?);
+    let (ai, tiles) = many_maps(
+        &scene,
+        STUDENT_MAPS,
+        seed,
+        |s| {
+            Box::new(StudentPhotonMapping::with(
+                trace,
+                radiance,
+                settings(CAUSTIC_PATHS, 50, Some(CAUSTIC_RADIUS), CAUSTIC_RR, s),
+            ))
+        },
+        false,
+    );
+    if let Some(bad) = ai
+        .pixels
+        .iter()
+        .find(|p| !p.is_finite() || p.min_element() < 0.0)
+    {
+        return Err(format!(
+            "caustic scene: a pixel of your photon mapper is {}: NaN, infinite or negative",
+            fmt3(*bad)
+        ));
+    }
+    let a = tile_stats(&tiles);
+    let (mb, vb) = (
+        tile_means(&bi, TILE),
+        raytracer::metrics::tile_variances(&bv, TILE),
+    );
+    let tests = a.len() * 3;
+    let threshold = t_quantile(STUDENT_MAPS as u32 - 1, ALPHA / (2.0 * tests as f64));
+    let grid_x = SIZE.div_ceil(TILE);
+    let mut worst = (0.0f64, 0usize);
+    let mut z = Vec::with_capacity(a.len());
+    for (t, &(ma, va)) in a.iter().enumerate() {
+        let zt: [f32; 3] = std::array::from_fn(|c| {
+            let d = ma[c] as f64 - mb[t][c] as f64;
+            let v = va[c] as f64 + vb[t][c] as f64;
+            if d == 0.0 { 0.0 } else { (d / v.sqrt()) as f32 }
+        });
+        let zt = Color::from_array(zt);
+        if zt.abs().max_element() as f64 > worst.0 {
+            worst = (zt.abs().max_element() as f64, t);
+        }
+        z.push(zt);
+    }
+    if let Some(out) = largest_z {
+        *out = worst.0 / threshold;
+    }
+    if worst.0 <= threshold {
+        return Ok(());
+    }
+    let (t, tx, ty) = (worst.1, worst.1 as u32 % grid_x, worst.1 as u32 / grid_x);
+    let dir = output_dir();
+    let written = (|| -> std::io::Result<()> {
+        std::fs::create_dir_all(&dir)?;
+        write_enlarged(&ai, &dir.join("ex17_caustic_student.png"))?;
+        write_enlarged(&bi, &dir.join("ex17_caustic_reference.png"))?;
+        let zmap = Image::from_fn(SIZE, SIZE, |x, y| {
+            z[(y / TILE * grid_x + x / TILE) as usize].abs() / threshold as f32
+        });
+        write_enlarged(&zmap, &dir.join("ex17_caustic_z.png"))
+    })();
+    let ratio = a[t].0.element_sum() / mb[t].element_sum();
+    let mut msg = format!(
+        "caustic scene (a point light through a glass ball, {STUDENT_MAPS} photon maps of {CAUSTIC_PATHS} paths, radius {CAUSTIC_RADIUS}): your picture differs from the renderer's photon mapping in tile ({tx}, {ty}) (|z| = {:.1} > {threshold:.1}): your tile is ×{ratio:.3} the reference's",
+        worst.0
+    );
+    let whole =
+        raytracer::metrics::mean(&ai).element_sum() / raytracer::metrics::mean(&bi).element_sum();
+    msg.push_str(&format!("; the whole picture ×{whole:.3}"));
+    match written {
+        Ok(()) => msg.push_str(&format!(
+            "; see {}/ex17_caustic_{{student,reference,z}}.png",
+            dir.display()
+        )),
+        Err(e) => msg.push_str(&format!(" (could not write the images: {e})")),
+    }
+    Err(msg)
+}
+
+pub fn check(trace: TraceFn, radiance: RadianceFn) -> Result<(), String> {
+    check_estimate(radiance)?;
+    check_tracing(trace)?;
+    check_furnace(trace, radiance)?;
+    compare_caustic(trace, radiance, 11)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The grader's own estimate is the renderer's, in every case.
+    #[test]
+    fn the_right_variant_is_the_renderers_estimate() {
+        for (m, it, b, s) in cases() {
+            let (got, want) = (
+                variant(&(m.clone(), it, b.clone(), s), V::Right),
+                m.radiance(&it, &b, s, |_| true),
+            );
+            assert!(
+                (got - want).abs().max_element() <= 1e-5 * want.max_element().max(1e-3),
+                "{got} {want}"
+            );
+            assert!(want.max_element() > 0.0);
+        }
+    }
+
+    /// Known quantiles of Student's t.
+    #[test]
+    fn t_quantiles() {
+        for (nu, p, t) in [
+            (15, 0.025, 2.131),
+            (15, 0.0005, 4.073),
+            (39, 0.001, 3.313),
+            (1, 0.025, 12.706),
+            (4, 0.005, 4.604),
+        ] {
+            let got = t_quantile(nu, p);
+            assert!(
+                (got - t).abs() < 2e-3 * t,
+                "ν = {nu}, p = {p}: {got} vs {t}"
+            );
+        }
+    }
+}
