@@ -43,7 +43,7 @@ pub mod ex14_light_tracing;
 pub mod ex15_bdpt_connection;
 pub mod ex16_metropolis_step;
 pub mod ex17_photon_density;
-pub mod ex18_vpl_contribution;
+pub mod ex18_instant_radiosity;
 pub mod outcome;
 pub mod pictures;
 pub mod polygon;
@@ -129,8 +129,11 @@ pub const GRADERS: &[(&str, Check)] = &[
     ("ex17_photon_density", || {
         ex17_photon_density::check(ex::ex17_photon_density::photon_radiance)
     }),
-    ("ex18_vpl_contribution", || {
-        ex18_vpl_contribution::check(ex::ex18_vpl_contribution::vpl_contribution)
+    ("ex18_instant_radiosity", || {
+        ex18_instant_radiosity::check(
+            ex::ex18_instant_radiosity::generate_vpls,
+            ex::ex18_instant_radiosity::gather,
+        )
     }),
 ];
 

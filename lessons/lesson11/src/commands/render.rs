@@ -25,7 +25,7 @@ pub struct RenderArgs {
     /// Exposure in stops for the PNG (+1 doubles the brightness); the EXR is never changed.
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     pub exposure: f32,
-    /// Render with your own code from exercises/ (path: exercise 11, naive: 10, direct: 12) beside the renderer's integrator with the same estimator.
+    /// Render with your own code from exercises/ (path: exercise 11, naive: 10, direct: 12, vpl: 18) beside the renderer's integrator with the same estimator.
     #[arg(long)]
     pub student: bool,
 }

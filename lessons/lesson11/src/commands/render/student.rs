@@ -11,7 +11,7 @@ use crate::integrators::{IntegratorArgs, IntegratorKind};
 use crate::options::SceneArgs;
 use crate::render_files::render_to_files;
 
-/// The student's integrator (exercise 10, 11 or 12, by `--integrator`)
+/// The student's integrator (exercise 10, 11, 12 or 18, by `--integrator`)
 /// beside the renderer's integrator with the same estimator, and their tile
 /// z-test.
 pub fn run(
@@ -36,17 +36,26 @@ pub fn run(
             branching: ia.branching()[0],
         },
         IntegratorKind::Direct | IntegratorKind::PathNee => StudentRender::Direct,
+        IntegratorKind::Vpl => {
+            let s = ia.vpl(max_depth, rr_depth, options.seed)?;
+            StudentRender::Vpl {
+                paths: u32::try_from(s.paths).unwrap_or(u32::MAX),
+                clamp: (s.clamp > 0.0).then_some(s.clamp),
+                max_depth,
+                rr_depth,
+                seed: s.seed,
+            }
+        }
         IntegratorKind::Ao
         | IntegratorKind::Light
         | IntegratorKind::Bdpt
         | IntegratorKind::Mlt
         | IntegratorKind::Photon
         | IntegratorKind::Sppm
-        | IntegratorKind::Vpl
         | IntegratorKind::IrradianceCache => bail!(
-            "--student renders the exercises that are whole integrators: use --integrator path, naive or direct \
+            "--student renders the exercises that are whole integrators: use --integrator path, naive, direct or vpl \
              (light tracing, bidirectional tracing and Metropolis light transport are graded piece by piece: \
-             exercises 14, 15 and 16; photon mapping and instant radiosity: 17 and 18)"
+             exercises 14, 15 and 16; photon mapping: 17)"
         ),
     };
     let exercise = which.exercise();
