@@ -118,11 +118,10 @@ pub fn gather(scene: &Scene, x: &Interaction, vpls: &[Vpl], clamp: Option<f32>) 
                 n, light, weight, ..
             } => scene.emitted_by(*light, *n, -w) * *weight,
             Vpl::Surface { it, power, .. } => {
-                let f_y = scene.brdf(it).eval(
-                    it.frame.to_local(it.wo),
-                    it.frame.to_local(-w),
-                    it.uv,
-                );
+                let f_y =
+                    scene
+                        .brdf(it)
+                        .eval(it.frame.to_local(it.wo), it.frame.to_local(-w), it.uv);
                 f_y * *power
             }
         };

@@ -304,13 +304,8 @@ impl Integrator for StudentVpl {
                 (self.generate_vpls)(scene, self.paths, self.max_depth, self.rr_depth, &mut s)
             }),
             VplSets::PerSample => {
-                fresh = (self.generate_vpls)(
-                    scene,
-                    self.paths,
-                    self.max_depth,
-                    self.rr_depth,
-                    sampler,
-                );
+                fresh =
+                    (self.generate_vpls)(scene, self.paths, self.max_depth, self.rr_depth, sampler);
                 &fresh
             }
         };

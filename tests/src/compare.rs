@@ -88,8 +88,8 @@ pub const EX18_CORNELL: Comparison = Comparison {
     name: "ex18_cornell",
     scene: "cornell",
     size: 32,
-    tile: 8,
-    spp: 16,
+    tile: 16,
+    spp: 32,
     reference: || {
         Box::new(PathTracer {
             max_depth: Some(crate::ex18_instant_radiosity::MAX_DEPTH),
@@ -107,7 +107,7 @@ pub const EX18_CORNELL_CLAMPED: Comparison = Comparison {
     scene: "cornell",
     size: 32,
     tile: 8,
-    spp: 16,
+    spp: 64,
     reference: || {
         Box::new(crate::ex18_instant_radiosity::VplSetsReference::new(
             crate::ex18_instant_radiosity::CLAMP,

@@ -15,10 +15,9 @@
 //! clamped, it is the renderer's instant radiosity with the same bound,
 //! averaged over many independent VPL sets ([`VplSetsReference`]). The
 //! renderer samples the light for direct light where the student gathers
-//! the VPLs on the light; the bound [`CLAMP`] lies above every geometry
-//! term between the Cornell box's light and a surface (the largest, to the
-//! top of the tall box 0.78 below it, is 1.64), so clamping changes only
-//! the light of the surface VPLs in both.
+//! the VPLs on the light; the reference clamps the geometry term of its
+//! light sample at the same bound, so that both have the same expected
+//! value (the light of VPLs on the light, clamped).
 //!
 //! Tolerances: exact values to 1e-4 relative (deterministic: no false
 //! failures); |z| ≤ 5.5 per channel in 3 furnace cases (false failure
@@ -31,6 +30,7 @@ use std::sync::atomic::AtomicBool;
 
 use exercises::plug::{GatherFn, GenerateVplsFn, StudentVpl, Vpl, VplSets};
 use raytracer::film::Splat;
+use raytracer::integrator::visible_point::visible_point;
 use raytracer::integrator::{InstantRadiosity, Integrator, VplSettings, camera_ray};
 use raytracer::math::{Color, Ray, UVec2, Vec3A};
 use raytracer::sampling::Sampler;
@@ -40,9 +40,8 @@ use crate::compare::{EX18_CORNELL, EX18_CORNELL_CLAMPED, compare};
 use crate::ex10_naive_recursive::{LE, RHO, series, small_scene};
 use crate::stats::{MeanVar, Mistake, fmt3, recognise};
 
-/// The bound on G of the clamped Cornell comparison (above every geometry
-/// term between the light and a surface of the box: see the module doc).
-pub const CLAMP: f32 = 2.0;
+/// The bound on G of the clamped Cornell comparison (the slides' g_max).
+pub const CLAMP: f32 = 0.5;
 /// Max depth and roulette of the Cornell comparisons.
 pub const MAX_DEPTH: u32 = 5;
 pub const RR_DEPTH: u32 = 3;
@@ -646,7 +645,10 @@ pub const REFERENCE_PATHS: u64 = 16;
 
 /// The renderer's instant radiosity averaged over [`REFERENCE_SETS`]
 /// independent VPL sets: each pixel sample picks a set at random (its first
-/// number). With one set, the reference would carry that set's error in
+/// number) and gathers its VPLs with `InstantRadiosity::gather`; direct
+/// light comes from one light sample whose geometry term is clamped at the
+/// same bound (the renderer's own light sample is not clamped, the
+/// student's VPLs on the light are). With one set, the reference would carry that set's error in
 /// every pixel; the mixture's mean is the average over all the sets, whose
 /// error is that of 65,536 light paths, far below a tile's noise in the
 /// student's render.
@@ -675,7 +677,7 @@ impl Integrator for VplSetsReference {
         scene: &Scene,
         pixel: UVec2,
         sampler: &mut Sampler,
-        splats: &mut Vec<Splat>,
+        _splats: &mut Vec<Splat>,
     ) -> Color {
         let sets = self.sets.get_or_init(|| {
             (0..REFERENCE_SETS)
@@ -696,6 +698,52 @@ impl Integrator for VplSetsReference {
                 .collect()
         });
         let i = ((sampler.next_1d() * sets.len() as f32) as usize).min(sets.len() - 1);
-        sets[i].sample(scene, pixel, sampler, splats)
+        let ir = &sets[i];
+        // The renderer's instant radiosity, its light sample with G clamped
+        // as the VPLs' (see the type's doc).
+        let vp = visible_point(scene, pixel, sampler, Some(MAX_DEPTH));
+        let Some(x) = vp.hit else {
+            return vp.le;
+        };
+        if vp.depth >= MAX_DEPTH {
+            return vp.le;
+        }
+        let direct = clamped_light_sample(scene, &x, self.clamp, sampler);
+        vp.le + vp.beta * (direct + ir.gather(scene, &x, vp.depth))
     }
+}
+
+/// Direct light at `x` from one light sample, with the geometry term
+/// between `x` and the light point clamped at `clamp`: its expected value is
+/// the light of VPLs on the lights, clamped as in the exercise.
+fn clamped_light_sample(
+    scene: &Scene,
+    x: &Interaction,
+    clamp: f32,
+    sampler: &mut Sampler,
+) -> Color {
+    let Some(choice) = scene.choose_light(sampler.next_1d()) else {
+        return Color::ZERO;
+    };
+    let Some(ls) = choice.light.sample_li(x.p, sampler.next_2d()) else {
+        return Color::ZERO;
+    };
+    if ls.pdf_w <= 0.0 || ls.is_delta || !ls.dist.is_finite() {
+        return Color::ZERO;
+    }
+    let f_x = scene
+        .brdf(x)
+        .eval(x.frame.to_local(x.wo), x.frame.to_local(ls.wi), x.uv);
+    let cos_y = ls.n.dot(ls.wi).abs();
+    let d2 = ls.dist * ls.dist;
+    if f_x == Color::ZERO || cos_y == 0.0 {
+        return Color::ZERO;
+    }
+    // The density per unit area of the light point, and G.
+    let pdf_a = ls.pdf_w * cos_y / d2 * choice.pmf;
+    let g = (x.frame.n.dot(ls.wi).abs() * cos_y / d2).min(clamp);
+    if !scene.unoccluded(&Ray::spawn_to(x.p, x.ng, ls.p, ls.n)) {
+        return Color::ZERO;
+    }
+    f_x * g * ls.li / pdf_a
 }
