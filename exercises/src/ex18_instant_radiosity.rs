@@ -21,7 +21,7 @@
 //! # Step 1: `generate_vpls`
 //!
 //! Trace `paths` (N) light paths with the numbers of `sampler` and return
-//! their VPLs ([`crate::plug::Vpl`]):
+//! their VPLs (`Vpl`, in `exercises::plug`):
 //! - a path starts on a light: choose one (`Scene::choose_light`, with its
 //!   probability `LightChoice::pmf`) and emit a ray from it
 //!   (`Light::sample_le`: an `Emission` with its point, normal, `L_e`, the

@@ -37,7 +37,7 @@ pub fn run(
         },
         IntegratorKind::Direct | IntegratorKind::PathNee => StudentRender::Direct,
         IntegratorKind::Vpl => {
-            let s = ia.vpl(max_depth, rr_depth, options.seed)?;
+            let s = ia.biased.vpl(max_depth, rr_depth, options.seed)?;
             StudentRender::Vpl {
                 paths: u32::try_from(s.paths).unwrap_or(u32::MAX),
                 clamp: (s.clamp > 0.0).then_some(s.clamp),
