@@ -14,7 +14,7 @@
 //!    formula, the density of photons spread uniformly), z-tests that use the
 //!    student's own variance (exercises 9–16);
 //! 3. whole integrators: the Cornell box tile by tile against the renderer
-//!    ([`compare`]; exercises 11, 12).
+//!    ([`compare`]; exercises 11, 12, 18).
 //!
 //! Every grading function takes the student's functions as parameters
 //! (`exNN::check(f) -> Result<(), String>`), so the grader's self-test can
