@@ -75,8 +75,8 @@ pub mod ex16_metropolis;
 #[cfg_attr(feature = "solutions", path = "../solutions/ex17_photon_mapping.rs")]
 pub mod ex17_photon_mapping;
 #[allow(unused_variables)]
-#[cfg_attr(feature = "solutions", path = "../solutions/ex18_vpl_contribution.rs")]
-pub mod ex18_vpl_contribution;
+#[cfg_attr(feature = "solutions", path = "../solutions/ex18_instant_radiosity.rs")]
+pub mod ex18_instant_radiosity;
 
 /// The module names, in lecture order (they match `info.toml`).
 pub const MODULES: &[&str] = &[
@@ -97,7 +97,7 @@ pub const MODULES: &[&str] = &[
     "ex15_bdpt",
     "ex16_metropolis",
     "ex17_photon_mapping",
-    "ex18_vpl_contribution",
+    "ex18_instant_radiosity",
 ];
 
 /// Whether this build uses the reference solutions (feature `solutions`).

@@ -14,8 +14,8 @@ use raytracer::integrator::subpath::{camera_subpath, light_subpath};
 use raytracer::integrator::vertex::{Vertex, path_vertices, with_subpaths};
 use raytracer::integrator::visible_point::visible_point;
 use raytracer::integrator::{
-    Bdpt, DirectStrategy, Integrator, LightTracer, NaiveRecursive, PathTracer, PhotonMapping,
-    PhotonSettings, camera_ray, nee,
+    Bdpt, DirectStrategy, InstantRadiosity, Integrator, LightTracer, NaiveRecursive, PathTracer,
+    PhotonMapping, PhotonSettings, VplSettings, camera_ray, nee,
 };
 use raytracer::math::{Color, Ray, UVec2, Vec2, Vec3A};
 use raytracer::render::metropolis::chain::{PathSample, evaluate};
@@ -24,7 +24,7 @@ use raytracer::scene::{Interaction, Scene};
 
 use crate::{
     ex01_stereo_eyes, ex02_anaglyph, ex10_naive_recursive, ex11_path_tracing, ex12_nee, ex13_mis,
-    ex14_light_tracing, ex15_bdpt, ex17_photon_mapping,
+    ex14_light_tracing, ex15_bdpt, ex17_photon_mapping, ex18_instant_radiosity,
 };
 
 /// The two cameras of a stereo pair ("parallel" method): each eye from
@@ -497,11 +497,204 @@ pub fn photon_settings(
     }
 }
 
+/// A virtual point light of instant radiosity (exercise 18): a vertex of a
+/// light path and the light it stands for.
+#[derive(Clone, Copy, Debug)]
+pub enum Vpl {
+    /// `y_0`, on a light: it sends the light's own emission,
+    /// `L_e(y_0, ω)` (`Scene::emitted_by`), towards every `ω`, times
+    /// `weight`, the path's throughput at its first vertex, shared by the N
+    /// paths (per unit of `L_e`: it is an area, m²).
+    Light {
+        /// The point `y_0` on the light.
+        p: Vec3A,
+        /// The light's surface normal at `p` (as `Emission::n` gives it).
+        n: Vec3A,
+        /// The light's index in `Scene::lights` (for `Scene::emitted_by`).
+        light: u32,
+        weight: f32,
+    },
+    /// `y_k` (`k ≥ 1`), where a light path met a surface that is not a
+    /// mirror or glass: it reflects the flux `power` that arrived along its
+    /// incoming direction with its own BRDF.
+    Surface {
+        /// The hit: point, normals, `uv`, and `wo`, the unit direction back
+        /// along the light path (towards `y_{k−1}`).
+        it: Interaction,
+        /// `Φ_y`: the path's throughput at `y_k`, shared by the N paths (W).
+        power: Color,
+        /// `k`: segments from the light.
+        segments: u32,
+    },
+}
+
+/// The signature of exercise 18's `generate_vpls`: scene, number of light
+/// paths N, `max_depth`, `rr_depth`, the numbers of the light paths.
+pub type GenerateVplsFn = fn(&Scene, u32, Option<u32>, u32, &mut Sampler) -> Vec<Vpl>;
+
+/// The signature of exercise 18's `gather`: scene, camera hit, VPLs, clamp.
+pub type GatherFn = fn(&Scene, &Interaction, &[Vpl], Option<f32>) -> Color;
+
+/// Which VPLs a pixel sample of [`StudentVpl`] gathers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum VplSets {
+    /// One set for the whole image, traced once from `seed` (instant
+    /// radiosity as the lecture shows it: every pixel sees the same VPLs, so
+    /// their error is the same in every pixel and the noise does not show it).
+    Shared { seed: u64 },
+    /// A new set for every pixel sample, traced with the sample's own
+    /// numbers: the samples are independent, so a pixel's variance includes
+    /// the randomness of the VPLs (what the grader compares).
+    PerSample,
+}
+
+/// Instant radiosity around `generate_vpls` and `gather` (exercise 18; the
+/// student's with [`StudentVpl::new`]): at the first camera hit `x`, its own
+/// emission plus the light of the VPLs, gathered at `x`. A mirror or glass
+/// seen directly shows its emission only (the gather needs a BRDF to
+/// evaluate); lights are area lights.
+#[derive(Debug)]
+pub struct StudentVpl {
+    pub generate_vpls: GenerateVplsFn,
+    pub gather: GatherFn,
+    /// Light paths per VPL set (N).
+    pub paths: u32,
+    /// The bound on the geometry term (`None`: no clamping).
+    pub clamp: Option<f32>,
+    pub max_depth: Option<u32>,
+    pub rr_depth: u32,
+    pub sets: VplSets,
+    /// The shared set, traced at the first sample (the integrator is built
+    /// before it sees the scene).
+    shared: OnceLock<Vec<Vpl>>,
+}
+
+impl StudentVpl {
+    /// Instant radiosity with the given functions.
+    pub fn with(
+        generate_vpls: GenerateVplsFn,
+        gather: GatherFn,
+        paths: u32,
+        clamp: Option<f32>,
+        max_depth: Option<u32>,
+        rr_depth: u32,
+        sets: VplSets,
+    ) -> Self {
+        StudentVpl {
+            generate_vpls,
+            gather,
+            paths,
+            clamp,
+            max_depth,
+            rr_depth,
+            sets,
+            shared: OnceLock::new(),
+        }
+    }
+
+    /// The student's instant radiosity.
+    pub fn new(
+        paths: u32,
+        clamp: Option<f32>,
+        max_depth: Option<u32>,
+        rr_depth: u32,
+        sets: VplSets,
+    ) -> Self {
+        Self::with(
+            ex18_instant_radiosity::generate_vpls,
+            ex18_instant_radiosity::gather,
+            paths,
+            clamp,
+            max_depth,
+            rr_depth,
+            sets,
+        )
+    }
+}
+
+impl Integrator for StudentVpl {
+    fn name(&self) -> &'static str {
+        "student-vpl"
+    }
+
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        _: &mut Vec<Splat>,
+    ) -> Color {
+        if self.max_depth == Some(0) {
+            return Color::ZERO;
+        }
+        let ray = camera_ray(scene, pixel, sampler);
+        let Some(x) = scene.intersect(&ray) else {
+            return scene.escaped_radiance(ray.d);
+        };
+        let le = scene.emitted(&x);
+        if self.max_depth.is_some_and(|d| d < 2) || scene.brdf(&x).is_delta() {
+            return le;
+        }
+        let fresh;
+        let vpls: &[Vpl] = match self.sets {
+            VplSets::Shared { seed } => self.shared.get_or_init(|| {
+                let mut s = Sampler::new(seed, 0, photon_sample_index(1));
+                (self.generate_vpls)(scene, self.paths, self.max_depth, self.rr_depth, &mut s)
+            }),
+            VplSets::PerSample => {
+                fresh =
+                    (self.generate_vpls)(scene, self.paths, self.max_depth, self.rr_depth, sampler);
+                &fresh
+            }
+        };
+        le + (self.gather)(scene, &x, vpls, self.clamp)
+    }
+}
+
+/// The renderer's instant radiosity ([`InstantRadiosity`]), its VPLs traced
+/// at the first sample from the scene it is given (the integrator is built
+/// before it sees the scene).
+#[derive(Debug)]
+pub struct LazyInstantRadiosity {
+    pub settings: VplSettings,
+    built: OnceLock<InstantRadiosity>,
+}
+
+impl LazyInstantRadiosity {
+    pub fn new(settings: VplSettings) -> Self {
+        LazyInstantRadiosity {
+            settings,
+            built: OnceLock::new(),
+        }
+    }
+}
+
+impl Integrator for LazyInstantRadiosity {
+    fn name(&self) -> &'static str {
+        "vpl"
+    }
+
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        splats: &mut Vec<Splat>,
+    ) -> Color {
+        self.built
+            .get_or_init(|| {
+                InstantRadiosity::build(scene, self.settings, &AtomicBool::new(false))
+                    .expect("instant radiosity's settings are checked where they are made")
+            })
+            .sample(scene, pixel, sampler, splats)
+    }
+}
+
 /// What `lesson11 render --student` renders: one of the exercises that are
 /// whole integrators, with the renderer's integrator that computes the same
 /// estimator beside it, so that the two pictures compare like with like
 /// (the same expected value *and* the same kind of noise).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum StudentRender {
     /// Exercise 10: naive recursion with one branching factor.
     Naive { max_depth: u32, branching: u32 },
@@ -552,6 +745,15 @@ pub enum StudentRender {
         rr_depth: u32,
         seed: u64,
     },
+    /// Exercise 18: instant radiosity, one VPL set of `paths` light paths
+    /// traced from `seed`, G clamped at `clamp` (`None`: not clamped).
+    Vpl {
+        paths: u32,
+        clamp: Option<f32>,
+        max_depth: Option<u32>,
+        rr_depth: u32,
+        seed: u64,
+    },
 }
 
 impl StudentRender {
@@ -566,6 +768,7 @@ impl StudentRender {
             StudentRender::Bdpt { .. } => "ex15_bdpt",
             StudentRender::Metropolis { .. } => "ex16_metropolis",
             StudentRender::Photon { .. } => "ex17_photon_mapping",
+            StudentRender::Vpl { .. } => "ex18_instant_radiosity",
         }
     }
 
@@ -622,6 +825,19 @@ impl StudentRender {
                 rr_depth,
                 seed,
             ))),
+            StudentRender::Vpl {
+                paths,
+                clamp,
+                max_depth,
+                rr_depth,
+                seed,
+            } => Box::new(StudentVpl::new(
+                paths,
+                clamp,
+                max_depth,
+                rr_depth,
+                VplSets::Shared { seed },
+            )),
         }
     }
 
@@ -697,6 +913,19 @@ impl StudentRender {
                 rr_depth,
                 seed,
             ))),
+            StudentRender::Vpl {
+                paths,
+                clamp,
+                max_depth,
+                rr_depth,
+                seed,
+            } => Box::new(LazyInstantRadiosity::new(VplSettings {
+                paths: paths as u64,
+                clamp: clamp.unwrap_or(0.0),
+                max_depth,
+                rr_depth,
+                seed,
+            })),
         }
     }
 
@@ -737,6 +966,9 @@ impl StudentRender {
                 radius_bits: None, ..
             } => {
                 "the renderer's photon mapping with the same photon count, k and roulette, no final gathering; it searches the k nearest in its caustic and global maps apart, yours in one map of both, so the two differ a little in bias where the caustic meets indirect light (with --radius they are the same estimate); each picture has its own photon map, whose noise the tile z-test below does not count"
+            }
+            StudentRender::Vpl { .. } => {
+                "the renderer's instant radiosity (`--integrator vpl`) with the same number of light paths, clamp, depth and seed; it samples the light for direct light where yours gathers the VPLs on the light, and its VPL set is another draw than yours: the same mean over VPL sets, but each picture carries its own set's error, the same in every pixel, which the tile z-test does not see as noise"
             }
         }
     }

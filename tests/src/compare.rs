@@ -188,6 +188,40 @@ pub const EX13_VEACH: Comparison = Comparison {
     },
 };
 
+/// Exercise 18 without clamping: instant radiosity with a new VPL set per
+/// pixel sample is unbiased, so its reference is the path tracer at the same
+/// depth (MIS: the same expected value, lighter tails).
+pub const EX18_CORNELL: Comparison = Comparison {
+    name: "ex18_cornell",
+    scene: "cornell",
+    size: 32,
+    tile: 16,
+    spp: 32,
+    reference: || {
+        Box::new(PathTracer {
+            max_depth: Some(crate::ex18_instant_radiosity::MAX_DEPTH),
+            rr_depth: crate::ex18_instant_radiosity::RR_DEPTH,
+            strategy: DirectStrategy::Mis,
+        })
+    },
+};
+
+/// Exercise 18 with G clamped: the renderer's instant radiosity with the
+/// same bound, over many independent VPL sets
+/// ([`crate::ex18_instant_radiosity::VplSetsReference`]).
+pub const EX18_CORNELL_CLAMPED: Comparison = Comparison {
+    name: "ex18_cornell_clamped",
+    scene: "cornell",
+    size: 32,
+    tile: 8,
+    spp: 64,
+    reference: || {
+        Box::new(crate::ex18_instant_radiosity::VplSetsReference::new(
+            crate::ex18_instant_radiosity::CLAMP,
+        ))
+    },
+};
+
 /// Every comparison with a stored reference (`lesson11 references` renders them).
 pub const COMPARISONS: &[&Comparison] = &[
     &EX11_CORNELL,
@@ -198,6 +232,8 @@ pub const COMPARISONS: &[&Comparison] = &[
     &EX14_CAUSTIC,
     &EX15_CORNELL,
     &EX16_DOOR,
+    &EX18_CORNELL,
+    &EX18_CORNELL_CLAMPED,
 ];
 
 pub fn options(spp: u32, seed: u64, progress: bool, label: &str) -> RenderOptions {

@@ -14,9 +14,9 @@
 //!    formula, the density of photons spread uniformly), z-tests that use the
 //!    student's own variance (exercises 9–16);
 //! 3. whole integrators: the Cornell box tile by tile against the renderer
-//!    ([`compare`]; exercises 11, 12, 15: the renderer's path tracer or
-//!    bidirectional path tracer renders the reference), and the `caustic`
-//!    scene against its light tracer (exercise 14).
+//!    ([`compare`]; exercises 11, 12, 15, 18: the renderer's path tracer,
+//!    bidirectional path tracer or instant radiosity renders the reference),
+//!    and the `caustic` scene against its light tracer (exercise 14).
 //!
 //! Every grading function takes the student's functions as parameters
 //! (`exNN::check(f) -> Result<(), String>`), so the grader's self-test can
@@ -46,7 +46,7 @@ pub mod ex14_light_tracing;
 pub mod ex15_bdpt;
 pub mod ex16_metropolis;
 pub mod ex17_photon_mapping;
-pub mod ex18_vpl_contribution;
+pub mod ex18_instant_radiosity;
 pub mod outcome;
 pub mod pictures;
 pub mod polygon;
@@ -136,8 +136,11 @@ pub const GRADERS: &[(&str, Check)] = &[
             ex::ex17_photon_mapping::photon_radiance,
         )
     }),
-    ("ex18_vpl_contribution", || {
-        ex18_vpl_contribution::check(ex::ex18_vpl_contribution::vpl_contribution)
+    ("ex18_instant_radiosity", || {
+        ex18_instant_radiosity::check(
+            ex::ex18_instant_radiosity::generate_vpls,
+            ex::ex18_instant_radiosity::gather,
+        )
     }),
 ];
 

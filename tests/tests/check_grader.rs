@@ -792,25 +792,66 @@ fn ex17_caustic_comparison_over_seeds() {
 }
 
 #[test]
-fn ex18_vpl_contribution() {
+fn ex18_instant_radiosity() {
+    use ex18_instant_radiosity::check;
+    use fixtures::ex18::*;
     passes(
-        "unnormalized edge over r⁴, the bound as a branch",
-        ex18_vpl_contribution::check(correct::vpl_contribution),
+        "variant A: f64, other order of numbers, fixed roulette",
+        check(generate::<A, NONE>, gather::<A, NONE>),
+    );
+    passes(
+        "variant B: roulette from the mean throughput, weight from the area",
+        check(generate::<B, NONE>, gather::<B, NONE>),
     );
     fails(
-        "not clamped",
-        ex18_vpl_contribution::check(wrong::vpl_unclamped),
-        "G is not clamped",
+        "signed G",
+        check(generate::<A, NONE>, gather::<A, SIGNED>),
+        "signed cosines",
     );
     fails(
-        "min(G, 0)",
-        ex18_vpl_contribution::check(wrong::vpl_clamp_zero),
-        "a bound of 0 means no clamping",
+        "the VPL's cosine with its incoming direction",
+        check(generate::<A, NONE>, gather::<A, INCOMING>),
+        "cosine at the wrong end",
     );
     fails(
-        "light clamped",
-        ex18_vpl_contribution::check(wrong::vpl_clamp_light),
-        "bounds the geometry term G, not the light",
+        "r for r²",
+        check(generate::<A, NONE>, gather::<A, R>),
+        "r for r²",
+    );
+    fails(
+        "clamp on the contribution",
+        check(generate::<A, NONE>, gather::<A, CLAMP_LIGHT>),
+        "applied to the contribution",
+    );
+    fails(
+        "clamp where none is asked",
+        check(generate::<A, NONE>, gather::<A, CLAMP_ALWAYS>),
+        "where none is asked",
+    );
+    fails(
+        "no shadow ray",
+        check(generate::<A, NONE>, gather::<A, NO_SHADOW>),
+        "shadow ray",
+    );
+    fails(
+        "flux not divided by N",
+        check(generate::<A, NOT_SHARED>, gather::<A, NONE>),
+        "1/N of its path's flux",
+    );
+    fails(
+        "no VPL on the light",
+        check(generate::<A, NO_LIGHT_VPL>, gather::<A, NONE>),
+        "direct light is missing",
+    );
+    fails(
+        "VPLs on mirrors",
+        check(generate::<A, SPECULAR_VPL>, gather::<A, NONE>),
+        "specular hits",
+    );
+    fails(
+        "roulette without division",
+        check(generate::<A, ROULETTE_NO_DIV>, gather::<A, NONE>),
+        "roulette without division",
     );
 }
 

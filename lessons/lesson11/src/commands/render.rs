@@ -25,7 +25,7 @@ pub struct RenderArgs {
     /// Exposure in stops for the PNG (+1 doubles the brightness); the EXR is never changed.
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     pub exposure: f32,
-    /// Render with your own code from exercises/ (naive: exercise 10, path-brdf: 11, direct and path-nee: 12, path: 13, light: 14, bdpt: 15, mlt: 16, photon: 17) beside the renderer's integrator with the same estimator.
+    /// Render with your own code from exercises/ (naive: exercise 10, path-brdf: 11, direct and path-nee: 12, path: 13, light: 14, bdpt: 15, mlt: 16, photon: 17, vpl: 18) beside the renderer's integrator with the same estimator.
     #[arg(long)]
     pub student: bool,
 }

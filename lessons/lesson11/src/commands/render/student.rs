@@ -15,9 +15,9 @@ use crate::integrators::{IntegratorArgs, IntegratorKind, IntegratorPlan};
 use crate::options::SceneArgs;
 use crate::render_files::{OutputFiles, render_to_files};
 
-/// The student's integrator (exercise 10–15 and 17, by `--integrator`:
-/// naive, path-brdf, direct or path-nee, path, light, bdpt, photon; 16 with
-/// `--integrator mlt`, see [`run_metropolis`]) beside the renderer's
+/// The student's integrator (exercises 10–15, 17 and 18, by `--integrator`:
+/// naive, path-brdf, direct or path-nee, path, light, bdpt, photon, vpl; 16
+/// with `--integrator mlt`, see [`run_metropolis`]) beside the renderer's
 /// integrator with the same estimator, and their tile z-test.
 pub fn run(
     scene_args: &SceneArgs,
@@ -80,13 +80,20 @@ pub fn run(
                 seed: options.seed,
             }
         }
-        IntegratorKind::Ao
-        | IntegratorKind::Sppm
-        | IntegratorKind::Vpl
-        | IntegratorKind::IrradianceCache => bail!(
+        IntegratorKind::Vpl => {
+            let s = ia.biased.vpl(max_depth, rr_depth, options.seed)?;
+            StudentRender::Vpl {
+                paths: u32::try_from(s.paths).unwrap_or(u32::MAX),
+                clamp: (s.clamp > 0.0).then_some(s.clamp),
+                max_depth,
+                rr_depth,
+                seed: s.seed,
+            }
+        }
+        IntegratorKind::Ao | IntegratorKind::Sppm | IntegratorKind::IrradianceCache => bail!(
             "--student renders the exercises that are whole integrators: use --integrator naive (exercise 10), \
-             path-brdf (11), direct or path-nee (12), path (13), light (14), bdpt (15), mlt (16) \
-             or photon (17) (instant radiosity: 18)"
+             path-brdf (11), direct or path-nee (12), path (13), light (14), bdpt (15), mlt (16), \
+             photon (17) or vpl (18); ambient occlusion, SPPM and irradiance caching are the renderer's only"
         ),
     };
     let exercise = which.exercise();
