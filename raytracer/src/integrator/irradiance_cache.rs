@@ -650,6 +650,9 @@ pub fn incoming_indirect(
 ) -> (Color, f32) {
     let d = max_depth.unwrap_or(u32::MAX);
     let (mut l, mut beta) = (Color::ZERO, Color::ONE);
+    // Undoes the 1/η² that refraction puts into a radiance throughput, for
+    // the roulette only (as the path tracer does).
+    let mut eta_scale = 1.0f32;
     let mut count_emission = false;
     let mut first_t = f32::INFINITY;
     let mut bounces = 0u32;
@@ -662,7 +665,8 @@ pub fn incoming_indirect(
         if bounces == 0 {
             first_t = it.t;
         }
-        if depth >= d || bounces >= 64 {
+        // Unlimited depth is unlimited: roulette ends the path.
+        if depth >= d {
             break;
         }
         let brdf = scene.brdf(&it);
@@ -673,12 +677,13 @@ pub fn incoming_indirect(
             break;
         };
         beta *= c.weight;
+        eta_scale *= c.sample.eta * c.sample.eta;
         count_emission = c.sample.is_delta;
         ray = c.ray;
         depth += 1;
         bounces += 1;
         if bounces >= rr_depth {
-            let Some(q) = russian_roulette(beta, 1.0, sampler) else {
+            let Some(q) = russian_roulette(beta, eta_scale, sampler) else {
                 break;
             };
             beta /= q;

@@ -97,8 +97,9 @@ pub struct Vpl {
     pub segments: u32,
 }
 
-/// `G(x, y)` clamped at `clamp` (0: not clamped), with `w` the unit
-/// direction from x to y and `d2` their squared distance.
+/// The geometry term `G(x, y)` of a connection from the cosines at its two
+/// ends (`cos_x`, `cos_y`, taken as magnitudes) and the squared distance
+/// `d2`, clamped at `clamp` (0: not clamped).
 #[inline]
 pub fn clamped_geometry(cos_x: f32, cos_y: f32, d2: f32, clamp: f32) -> f32 {
     let g = cos_x.abs() * cos_y.abs() / d2;
