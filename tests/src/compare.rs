@@ -271,6 +271,13 @@ pub fn render_reference(c: &Comparison, progress: bool) -> Result<PathBuf, Strin
         (c.reference)().as_ref(),
         &options(REFERENCE_SPP, 1, progress, c.name),
     );
+    if result.stats.interrupted {
+        // A partial render is no reference: the stored files stay as they were.
+        return Err(format!(
+            "{}: interrupted, the stored reference was left as it was",
+            c.name
+        ));
+    }
     let (mean, variance) = reference_paths(c);
     std::fs::create_dir_all(mean.parent().unwrap()).map_err(|e| e.to_string())?;
     result.film.write_exr(&mean).map_err(|e| e.to_string())?;

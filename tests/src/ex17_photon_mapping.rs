@@ -754,6 +754,10 @@ pub fn render_reference(progress: bool) -> Result<PathBuf, String> {
         },
         progress,
     );
+    if raytracer::render::interrupted() {
+        // Some maps were cut short: the stored files stay as they were.
+        return Err("ex17_caustic: interrupted, the stored reference was left as it was".into());
+    }
     let stats = tile_stats(&tiles);
     let grid_x = SIZE.div_ceil(TILE);
     let per_tile = (TILE * TILE) as f32;
