@@ -207,7 +207,7 @@ pub fn check_constant(chain: MetropolisChainFn) -> Result<(), String> {
     } else if near(1.0 / 3.0) {
         "the picture is too dark by the factor b̂ = 3: the splats leave out the normalization b̂, which only the bootstrap knows".to_string()
     } else if near(3.0) {
-        "the picture is too bright by the factor f = 3: the splats are not divided by the scalar contribution I of their state (the chain already visits states in proportion to I)".to_string()
+        "the picture is too bright by the factor f = 3: the splats are not divided by the scalar contribution f of their state (the chain already visits states in proportion to f)".to_string()
     } else if near(steps as f64) {
         format!(
             "the picture is too bright by the factor N = {steps}: the splats are not shared among the N mutations"

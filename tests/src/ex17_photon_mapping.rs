@@ -87,6 +87,7 @@ enum V {
     #[cfg_attr(not(test), allow(dead_code))]
     Right,
     BoxKernel,
+    BoxConstant,
     NoPi,
     RadiusNotSquared,
     HalfRadius,
@@ -144,6 +145,7 @@ fn variant((map, it, brdf, search): &Case, v: V) -> Color {
         }
         let kernel = match v {
             V::BoxKernel => 1.0 / (PI * r2),
+            V::BoxConstant => 1.0 / (PI * r2) * (1.0 - d2 / r2),
             V::NoPi => 2.0 / r2 * (1.0 - d2 / r2),
             V::RadiusNotSquared => 2.0 / (PI * r2.sqrt()) * (1.0 - d2 / r2),
             V::LinearKernel => 2.0 / (PI * r2) * (1.0 - (d2 / r2).sqrt()),
@@ -299,10 +301,14 @@ pub fn check_estimate(radiance: RadianceFn) -> Result<(), String> {
         (g - e).abs().max_element() <= 1e-4 * scale
     };
     if let Some(i) = (0..cases.len()).find(|&i| !same(got[i], expected[i])) {
-        let named: [(&str, V); 12] = [
+        let named: [(&str, V); 13] = [
             (
                 "a plain average over the disk (a box kernel): a valid density estimate, but not the renderer's kernel — the task asks for Epanechnikov's, which falls to 0 at the disk's edge",
                 V::BoxKernel,
+            ),
+            (
+                "too dark by half: the kernel has Epanechnikov's shape but a plain disk's constant — a kernel that falls to 0 at the edge must be higher in the middle to integrate to 1 over the disk",
+                V::BoxConstant,
             ),
             (
                 "too bright by π: the kernel's normalization misses the π of the disk's area",

@@ -245,6 +245,8 @@ struct Slip {
     no_f_y: bool,
     /// No BRDF at x.
     no_f_x: bool,
+    /// No cosine at a VPL on a surface (G with the cosine at x alone).
+    no_cos_surface: bool,
 }
 
 /// The light one VPL sends to `x`, with the slip `s`.
@@ -284,7 +286,13 @@ fn one(scene: &Scene, x: &Interaction, vpl: &Vpl, clamp: Option<f32>, s: Slip) -
         f_x
     };
     let cos_x = x.frame.n.dot(w);
-    let cos_y = if s.incoming { cos_in } else { n.dot(w) };
+    let cos_y = if s.incoming {
+        cos_in
+    } else if s.no_cos_surface && matches!(vpl, Vpl::Surface { .. }) {
+        1.0
+    } else {
+        n.dot(w)
+    };
     let mut g = if s.signed {
         -cos_x * cos_y
     } else {
@@ -464,7 +472,11 @@ fn check_gather(gather: GatherFn) -> Result<(), String> {
         no_f_x: true,
         ..Slip::default()
     });
-    let mistakes: [Mistake<Case, Color>; 8] = [
+    let no_cos_surface = slip(Slip {
+        no_cos_surface: true,
+        ..Slip::default()
+    });
+    let mistakes: [Mistake<Case, Color>; 9] = [
         (
             "signed cosines: your geometry term is negative where exactly one of the two normals faces away from the connection (the floor seen from below); G weighs how much the two surfaces see of each other, whichever way their normals point",
             &signed,
@@ -494,6 +506,10 @@ fn check_gather(gather: GatherFn) -> Result<(), String> {
             &no_f_y,
         ),
         ("the BRDF at x is missing", &no_f_x),
+        (
+            "the cosine at a VPL on a surface is missing: the geometry term has a cosine at each end of the connection, at the VPL too (its light leaves the surface towards x)",
+            &no_cos_surface,
+        ),
     ];
     let c = &cases[k];
     let why = recognise(&cases, &got, &mistakes, same).unwrap_or_else(|| {

@@ -50,6 +50,7 @@ pub mod ex18_instant_radiosity;
 pub mod outcome;
 pub mod pictures;
 pub mod polygon;
+pub mod shortcuts;
 pub mod stats;
 pub mod texts;
 pub mod watch;
@@ -146,10 +147,12 @@ pub const GRADERS: &[(&str, Check)] = &[
 
 /// Grades the student's exercise `name` (`None` if there is no such exercise).
 pub fn grade_exercise(name: &str) -> Option<Outcome> {
-    GRADERS
+    let check = GRADERS.iter().find(|(n, _)| *n == name)?.1;
+    let cut = exercises::registry()
         .iter()
-        .find(|(n, _)| *n == name)
-        .map(|(_, check)| grade(check))
+        .find(|e| e.name == name)
+        .and_then(shortcuts::shortcut);
+    Some(cut.map_or_else(|| grade(check), Outcome::Failed))
 }
 
 /// How long one exercise may take to grade. A correct solution takes well
@@ -175,16 +178,25 @@ pub fn grade_selected(
     timeout: Duration,
 ) -> Vec<Graded> {
     let reg: Vec<Exercise> = exercises::registry().into_iter().filter(keep).collect();
+    // A solution that calls the renderer's own answer fails before it runs.
+    let shortcuts: Vec<Option<String>> = reg.iter().map(shortcuts::shortcut).collect();
     let checks = reg
         .iter()
-        .map(|e| GRADERS.iter().find(|(n, _)| *n == e.name).map(|(_, c)| *c))
+        .zip(&shortcuts)
+        .map(|(e, cut)| {
+            if cut.is_some() {
+                return None;
+            }
+            GRADERS.iter().find(|(n, _)| *n == e.name).map(|(_, c)| *c)
+        })
         .collect();
     let results = grade_checks(checks, threads, timeout);
     reg.into_iter()
         .zip(results)
-        .map(|(exercise, (outcome, seconds))| Graded {
+        .zip(shortcuts)
+        .map(|((exercise, (outcome, seconds)), cut)| Graded {
             exercise,
-            outcome,
+            outcome: cut.map_or(outcome, Outcome::Failed),
             seconds,
         })
         .collect()

@@ -349,6 +349,20 @@ pub fn code_spans(text: &str) -> Vec<String> {
         .collect()
 }
 
+/// The text of every `.rs` file under `raytracer/src`, one after another.
+///
+/// # Panics
+/// If the folder cannot be read (a test's helper).
+pub fn raytracer_sources() -> String {
+    let mut files = Vec::new();
+    collect_rs(&repo_root().join("raytracer/src"), &mut files).expect("raytracer/src");
+    files
+        .iter()
+        .map(|f| std::fs::read_to_string(f).unwrap_or_default())
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
 fn collect_rs(dir: &Path, out: &mut Vec<PathBuf>) -> std::io::Result<()> {
     for entry in std::fs::read_dir(dir)? {
         let p = entry?.path();

@@ -732,6 +732,11 @@ fn ex17_photon_mapping() {
             "its square",
         ),
         (
+            "Epanechnikov's shape with a plain disk's constant",
+            check(t, radiance::<BOX_CONSTANT>),
+            "plain disk's constant",
+        ),
+        (
             "half the radius",
             check(t, radiance::<HALF_RADIUS>),
             "half as wide",
@@ -832,6 +837,11 @@ fn ex18_instant_radiosity() {
         "no shadow ray",
         check(generate::<A, NONE>, gather::<A, NO_SHADOW>),
         "shadow ray",
+    );
+    fails(
+        "no cosine at a surface VPL",
+        check(generate::<A, NONE>, gather::<A, NO_COS_SURFACE>),
+        "cosine at a VPL on a surface is missing",
     );
     fails(
         "flux not divided by N",

@@ -22,6 +22,12 @@ pub struct Exercise {
     /// Hints, shown one at a time: a direction first, then the key identity,
     /// then the formula.
     pub hints: Vec<String>,
+    /// The renderer's items that compute what the exercise asks (its answer,
+    /// or the whole algorithm): a solution that uses one fails, naming it.
+    /// A path (`raytracer::sampling::warp::cosine_hemisphere`: found used
+    /// qualified, or imported by a `use`) or a piece of code (`Brdf::Lambert`,
+    /// `.radiance(`).
+    pub forbidden: Vec<String>,
 }
 
 /// An entry of `info.toml` as written.
@@ -34,6 +40,8 @@ struct Entry {
     slides: Vec<String>,
     slides_bg: Vec<String>,
     hints: Vec<String>,
+    #[serde(default)]
+    forbidden: Vec<String>,
 }
 
 impl Exercise {
@@ -84,6 +92,7 @@ pub fn parse(text: &str) -> Result<Vec<Exercise>, String> {
                 slides: e.slides,
                 slides_bg: e.slides_bg,
                 hints: e.hints,
+                forbidden: e.forbidden,
             })
         })
         .collect()
