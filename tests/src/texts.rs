@@ -150,13 +150,13 @@ pub struct Api {
 }
 
 impl Api {
-    /// Scans `raytracer/src` and `exercises/src/plug.rs` of the repository.
+    /// Scans `raytracer/src` and `exercises/src/plug/` of the repository.
     pub fn of_repository() -> std::io::Result<Api> {
         let root = repo_root();
         let mut api = Api::default();
         let mut files = Vec::new();
         collect_rs(&root.join("raytracer/src"), &mut files)?;
-        files.push(root.join("exercises/src/plug.rs"));
+        collect_rs(&root.join("exercises/src/plug"), &mut files)?;
         files.push(root.join("exercises/src/registry.rs"));
         for f in files {
             if let Some(stem) = f.file_stem() {
