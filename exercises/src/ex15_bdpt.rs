@@ -77,11 +77,12 @@
 //! lens point `z_0`, common to all) of each vertex's area density from the
 //! side that made it in that strategy — the camera side for the first `t'`
 //! vertices, the light side for the rest. Use the stored `.pdf_fwd_a` /
-//! `.pdf_rev_a` and compute the four densities that the edge changes (the
-//! light-side densities of `z_{t−1}` and `z_{t−2}`, the camera-side ones of
-//! `y_{s−1}` and `y_{s−2}`; for `s = 0` the light side of `z_{t−1}` is an
-//! emitter's: a light path's origin). `lens`, if any, takes the place of
-//! `camera[0]`. The slices are shared: copy what you change.
+//! `.pdf_rev_a`; but a vertex's density from the other side depends on the
+//! vertex the path now comes from, so the connection changes some of them
+//! next to the edge: work out which, and compute those anew for this path
+//! (`Vertex::pdf_a`, `Vertex::pdf_light_a`, `Vertex::pdf_light_origin_a`).
+//! `lens`, if any, takes the place of `camera[0]`. The slices are shared:
+//! copy what you change.
 //!
 //! Impossible strategies have density 0 and count for nothing: one whose
 //! edge would end at a vertex with a delta BRDF (mirror), or `s' = 0` ending

@@ -131,6 +131,26 @@ fn vpl(
 }
 
 /// Instant radiosity without clamping in the closed furnace: `1 − 0.5^D`.
+/// Every VPL can be gathered: one `k` segments from the light takes a
+/// camera path of at least one segment and the connection, `k + 2 ≤ D`.
+/// (The light paths were traced one vertex too far: at D = 3 almost half
+/// the VPLs could never be used.)
+#[test]
+fn every_vpl_fits_within_the_max_depth() {
+    let scene = small("cornell", 8, 8);
+    for d in [2u32, 3, 5] {
+        let ir = vpl(&scene, 64, 0.0, Some(d), 1);
+        assert!(d == 2 || !ir.vpls().is_empty(), "D = {d}: no VPL at all");
+        for v in ir.vpls() {
+            assert!(
+                v.segments + 2 <= d,
+                "D = {d}: a VPL {} segments from the light can never be gathered",
+                v.segments
+            );
+        }
+    }
+}
+
 #[test]
 fn unclamped_vpl_gives_the_furnace_exactly() {
     let scene = small("furnace", 16, 16);

@@ -132,7 +132,11 @@ impl InstantRadiosity {
             scene,
             &PhotonTracing {
                 paths: settings.paths,
-                max_depth: settings.max_depth,
+                // A VPL k segments from the light is reached by a camera path
+                // of at least one segment and the connection: k + 2 ≤ D. The
+                // tracing keeps k ≤ its depth − 1, so it is given D − 1 (the
+                // vertices beyond were traced, stored and never gathered).
+                max_depth: settings.max_depth.map(|d| d.saturating_sub(1)),
                 rr_depth: settings.rr_depth,
                 seed: settings.seed,
                 stream: 1,
