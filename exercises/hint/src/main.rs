@@ -20,7 +20,7 @@ fn main() -> ExitCode {
     for a in std::env::args().skip(1) {
         match a.as_str() {
             "-h" | "--help" => {
-                println!("{USAGE}");
+                say(&format!("{USAGE}\n"));
                 return ExitCode::SUCCESS;
             }
             "--all" => all = true,
@@ -36,7 +36,7 @@ fn main() -> ExitCode {
     }
     if reset {
         hint::reset();
-        println!("Hint counters reset.");
+        say("Hint counters reset.\n");
         return ExitCode::SUCCESS;
     }
     let Some(number) = number else {
@@ -45,8 +45,7 @@ fn main() -> ExitCode {
     };
     match hint::next_hints(number, all) {
         Ok(text) => {
-            // A closed pipe (`… | head -1`) ends quietly.
-            let _ = std::io::stdout().write_all(text.as_bytes());
+            say(&text);
             ExitCode::SUCCESS
         }
         Err(e) => {
@@ -54,4 +53,10 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// Standard output that cannot panic: a closed pipe (`… | head -1`) or a
+/// full device ends the program quietly instead of with a panic.
+fn say(text: &str) {
+    let _ = std::io::stdout().write_all(text.as_bytes());
 }

@@ -171,7 +171,7 @@ pub fn equal_time(
     for (algorithm, name, run) in algorithms {
         let (image, spp, seconds, curve) = render_for(&run, budget, &reference.mean);
         let rmse = rmse(&image, &reference.mean);
-        println!(
+        crate::console::say!(
             "  {:14} {algorithm:34} {spp:6} spp {seconds:7.2} s  RMSE {rmse:.4}",
             scene.name
         );

@@ -254,7 +254,7 @@ fn check_ray_budget(
         .max_depth()
         .map_or_else(|| "unlimited".to_string(), |d| d.to_string());
     let Some(per_sample) = naive.rays_per_sample_bound() else {
-        println!(
+        crate::console::say!(
             "naive recursion (N = {:?}, D = {depth}): no bound on the rays per sample; {} ends the recursion",
             naive.branching(),
             if naive.roulette_depth().is_some() {
@@ -267,7 +267,7 @@ fn check_ray_budget(
     };
     let samples = scene.camera.width as f64 * scene.camera.height as f64 * options.spp as f64;
     let total = per_sample as f64 * samples;
-    println!(
+    crate::console::say!(
         "naive recursion (N = {:?}, D = {depth}): at most {per_sample} rays per sample, {total:.2e} rays for {}×{} at {} spp",
         naive.branching(),
         scene.camera.width,

@@ -24,6 +24,7 @@
 //! reference.rs     the independent references renders are measured against
 //! options.rs       scene, size, samples, seed, threads and output folder of a command line
 //! page/ plots/     the HTML page and its SVG plots
+//! console.rs       standard output that a closed pipe or a full disk cannot crash
 //! ```
 //!
 //! Below them all are the crates `raytracer` (the renderer), `exercises` (the
@@ -36,6 +37,7 @@
 mod algorithms;
 mod chapters;
 mod commands;
+mod console;
 mod equal_time;
 mod integrators;
 mod metropolis;

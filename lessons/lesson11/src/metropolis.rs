@@ -113,7 +113,7 @@ pub fn render_to_files(
     warn_if_unlit(scene, integrator);
     let r = render_metropolis(scene, integrator, options, metropolis);
     if let Some(b) = &r.bootstrap {
-        println!(
+        crate::console::say!(
             "  Metropolis: b = {:.5} ± {:.2} % from {} bootstrap paths, {} chains, acceptance {:.0} %",
             b.b,
             100.0 * b.relative_error(),

@@ -335,14 +335,16 @@ pub fn independent(
     match stored {
         Ok((reference, depth)) => match reference.at_size(w, h) {
             Some(r) => return (r, depth),
-            None => println!(
+            None => crate::console::say!(
                 "  note: the stored reference of {} is {}×{}, which {w}×{h} does not divide; \
                  rendering one now",
-                scene.name, reference.mean.width, reference.mean.height
+                scene.name,
+                reference.mean.width,
+                reference.mean.height
             ),
         },
         Err(e) if builtin.is_some_and(|b| ["cornell", "door", "caustic"].contains(&b)) => {
-            println!("  note: {e:#}; rendering a reference now")
+            crate::console::say!("  note: {e:#}; rendering a reference now")
         }
         Err(_) => {}
     }

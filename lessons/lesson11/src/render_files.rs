@@ -89,7 +89,7 @@ impl OutputFiles {
         let (png, exr) = (&self.png, &self.exr);
         if film.total_samples() == 0 && stats.interrupted {
             // A black picture would only replace a better one.
-            println!(
+            crate::console::say!(
                 "  {}: interrupted before any sample was computed; nothing written",
                 png.display()
             );
@@ -106,19 +106,19 @@ impl OutputFiles {
         commit_all(staged)?;
         let seconds = stats.elapsed.as_secs_f64();
         if stats.nonfinite > 0 {
-            println!(
+            crate::console::say!(
                 "  note: {} samples were NaN, infinite or negative and counted as zero",
                 stats.nonfinite
             );
         }
         if stats.interrupted {
-            println!("  wrote {} and .exr: {}", png.display(), interrupted());
+            crate::console::say!("  wrote {} and .exr: {}", png.display(), interrupted());
             anyhow::bail!(
                 "interrupted; what was rendered so far is in {}",
                 exr.display()
             );
         }
-        println!(
+        crate::console::say!(
             "  wrote {} and .exr ({spp} spp, {})",
             png.display(),
             seconds_text(seconds)

@@ -243,9 +243,10 @@ impl Tour {
         let size = (scene.camera.width, scene.camera.height);
         let path = chapter.dir.join(format!("{stem}.svg"));
         raytracer::film::output::write_file(&path, path_figure_svg(record, &png, size, labels))?;
-        println!(
+        crate::console::say!(
             "  {stem}: pixel {:?}, sample {} recorded",
-            record.pixel, record.sample
+            record.pixel,
+            record.sample
         );
         chapter
             .section

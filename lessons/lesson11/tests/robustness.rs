@@ -1345,3 +1345,82 @@ fn the_biased_integrators_refuse_meaningless_options() {
         refused("biased", &tiny(&args), expected);
     }
 }
+
+// ---- Standard output closed early or full. ----
+
+/// Runs `args` in a fresh folder with standard output either closed before
+/// the program writes (a reader that went away: `| head -c 0`) or on
+/// `/dev/full`; returns the output, the folder and the files written.
+fn with_stdout(name: &str, args: &[&str], full: bool) -> (Output, PathBuf) {
+    let dir = fresh(name);
+    let stdout = if full {
+        Stdio::from(std::fs::File::create("/dev/full").expect("/dev/full"))
+    } else {
+        Stdio::piped()
+    };
+    let mut child = Command::new(EXE)
+        .args(args)
+        .current_dir(&dir)
+        .stdout(stdout)
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("lesson11 runs");
+    // The reader goes away before anything is read.
+    drop(child.stdout.take());
+    let out = child.wait_with_output().expect("lesson11 ends");
+    (out, dir)
+}
+
+/// A closed pipe ends quietly with every file written; a full standard
+/// output is one line on standard error, never a panic, and costs no file
+/// (`scenes | head -c 1` and `stereo … | head -c 1` panicked with "Broken
+/// pipe"; with standard output on /dev/full `stereo` wrote none of its files).
+#[test]
+fn a_closed_or_full_standard_output_costs_no_file() {
+    if !Path::new("/dev/full").exists() {
+        eprintln!("skipped the /dev/full half: this system has no /dev/full");
+    }
+    let cases: [(&str, Vec<&str>, &str); 3] = [
+        ("scenes", vec!["scenes"], ""),
+        ("render", tiny(&["render"]), "out/cornell-direct.png"),
+        (
+            "stereo",
+            vec![
+                "stereo", "--width", "8", "--height", "6", "--spp", "1", "--out", "out",
+            ],
+            "out",
+        ),
+    ];
+    for (name, args, expect) in &cases {
+        for full in [false, true] {
+            if full && !Path::new("/dev/full").exists() {
+                continue;
+            }
+            let (o, dir) = with_stdout(&format!("stdout-{name}-{full}"), args, full);
+            let err = text(&o.stderr);
+            assert!(
+                o.status.success() && !err.contains("panicked"),
+                "{name} (stdout {}): exit {:?}, stderr {err}",
+                if full { "full" } else { "closed" },
+                o.status
+            );
+            if full {
+                assert_eq!(
+                    err.matches("cannot write to standard output").count(),
+                    1,
+                    "{name}: one line names the failure: {err}"
+                );
+            } else {
+                assert!(!err.contains("standard output"), "{name}: quiet: {err}");
+            }
+            if !expect.is_empty() {
+                let p = dir.join(expect);
+                assert!(p.exists(), "{name}: {} was not written", p.display());
+            }
+            if *name == "stereo" {
+                let n = files(&dir.join("out")).len();
+                assert!(n > 10, "{name}: only {n} files were written");
+            }
+        }
+    }
+}

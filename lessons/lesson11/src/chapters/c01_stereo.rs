@@ -148,7 +148,7 @@ fn run_alone(matches: &ArgMatches) -> Result<()> {
     let mut page = Page::new("Lecture 11: stereoscopy");
     page.sections.push(section);
     let index = page.write(&dir, "index.html")?;
-    println!("open {} to see the pictures", index.display());
+    crate::console::say!("open {} to see the pictures", index.display());
     Ok(())
 }
 
@@ -231,7 +231,7 @@ fn save(
     caption: String,
 ) -> Result<Figure> {
     let (png, exr) = write_png_and_exr(image, dir, stem, exposure)?;
-    println!("  wrote {} and .exr", png.display());
+    crate::console::say!("  wrote {} and .exr", png.display());
     Ok(Figure::image(page_root, &png, &exr, caption))
 }
 
@@ -298,7 +298,7 @@ fn render_section(args: &StereoArgs, page_root: &Path) -> Result<Section> {
     let dir = args.scene.out.join(CHAPTER_DIR);
     create_dir(&dir)?;
     let convergence = rig.convergence_distance(&scene.camera.params);
-    println!(
+    crate::console::say!(
         "01 · stereo: {} eyes {} apart, zero parallax at {convergence:.3} ({}, {} spp)",
         if rig.toe_in {
             "toed-in"
@@ -538,7 +538,7 @@ fn separation_sweep(
             ),
         )?);
     }
-    println!(
+    crate::console::say!(
         "  separation sweep: {} pairs of {w}×{h} at {spp} spp in {:.1} s",
         SWEEP.len(),
         start.elapsed().as_secs_f64()
@@ -574,7 +574,7 @@ fn light_field(
     if raytracer::render::interrupted() {
         bail!("interrupted while rendering the light field; its pictures were not written");
     }
-    println!(
+    crate::console::say!(
         "  light field: {n}×{n} views of {w}×{h} at {spp} spp in {:.1} s",
         start.elapsed().as_secs_f64()
     );

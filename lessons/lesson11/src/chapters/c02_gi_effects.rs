@@ -128,13 +128,13 @@ fn against_mitsuba(tour: &Tour, s: &mut ChapterOutput, ours: &Image, path: &Pict
     let reference = match mitsuba_cornell() {
         Ok(r) => r,
         Err(e) => {
-            println!("  note: {e:#}; no comparison with Mitsuba");
+            crate::console::say!("  note: {e:#}; no comparison with Mitsuba");
             return Ok(());
         }
     };
     let (w, h) = (ours.width, ours.height);
     let Some(mitsuba) = reference.at_size(w, h) else {
-        println!(
+        crate::console::say!(
             "  note: Mitsuba's image is {}×{}, which {w}×{h} does not divide: no comparison",
             reference.mean.width, reference.mean.height
         );
@@ -183,7 +183,7 @@ fn against_mitsuba(tour: &Tour, s: &mut ChapterOutput, ours: &Image, path: &Pict
     } else {
         "above the threshold: a bias, or too few samples for the test's normal approximation"
     };
-    println!(
+    crate::console::say!(
         "  ours against Mitsuba: largest |z| {:.2} in tile {} of {} z-scores, threshold {threshold:.2}",
         z.max_abs_z, z.worst_tile, tests
     );

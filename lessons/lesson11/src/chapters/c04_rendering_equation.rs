@@ -94,7 +94,7 @@ fn render(tour: &Tour) -> Result<Section> {
             };
             table.rows.push(row(&naive, rays, "max depth", None));
             let r = table.rows.last().expect("a row");
-            println!(
+            crate::console::say!(
                 "  naive N={n} D={d}: {} rays per pixel sample, {} s",
                 r[2], r[4]
             );
@@ -180,7 +180,7 @@ fn render(tour: &Tour) -> Result<Section> {
         None,
     ));
     table.rows.push(row(&roulette, roulette_rays, "Russian roulette", Some("4 1")));
-    println!(
+    crate::console::say!(
         "  mean of the image: cut-off {:.4} ± {:.4}, roulette {:.4} ± {:.4} ({lower:.0} % lower)",
         cut.mean, cut.se, roulette_b.mean, roulette_b.se
     );

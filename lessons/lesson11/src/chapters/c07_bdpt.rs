@@ -92,7 +92,7 @@ fn render(tour: &Tour) -> Result<Section> {
             ));
         }
     }
-    println!(
+    crate::console::say!(
         "  wrote the {count} strategy images of max depth {STRATEGY_DEPTH} in {}",
         seconds_text(seconds)
     );

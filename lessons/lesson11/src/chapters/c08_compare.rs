@@ -84,7 +84,7 @@ fn render(tour: &Tour) -> Result<Section> {
         let builtin = (name != "cornell" || tour.overrides.scene.is_none()).then_some(name);
         let (reference, max_depth) = independent(builtin, &scene, &base, 5, base.spp);
         let floor = reference.noise_floor();
-        println!(
+        crate::console::say!(
             "  {name}: max depth {max_depth}, reference {} (noise floor {floor:.5})",
             reference.source
         );

@@ -136,7 +136,7 @@ fn render(tour: &Tour) -> Result<Section> {
     let builtin = tour.overrides.scene.is_none().then_some("cornell");
     let (reference, max_depth) = independent(builtin, &scene, &base, 5, 256);
     let floor = reference.noise_floor();
-    println!(
+    crate::console::say!(
         "  cornell {}×{}: max depth {max_depth}, reference {} (noise floor {floor:.5})",
         scene.camera.width, scene.camera.height, reference.source
     );
@@ -147,7 +147,7 @@ fn render(tour: &Tour) -> Result<Section> {
     let mut measured = Vec::new();
     for algorithm in Algorithm::ALL {
         let m = measure(&scene, &base, algorithm, &k, max_depth, &reference, &counted, &e)?;
-        println!(
+        crate::console::say!(
             "  cornell {:20} {:5} spp {:>8} (build {:>8})  RMSE {:.4}  bias² {:.2e}  variance {:.2e}",
             algorithm.label(),
             m.run.spp,
@@ -302,7 +302,7 @@ fn render(tour: &Tour) -> Result<Section> {
     }
     base.progress = false;
     let (reference, max_depth) = independent(Some("caustic"), &scene, &base, 8, 256);
-    println!(
+    crate::console::say!(
         "  caustic {}×{}: max depth {max_depth}, reference {}",
         scene.camera.width, scene.camera.height, reference.source
     );
@@ -319,7 +319,7 @@ fn render(tour: &Tour) -> Result<Section> {
             masked_rmse(image, &reference.mean, &everywhere)
         });
         let error = masked_rmse(&run.image, &reference.mean, &everywhere);
-        println!(
+        crate::console::say!(
             "  caustic {:20} {:5} spp {:>8}  RMSE {error:.4}",
             algorithm.label(),
             run.spp,

@@ -71,14 +71,14 @@ pub fn run_chapters(args: &TourArgs, only: Option<&str>) -> Result<()> {
         if only.is_some_and(|o| o != name) {
             continue;
         }
-        println!("\n== {name}");
+        crate::console::say!("\n== {name}");
         let t = Instant::now();
         page.sections.push((chapter.render)(&tour)?);
-        println!("== {name}: {:.1} s", t.elapsed().as_secs_f64());
+        crate::console::say!("== {name}: {:.1} s", t.elapsed().as_secs_f64());
     }
     let file = only.map_or_else(|| "index.html".to_string(), |name| format!("{name}.html"));
     let index = page.write(&tour.out, &file)?;
-    println!(
+    crate::console::say!(
         "\nThat took {:.1} s. Open {} to see the pictures.",
         start.elapsed().as_secs_f64(),
         index.display()

@@ -61,7 +61,9 @@ fn check(args: &BenchArgs) -> Result<()> {
 pub fn run(args: &BenchArgs) -> Result<()> {
     check(args)?;
     if cfg!(debug_assertions) {
-        println!("note: this is not a --release build; figures will be lower than the README's");
+        crate::console::say!(
+            "note: this is not a --release build; figures will be lower than the README's"
+        );
     }
     let all = std::thread::available_parallelism().map_or(1, |n| n.get());
     let threads = if args.threads.is_empty() {
@@ -89,8 +91,8 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         ),
     ];
     for (k, (what, integrator)) in cases.into_iter().enumerate() {
-        println!("\n`cornell` 256×256, {} spp: {what}", args.spp);
-        println!("  {:>8} {:>10} {:>14}", "threads", "seconds", "M samples/s");
+        crate::console::say!("\n`cornell` 256×256, {} spp: {what}", args.spp);
+        crate::console::say!("  {:>8} {:>10} {:>14}", "threads", "seconds", "M samples/s");
         let mut last = 0.0;
         for &n in &threads {
             let options = RenderOptions {
@@ -101,7 +103,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 ..RenderOptions::default()
             };
             let result = render(&scene, integrator, &options);
-            println!(
+            crate::console::say!(
                 "  {:>8} {:>10.3} {:>14.3}",
                 n,
                 result.stats.elapsed.as_secs_f64(),
@@ -112,7 +114,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         // The path tracer (the second case) against its peer.
         if k == 1 {
             let n = *threads.last().expect("at least one thread count");
-            println!(
+            crate::console::say!(
                 "{}",
                 mitsuba::compare(args.mitsuba.as_ref(), args.spp, last, n)
             );
@@ -123,7 +125,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         biased::run(&threads)?;
     }
     if args.equal_time > 0.0 {
-        println!(
+        crate::console::say!(
             "\nEqual time ({} s each, 128 pixels wide): RMSE against an independent reference \
              (Mitsuba's Cornell box at max depth 65, the stored door at max depth 5 and caustic at \
              max depth 8, else our bidirectional path tracer with another seed at 512 spp and max \
@@ -141,7 +143,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             };
             let (reference, max_depth) =
                 crate::reference::independent(Some(name), &scene, &base, 5, 512);
-            println!(
+            crate::console::say!(
                 "  {name}: max depth {max_depth}, reference {} (noise floor {:.5})",
                 reference.source,
                 reference.noise_floor()
@@ -184,13 +186,17 @@ fn door(spp: u32, threads: &[usize]) -> Result<()> {
         max_depth,
         ..Bdpt::default()
     };
-    println!(
+    crate::console::say!(
         "\n`door` {}×{}, max depth 5, {spp} samples (Metropolis: mutations) per pixel",
-        scene.camera.width, scene.camera.height
+        scene.camera.width,
+        scene.camera.height
     );
-    println!(
+    crate::console::say!(
         "  {:>8} {:<34} {:>10} {:>14}",
-        "threads", "algorithm", "seconds", "k samples/s"
+        "threads",
+        "algorithm",
+        "seconds",
+        "k samples/s"
     );
     for &n in threads {
         let options = RenderOptions {
@@ -207,7 +213,7 @@ fn door(spp: u32, threads: &[usize]) -> Result<()> {
         ];
         for (what, integrator) in cases {
             let stats = render(&scene, integrator, &options).stats;
-            println!(
+            crate::console::say!(
                 "  {:>8} {what:<34} {:>10.3} {:>14.1}",
                 n,
                 stats.elapsed.as_secs_f64(),
@@ -216,7 +222,7 @@ fn door(spp: u32, threads: &[usize]) -> Result<()> {
         }
         let r = render_metropolis(&scene, &bdpt, &options, &Metropolis::default());
         let chains = r.stats.elapsed.as_secs_f64() - r.bootstrap_seconds;
-        println!(
+        crate::console::say!(
             "  {:>8} {:<34} {:>10.3} {:>14.1}   mutations/s; + {:.3} s bootstrap, acceptance {:.0} %",
             n,
             "Metropolis over bidirectional",

@@ -51,10 +51,10 @@ pub fn run_exercises(args: &ExercisesArgs) -> Result<()> {
     }
     let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
     let results = grading::grade_all(threads, grading::TIMEOUT);
-    println!(
+    crate::console::say!(
         "Grade: `cargo test -p grading --test exercises` · on every save: `lesson11 exercises --watch` · hints: `cargo run -q -p hint -- N` · a solution once it passes: `lesson11 solution N`"
     );
-    print!("{}", grading::progress_report(&results));
+    crate::console::say_inline!("{}", grading::progress_report(&results));
     Ok(())
 }
 
@@ -63,11 +63,11 @@ pub fn run_exercises(args: &ExercisesArgs) -> Result<()> {
 pub fn run_hint(args: &HintArgs) -> Result<()> {
     if args.reset {
         hint::reset();
-        println!("Hint counters reset.");
+        crate::console::say!("Hint counters reset.");
         return Ok(());
     }
     let text = hint::next_hints(args.number, args.all).map_err(|e| anyhow!(e))?;
-    print!("{text}");
+    crate::console::say_inline!("{text}");
     Ok(())
 }
 
@@ -78,12 +78,12 @@ pub fn run_solution(args: &SolutionArgs) -> Result<()> {
             let path = exercises::crate_dir().join(e.solution_file());
             let text = std::fs::read_to_string(&path)
                 .with_context(|| format!("cannot read {}", path.display()))?;
-            println!(
+            crate::console::say!(
                 "Your exercise {} passes. The reference solution ({}):\n",
                 args.number,
                 path.display()
             );
-            print!("{text}");
+            crate::console::say_inline!("{text}");
             Ok(())
         }
         other => bail!(

@@ -92,7 +92,7 @@ pub fn run(args: &LabArgs) -> Result<()> {
         anyhow::anyhow!("cannot listen on {address}: {e}{hint}")
     })?;
     let url = lab.url();
-    println!("lesson11 lab: open {url} (Ctrl-C stops the lab)");
+    crate::console::say!("lesson11 lab: open {url} (Ctrl-C stops the lab)");
     if args.open {
         open_browser(&url);
     }
@@ -101,7 +101,7 @@ pub fn run(args: &LabArgs) -> Result<()> {
         std::thread::sleep(Duration::from_millis(100));
     }
     lab.stop();
-    println!("lesson11 lab: stopped");
+    crate::console::say!("lesson11 lab: stopped");
     Ok(())
 }
 

@@ -21,25 +21,26 @@ pub struct ReferencesArgs {
 
 pub fn run(args: &ReferencesArgs) -> Result<()> {
     for c in COMPARISONS {
-        println!(
+        crate::console::say!(
             "{}: {} with the renderer's own integrator, {REFERENCE_SPP} spp",
-            c.name, c.scene
+            c.name,
+            c.scene
         );
         let path = grading::compare::render_reference(c, true).map_err(|e| anyhow!(e))?;
-        println!("  wrote {} and its -variance.exr", path.display());
+        crate::console::say!("  wrote {} and its -variance.exr", path.display());
     }
-    println!(
+    crate::console::say!(
         "ex17_caustic: caustic with the renderer's photon mapping, {} independent photon maps",
         grading::ex17_photon_mapping::REFERENCE_MAPS
     );
     let path = grading::ex17_photon_mapping::render_reference(true).map_err(|e| anyhow!(e))?;
-    println!(
+    crate::console::say!(
         "  wrote {} and its -variance.exr (per tile)",
         path.display()
     );
     if !args.grader_only {
         for stored in [door_settings(), caustic_settings()] {
-            println!(
+            crate::console::say!(
                 "{}: bidirectional path tracing, {}×{}, max depth {}, {} spp, seed {}",
                 stored.scene,
                 stored.width,
@@ -49,13 +50,13 @@ pub fn run(args: &ReferencesArgs) -> Result<()> {
                 stored.seed
             );
             let path = stored.render_and_store()?;
-            println!(
+            crate::console::say!(
                 "  wrote {}, its -variance.exr and its settings",
                 path.display()
             );
         }
     }
-    println!(
+    crate::console::say!(
         "Now run `cargo test -p grading --features solutions` and `cargo test -p lesson11`, and \
          commit tests/references/ and lessons/lesson11/references/."
     );

@@ -26,16 +26,18 @@ pub struct ScenesArgs {
 pub fn run(args: &ScenesArgs) -> Result<()> {
     match &args.write {
         None => {
-            println!("Built-in scenes (use with --scene NAME):");
+            crate::console::say!("Built-in scenes (use with --scene NAME):");
             for s in BUILTIN_SCENES {
-                println!("  {:<14} {}", s.name, s.description);
+                crate::console::say!("  {:<14} {}", s.name, s.description);
             }
-            println!("\nWrite one out to edit: lesson11 scenes --write cornell --to my-scenes");
+            crate::console::say!(
+                "\nWrite one out to edit: lesson11 scenes --write cornell --to my-scenes"
+            );
         }
         Some(name) => {
             let path = write_scene(name, &args.to, args.force)?;
-            println!("wrote {}", path.display());
-            println!(
+            crate::console::say!("wrote {}", path.display());
+            crate::console::say!(
                 "render it with: cargo run --release -p lesson11 -- render --scene {}",
                 path.display()
             );

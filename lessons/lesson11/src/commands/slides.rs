@@ -211,7 +211,7 @@ pub fn build(args: &SlidesArgs) -> Result<Vec<PathBuf>> {
     let absent = missing(&args.out);
     if args.render || !absent.is_empty() {
         if !absent.is_empty() {
-            println!(
+            crate::console::say!(
                 "{} of the {} pictures are missing (e.g. {}): rendering the tour first",
                 absent.len(),
                 pictures.len(),
@@ -242,7 +242,7 @@ pub fn build(args: &SlidesArgs) -> Result<Vec<PathBuf>> {
         .map(String::as_str)
         .collect();
     if !not_yet.is_empty() {
-        println!(
+        crate::console::say!(
             "{} pictures are not made by the chapters yet (slides/NEEDED-PICTURES.md): \
              shown as placeholders: {}",
             not_yet.len(),
@@ -272,7 +272,7 @@ pub fn build(args: &SlidesArgs) -> Result<Vec<PathBuf>> {
         let page = html::deck_html(deck, "../img/")?;
         let path = dir.join("index.html");
         write_file(&path, page).with_context(|| format!("cannot write {}", path.display()))?;
-        println!(
+        crate::console::say!(
             "wrote {} ({} slides)",
             path.display(),
             deck.slides().count() + 1
@@ -299,7 +299,7 @@ pub fn build(args: &SlidesArgs) -> Result<Vec<PathBuf>> {
 pub fn run(args: &SlidesArgs) -> Result<()> {
     let written = build(args)?;
     if let Some(first) = written.first() {
-        println!("Open {} (arrow keys move between slides).", first.display());
+        crate::console::say!("Open {} (arrow keys move between slides).", first.display());
     }
     Ok(())
 }

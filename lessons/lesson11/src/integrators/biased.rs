@@ -394,7 +394,7 @@ impl BiasedPlan {
             }
         };
         if options.progress {
-            println!("  {summary}");
+            crate::console::say!("  {summary}");
         }
         Ok((integrator, summary))
     }
@@ -415,14 +415,14 @@ pub fn render_sppm_to_files(
     let stem = format!("{}-sppm", scene.name);
     let result = render_sppm(scene, settings, options);
     if result.passes == 0 {
-        println!(
+        crate::console::say!(
             "  {}: interrupted before any pass was finished; nothing written",
             dir.join(&stem).display()
         );
         bail!("interrupted before any pass was finished");
     }
     let (png, exr) = write_png_and_exr(&result.image, dir, &stem, exposure)?;
-    println!(
+    crate::console::say!(
         "  wrote {} and {} ({} of {} passes, {:.2} s)",
         png.display(),
         exr.display(),

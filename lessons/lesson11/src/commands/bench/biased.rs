@@ -34,11 +34,11 @@ pub fn run(threads: &[usize]) -> Result<()> {
         rr_depth: 5,
         ..SppmSettings::default()
     };
-    println!(
+    crate::console::say!(
         "\nBiased integrators on `cornell` (256×256, max depth 65, roulette from depth 5), \
          beside the path tracer:"
     );
-    println!(
+    crate::console::say!(
         "  {:>8} {:>12} {:>14} {:>12} {:>12} {:>13} {:>14}",
         "threads",
         "k paths/s",
@@ -113,7 +113,7 @@ pub fn run(threads: &[usize]) -> Result<()> {
             },
             &options(16),
         );
-        println!(
+        crate::console::say!(
             "  {:>8} {:>12.1} {:>14.3} {:>12.3} {:>12.3} {:>13.3} {:>14.3}",
             n,
             paths_per_s / 1e3,
@@ -124,7 +124,7 @@ pub fn run(threads: &[usize]) -> Result<()> {
             path.stats.samples_per_second() / 1e6
         );
     }
-    println!(
+    crate::console::say!(
         "  (photons: {PHOTON_PATHS} light paths traced, every photon stored at a diffuse hit \
          counted; map: a uniform grid over {MAP_PHOTONS} photons, target under 1 s on 2 cores; \
          SPPM: {} photon paths per pass, camera pass included, {SPPM_PASSES} passes; gathers: \

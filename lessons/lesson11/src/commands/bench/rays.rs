@@ -176,7 +176,7 @@ fn measure(name: &str, g: &Geometry, rays: &[Ray], threads: &[usize]) -> anyhow:
             hits == hits_any && hits == hits4 && hits == hits16,
             "single rays, any-hit and packets disagree: {hits}, {hits_any}, {hits4}, {hits16} hits"
         );
-        println!(
+        crate::console::say!(
             "  {name:<20} {n:>2} thread(s): closest {:>5}{}, any {:>5}{}, packets 2x2 {:>5}{}, 4x4 {:>5}{}; hits {hits} ({}%)",
             sig3(closest / 1e6),
             per_cpu(closest_cpu),
@@ -212,16 +212,16 @@ pub fn run(threads: &[usize]) -> anyhow::Result<()> {
     } else {
         threads.to_vec()
     };
-    println!(
+    crate::console::say!(
         "ray throughput: {RES}x{RES} primary rays, camera (0,0,3) -> -z, fov 40 deg; machine threads: {all}"
     );
-    println!(
+    crate::console::say!(
         "Mrays/s, best of {REPS}; in parentheses: per CPU-second of the thread (a busy machine does not lower it)"
     );
-    println!(
+    crate::console::say!(
         "closest = Geometry::intersect, any = occluded, packets = intersect4 / intersect16 (closest hit)"
     );
-    println!(
+    crate::console::say!(
         "reference, case (a): Mitsuba 3 llvm_ad_rgb 9.4-10.0 Mrays/s on 1 thread, 18.3 on 2; Embree 4 single rays 6-7"
     );
     let rays = camera_rays();
@@ -230,7 +230,7 @@ pub fn run(threads: &[usize]) -> anyhow::Result<()> {
     let ico = Mesh::icosphere(6);
     let tris = ico.indices.len();
     let (build_s, g) = build(ico)?;
-    println!(
+    crate::console::say!(
         "(a) icosphere level 6: {tris} triangles, {} BVH nodes, build {} s",
         g.node_count(),
         sig3(build_s)
@@ -256,7 +256,7 @@ pub fn run(threads: &[usize]) -> anyhow::Result<()> {
         "the OBJ round trip lost triangles"
     );
     let (build_s, g) = build(loaded)?;
-    println!(
+    crate::console::say!(
         "(b) icosphere level 8 via OBJ ({} MB): {tris} triangles, load {} s, {} BVH nodes, build {} s",
         sig3(size as f64 / 1e6),
         sig3(load_s),

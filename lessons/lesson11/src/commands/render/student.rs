@@ -104,8 +104,8 @@ pub fn run(
             "{exercise} is not started yet ({outcome}): fill in exercises/src/{exercise}.rs first"
         );
     }
-    println!("{exercise}: {outcome}");
-    println!("  beside it: {}", which.reference_note());
+    crate::console::say!("{exercise}: {outcome}");
+    crate::console::say!("  beside it: {}", which.reference_note());
     let out = &scene_args.out;
     let stem = format!("{}-{}", scene.name, reference.name());
     render_to_files(
@@ -140,7 +140,7 @@ pub fn run(
         16,
     );
     let threshold = z_threshold(z.z.len() * 3, 1e-4);
-    println!(
+    crate::console::say!(
         "  tile z-test: largest |z| = {:.1} in tile {} (threshold {threshold:.1}): {}",
         z.max_abs_z,
         z.worst_tile,
@@ -177,8 +177,8 @@ fn run_metropolis(scene_args: &SceneArgs, ia: &IntegratorArgs, exposure: f32) ->
             "{exercise} is not started yet ({outcome}): fill in exercises/src/{exercise}.rs first"
         );
     }
-    println!("{exercise}: {outcome}");
-    println!("  beside it: {}", which.reference_note());
+    crate::console::say!("{exercise}: {outcome}");
+    crate::console::say!("  beside it: {}", which.reference_note());
     let (w, h) = (scene.camera.width, scene.camera.height);
     let chains = metropolis.chains;
     let settings = ChainSettings {
@@ -238,7 +238,7 @@ fn run_metropolis(scene_args: &SceneArgs, ia: &IntegratorArgs, exposure: f32) ->
         16,
     );
     let threshold = z_threshold(z.z.len() * 3, 1e-4);
-    println!(
+    crate::console::say!(
         "  tile z-test: largest |z| = {:.1} in tile {} (threshold {threshold:.1}): {}",
         z.max_abs_z,
         z.worst_tile,
