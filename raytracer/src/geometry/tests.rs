@@ -492,7 +492,7 @@ fn surface_points_are_sane() {
 }
 
 /// The Cornell box's small box: cube → Mitsuba transform → world AABB as
-/// in the reference (/work/shared/reference/cornell_box_mitsuba.txt §4).
+/// in the reference (raytracer/tests/data/cornell_box_mitsuba.txt §4).
 #[test]
 fn transformed_cube_matches_mitsuba() {
     let t = Transform::translate(Vec3::new(0.335, -0.7, 0.38))

@@ -105,7 +105,7 @@ mod tests {
         (a - b).abs().max_element() < 2e-6
     }
 
-    /// Mitsuba's Cornell box (/work/shared/reference/cornell_box_mitsuba.txt,
+    /// Mitsuba's Cornell box (raytracer/tests/data/cornell_box_mitsuba.txt,
     /// section 4): the boxes are `translate · rotate · scale` of `[-1, 1]³`.
     #[test]
     fn mitsuba_box_corners() {

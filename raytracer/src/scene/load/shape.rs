@@ -285,7 +285,7 @@ mod tests {
 
     /// Scale, then rotate, then translate, exactly as Mitsuba's `to_world`
     /// of the Cornell box's boxes (matrices from
-    /// /work/shared/reference/cornell_box_mitsuba.txt).
+    /// raytracer/tests/data/cornell_box_mitsuba.txt).
     #[test]
     fn transforms_compose_as_mitsuba() {
         let small =

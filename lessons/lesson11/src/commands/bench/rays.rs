@@ -1,5 +1,5 @@
 //! Ray-throughput benchmark of the BVH: primary rays on an icosphere, the
-//! case of `/work/shared/reference/embree_bench.py` and `mitsuba_raycast.py`
+//! case of `raytracer/tests/data/embree_bench.py` and `mitsuba_raycast.py`
 //! (Embree 4 and Mitsuba 3 on the same mesh and rays), and a large mesh
 //! loaded from an OBJ file.
 //!
