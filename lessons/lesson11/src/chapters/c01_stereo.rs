@@ -590,21 +590,29 @@ fn light_field(
             args.lf_aperture, args.lf_aperture
         ),
     )?);
-    let depths = if args.refocus.is_empty() {
+    let mut depths = if args.refocus.is_empty() {
         vec![0.5 * convergence, convergence, 3.0 * convergence]
     } else {
         args.refocus.clone()
     };
+    // A depth asked twice is one picture.
+    let mut seen = Vec::new();
+    depths.retain(|d| {
+        let new = !seen.contains(d);
+        seen.push(*d);
+        new
+    });
+    let digits = refocus_digits(&depths);
     for depth in depths {
         section.figures.push(save(
             &lf.refocus(depth),
             dir,
             page_root,
-            &format!("refocus-{depth:.2}"),
+            &format!("refocus-{depth:.digits$}"),
             args.exposure,
             format!(
-                "Refocused at {depth:.2} by shift-and-add: what lies at that depth is sharp, the \
-                 rest is blurred as by a lens as wide as the aperture."
+                "Refocused at {depth:.digits$} by shift-and-add: what lies at that depth is sharp, \
+                 the rest is blurred as by a lens as wide as the aperture."
             ),
         )?);
     }
@@ -663,8 +671,29 @@ fn section_text(args: &StereoArgs, convergence: f32) -> String {
     )
 }
 
+/// The fewest decimals (at least 2) that give every refocus depth a name of
+/// its own: `--refocus 2.001,2.004` wrote both to `refocus-2.00.*`, the
+/// second over the first.
+fn refocus_digits(depths: &[f32]) -> usize {
+    (2..=9)
+        .find(|&d| {
+            let mut names: Vec<String> = depths.iter().map(|x| format!("{x:.d$}")).collect();
+            names.sort();
+            names.dedup();
+            names.len() == depths.len()
+        })
+        .unwrap_or(9)
+}
+
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn refocus_depths_get_names_of_their_own() {
+        assert_eq!(refocus_digits(&[0.5, 1.0, 3.0]), 2);
+        assert_eq!(refocus_digits(&[2.001, 2.004]), 3);
+        assert_eq!(refocus_digits(&[1.0, 1.000_01]), 5);
+    }
     use super::*;
 
     #[test]
