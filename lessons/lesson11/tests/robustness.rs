@@ -1424,3 +1424,22 @@ fn a_closed_or_full_standard_output_costs_no_file() {
         }
     }
 }
+
+/// A search radius out of proportion with the scene is refused in one line
+/// (SPPM at `--radius 1e30` or `1e-30` wrote NaN pixels and a black PNG
+/// with exit 0); photon mapping's fixed radius likewise.
+#[test]
+fn search_radii_out_of_proportion_are_refused() {
+    for (integrator, radius) in [
+        ("sppm", "1e30"),
+        ("sppm", "1e-30"),
+        ("sppm", "1e18"),
+        ("photon", "1e30"),
+    ] {
+        refused(
+            &format!("radius-{integrator}-{radius}"),
+            &tiny(&["render", "-i", integrator, "--radius", radius]),
+            "out of proportion with the scene",
+        );
+    }
+}

@@ -285,6 +285,28 @@ pub enum BiasedPlan {
     IrradianceCache(IrradianceCacheSettings),
 }
 
+/// A search radius in proportion to the scene: from 1e-5 of its diagonal
+/// (below, no photon is ever found and r² underflows to 0) to the diagonal
+/// itself (above, every disk holds every photon, and r² of 1e30 overflows:
+/// SPPM then wrote NaN pixels and a black PNG with exit 0).
+fn check_radius(radius: Option<f32>, scene: &Scene) -> Result<()> {
+    let (Some(r), b) = (radius, scene.geometry.bounds()) else {
+        return Ok(());
+    };
+    if b.is_empty() {
+        return Ok(());
+    }
+    let diagonal = b.diagonal().length();
+    let smallest = 1e-5 * diagonal;
+    if !(smallest..=diagonal).contains(&r) {
+        bail!(
+            "--radius {r} is out of proportion with the scene, whose diagonal is {diagonal:.3}: \
+             give a radius from {smallest:.1e} to {diagonal:.3} (SPPM starts at 1% of the diagonal)"
+        );
+    }
+    Ok(())
+}
+
 /// Checks the settings of `photon`, `vpl` or `irradiance-cache` and the
 /// memory their build needs (the cap doubles with `force`).
 pub fn plan(
@@ -299,6 +321,7 @@ pub fn plan(
     Ok(match kind {
         BiasedKind::Photon => {
             let s = args.photon(max_depth, rr_depth, seed)?;
+            check_radius(s.radius, scene)?;
             let (what, bytes) = tracing_memory(
                 scene,
                 s.photons,
@@ -334,6 +357,7 @@ pub fn sppm_plan(
     force: bool,
 ) -> Result<SppmSettings> {
     let settings = args.sppm(max_depth, rr_depth)?;
+    check_radius(settings.radius, scene)?;
     let (what, bytes) = tracing_memory(
         scene,
         settings.photons,
