@@ -122,6 +122,20 @@ pub fn render_to_files(
             100.0 * r.acceptance_rate
         );
     }
+    // A lit scene whose bootstrap found no light would be all black: no
+    // picture is better than a wrong one (`--bootstrap 1` on the door gave
+    // "b = 0.0000" and a black image with exit 0).
+    if let Some(b) = &r.bootstrap
+        && b.b == 0.0
+        && !scene.lights.is_empty()
+        && !r.stats.interrupted
+    {
+        bail!(
+            "Metropolis: none of the {} bootstrap paths found light, so its brightness b is 0 and \
+             the picture would be black although the scene is lit: raise --bootstrap (nothing was written)",
+            b.paths
+        );
+    }
     let mutations = options.spp as u64 * scene.camera.width as u64 * scene.camera.height as u64;
     files.write(&r.film, &r.stats, options.spp, exposure, || {
         format!(

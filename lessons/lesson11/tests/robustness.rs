@@ -1443,3 +1443,27 @@ fn search_radii_out_of_proportion_are_refused() {
         );
     }
 }
+
+/// Metropolis refuses to write a black picture of a lit scene: with
+/// `--bootstrap 1` on the door no bootstrap path finds the light through the
+/// gap (it printed "b = 0.0000" and wrote a black image with exit 0).
+#[test]
+fn a_metropolis_bootstrap_that_finds_no_light_writes_nothing() {
+    let dir = folder("mlt-bootstrap-1");
+    let before = files(&dir);
+    let args = tiny(&["render", "-s", "door", "-i", "mlt", "--bootstrap", "1"]);
+    let o = run(&dir, &args);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    let last = err.trim_end().lines().last().unwrap_or("");
+    assert!(
+        last.starts_with("error: ") && last.contains("none of the 1 bootstrap paths found light"),
+        "{err}"
+    );
+    assert!(files(&dir) == before, "files were written: {err}");
+    // The default bootstrap finds the light: the same render is written.
+    let args = tiny(&["render", "-s", "door", "-i", "mlt"]);
+    let o = run(&dir, &args);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    std::fs::remove_dir_all(&dir).ok();
+}
