@@ -267,6 +267,12 @@ fn check_ray_budget(
     };
     let samples = scene.camera.width as f64 * scene.camera.height as f64 * options.spp as f64;
     let total = per_sample as f64 * samples;
+    // The bound saturates at u64::MAX ("18446744073709551615 rays").
+    let per_sample = if per_sample == u64::MAX {
+        format!("more than {:.1e}", u64::MAX as f64)
+    } else {
+        per_sample.to_string()
+    };
     crate::console::say!(
         "naive recursion (N = {:?}, D = {depth}): at most {per_sample} rays per sample, {total:.2e} rays for {}×{} at {} spp",
         naive.branching(),

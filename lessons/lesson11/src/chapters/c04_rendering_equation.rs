@@ -180,8 +180,15 @@ fn render(tour: &Tour) -> Result<Section> {
         None,
     ));
     table.rows.push(row(&roulette, roulette_rays, "Russian roulette", Some("4 1")));
+    // A black picture (a scene lit only where these depths do not reach)
+    // has no percentage: "(-inf % lower)" said nothing.
+    let lower_text = if lower.is_finite() {
+        format!(" ({lower:.0} % lower)")
+    } else {
+        String::new()
+    };
     crate::console::say!(
-        "  mean of the image: cut-off {:.4} ± {:.4}, roulette {:.4} ± {:.4} ({lower:.0} % lower)",
+        "  mean of the image: cut-off {:.4} ± {:.4}, roulette {:.4} ± {:.4}{lower_text}",
         cut.mean, cut.se, roulette_b.mean, roulette_b.se
     );
 

@@ -113,9 +113,9 @@ impl Lab {
         })
     }
 
-    /// The page's address, e.g. `http://127.0.0.1:8011/`.
+    /// The page's address, e.g. `http://127.0.0.1:8011/` (see [`page_url`]).
     pub fn url(&self) -> String {
-        format!("http://{}/", self.address)
+        page_url(self.address)
     }
 
     /// The pages and their renders (for the tests).
@@ -448,4 +448,30 @@ fn paths(state: &State, q: &Query) -> Result<Reply, String> {
     let integrator = job.integrator()?;
     let record = super::paths::record(integrator.as_ref(), &scene, [x, y], sample, job.seed())?;
     Ok(Reply::json(&record))
+}
+
+/// The address to open the page of a lab listening on `address`. A lab
+/// listening on every interface (`--host 0.0.0.0` or `::`) is opened on this
+/// machine by its loopback address: `http://0.0.0.0:P/` is no address to open.
+pub fn page_url(mut address: SocketAddr) -> String {
+    if address.ip().is_unspecified() {
+        address.set_ip(if address.is_ipv4() {
+            std::net::Ipv4Addr::LOCALHOST.into()
+        } else {
+            std::net::Ipv6Addr::LOCALHOST.into()
+        });
+    }
+    format!("http://{address}/")
+}
+
+#[cfg(test)]
+mod url_tests {
+    #[test]
+    fn a_lab_on_every_interface_is_opened_on_the_loopback() {
+        let url = |a: &str| super::page_url(a.parse().unwrap());
+        assert_eq!(url("0.0.0.0:8011"), "http://127.0.0.1:8011/");
+        assert_eq!(url("[::]:8011"), "http://[::1]:8011/");
+        assert_eq!(url("127.0.0.1:8011"), "http://127.0.0.1:8011/");
+        assert_eq!(url("192.168.1.5:80"), "http://192.168.1.5:80/");
+    }
 }
