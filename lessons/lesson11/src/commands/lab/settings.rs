@@ -87,7 +87,9 @@ impl SceneFolder {
                 .into_iter()
                 .flatten()
                 .flatten()
-                .filter(|e| e.path().is_file())
+                // A regular file itself, not a link: a link could lead out of
+                // the folder to any file the lab's user can read.
+                .filter(|e| e.file_type().is_ok_and(|t| t.is_file()))
                 .filter_map(|e| e.file_name().into_string().ok())
                 .filter(|name| is_scene_file_name(name))
                 .collect();
@@ -101,8 +103,9 @@ impl SceneFolder {
         list
     }
 
-    /// The `--scene` value for `name`: a built-in name as it is, a file of
-    /// the folder as its path. Nothing else: no other file can be named.
+    /// The `--scene` value for `name`: a built-in name as it is, a regular
+    /// file of the folder as its path. Nothing else: no other file can be
+    /// named, and a symbolic link in the folder is not followed.
     pub fn resolve(&self, name: &str) -> Result<String, String> {
         if BUILTIN_SCENES.iter().any(|s| s.name == name) {
             return Ok(name.to_string());
@@ -111,7 +114,8 @@ impl SceneFolder {
             && is_scene_file_name(name)
         {
             let path = dir.join(name);
-            if path.is_file() {
+            // Not `is_file`, which follows a link out of the folder.
+            if std::fs::symlink_metadata(&path).is_ok_and(|m| m.file_type().is_file()) {
                 return Ok(path.to_string_lossy().into_owned());
             }
         }
@@ -230,6 +234,39 @@ pub fn one_line(e: &anyhow::Error) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A symbolic link in the scenes folder is neither listed nor loaded,
+    /// whether it leads out of the folder or not (`lab --scenes DIR`
+    /// followed one to a file outside DIR and sent its values to the page).
+    #[cfg(unix)]
+    #[test]
+    fn links_in_the_scenes_folder_are_not_followed() {
+        let root = std::env::temp_dir().join(format!("lab-links-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&root);
+        let dir = root.join("scenes");
+        std::fs::create_dir_all(&dir).unwrap();
+        let outside = root.join("secret.toml");
+        std::fs::write(&outside, "secret = \"do not show\"\n").unwrap();
+        std::fs::write(dir.join("room.toml"), "# a scene\n").unwrap();
+        std::os::unix::fs::symlink(&outside, dir.join("evil.toml")).unwrap();
+        std::os::unix::fs::symlink(dir.join("room.toml"), dir.join("alias.toml")).unwrap();
+        let folder = SceneFolder(Some(dir.clone()));
+        let names: Vec<String> = folder.list().into_iter().map(|s| s.name).collect();
+        assert!(names.contains(&"room.toml".to_string()), "{names:?}");
+        assert!(
+            !names.iter().any(|n| n == "evil.toml" || n == "alias.toml"),
+            "{names:?}"
+        );
+        assert!(folder.resolve("room.toml").is_ok());
+        for link in ["evil.toml", "alias.toml"] {
+            let e = folder.resolve(link).unwrap_err();
+            assert!(
+                e.starts_with("unknown scene") && !e.contains("do not show"),
+                "{e}"
+            );
+        }
+        std::fs::remove_dir_all(&root).ok();
+    }
 
     fn setup(query: &str) -> Result<RenderSetup, String> {
         let mut allowed = RENDER_PARAMS.to_vec();
