@@ -1467,3 +1467,33 @@ fn a_metropolis_bootstrap_that_finds_no_light_writes_nothing() {
     assert!(o.status.success(), "{}", text(&o.stderr));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A chapter names its files after the scene `--scene` gives it (`biased -s
+/// furnace` wrote the furnace as `cornell-*`, over real Cornell results in
+/// that folder), and one that has no Cornell box to replace says so.
+#[test]
+fn chapters_name_their_files_after_the_scene_they_render() {
+    let dir = fresh("chapter-scene");
+    let o = run(&dir, &["biased", "-s", "furnace", "--quality", "tiny"]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let written: Vec<String> = files(&dir.join("out/lesson11/09-biased"))
+        .into_keys()
+        .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
+        .collect();
+    assert!(
+        written.iter().any(|n| n.starts_with("furnace-")),
+        "{written:?}"
+    );
+    assert!(
+        !written.iter().any(|n| n.starts_with("cornell-")),
+        "{written:?}"
+    );
+    let o = run(&dir, &["brdf", "-s", "furnace", "--quality", "tiny"]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert!(
+        text(&o.stderr).contains("--scene furnace does not apply to the BRDF chapter"),
+        "{}",
+        text(&o.stderr)
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -24,6 +24,14 @@ pub const CHAPTER: Chapter = Chapter::new(
 
 /// Chapter 3: BRDFs.
 fn render(tour: &Tour) -> Result<Section> {
+    // `--scene` replaces the chapters' Cornell box; this chapter has none.
+    // Said, not silently ignored (`brdf -s furnace` rendered the gallery).
+    if let Some(other) = &tour.overrides.scene {
+        eprintln!(
+            "note: --scene {other} does not apply to the BRDF chapter: it shows the BRDF gallery \
+             (brdf-gallery) and plots the lobes"
+        );
+    }
     let mut s = tour.chapter(
         "03-brdf",
         "3 · BRDFs",

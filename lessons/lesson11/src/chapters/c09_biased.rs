@@ -137,7 +137,8 @@ fn render(tour: &Tour) -> Result<Section> {
     let (reference, max_depth) = independent(builtin, &scene, &base, 5, 256);
     let floor = reference.noise_floor();
     crate::console::say!(
-        "  cornell {}×{}: max depth {max_depth}, reference {} (noise floor {floor:.5})",
+        "  {} {}×{}: max depth {max_depth}, reference {} (noise floor {floor:.5})",
+        scene.name,
         scene.camera.width, scene.camera.height, reference.source
     );
     // The lamp and the pixels that see part of it are left out of every
@@ -148,7 +149,8 @@ fn render(tour: &Tour) -> Result<Section> {
     for algorithm in Algorithm::ALL {
         let m = measure(&scene, &base, algorithm, &k, max_depth, &reference, &counted, &e)?;
         crate::console::say!(
-            "  cornell {:20} {:5} spp {:>8} (build {:>8})  RMSE {:.4}  bias² {:.2e}  variance {:.2e}",
+            "  {} {:20} {:5} spp {:>8} (build {:>8})  RMSE {:.4}  bias² {:.2e}  variance {:.2e}",
+            scene.name,
             algorithm.label(),
             m.run.spp,
             seconds_text(m.run.seconds),
@@ -171,7 +173,7 @@ fn render(tour: &Tour) -> Result<Section> {
         let unbiased = m.algorithm.unbiased();
         let picture = write_image(
             &c.dir,
-            &format!("cornell-{}", m.algorithm.stem()),
+            &format!("{}-{}", scene.name, m.algorithm.stem()),
             &m.run.image,
             m.run.spp,
             0.0,
@@ -220,7 +222,7 @@ fn render(tour: &Tour) -> Result<Section> {
         y_scale: Scale::Log,
         series,
     };
-    let svg = c.dir.join("cornell-rmse-time.svg");
+    let svg = c.dir.join(format!("{}-rmse-time.svg", scene.name));
     chart.write(&svg)?;
     c.section.figures.push(Figure::plot(
         &tour.out,
@@ -245,7 +247,7 @@ fn render(tour: &Tour) -> Result<Section> {
             .map(|m| (m.algorithm.label().to_string(), vec![m.bias2, m.variance]))
             .collect(),
     };
-    let svg = c.dir.join("cornell-bias-variance.svg");
+    let svg = c.dir.join(format!("{}-bias-variance.svg", scene.name));
     bars.write(&svg)?;
     c.section.figures.push(Figure::plot(
         &tour.out,
@@ -282,7 +284,7 @@ fn render(tour: &Tour) -> Result<Section> {
     difference(
         tour,
         &mut c,
-        "cornell-vpl-clamping",
+        &format!("{}-vpl-clamping", scene.name),
         &full.image,
         &vpl.run.image,
         vpl.run.spp,
@@ -633,7 +635,7 @@ fn irradiance_records(
                 shown += 1;
             }
         }
-        let stem = format!("cornell-ic-a{a:.2}");
+        let stem = format!("{}-ic-a{a:.2}", scene.name);
         let picture = write_image(&c.dir, &stem, &image, spp, 0.0, Some(seconds))?;
         c.section.figures.push(Figure::new(
             &tour.out,
