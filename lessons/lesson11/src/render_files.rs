@@ -157,6 +157,21 @@ fn interrupted_summary(
 /// Warns, once per run, that a scene without lights renders black (ambient
 /// occlusion needs none).
 pub fn warn_if_unlit(scene: &Scene, integrator: &dyn Integrator) {
+    // Light tracing starts its paths on the lights' surfaces and points: an
+    // environment emits none, so what the sky lights is missing (the white
+    // furnace came out 0 instead of 1 with no word).
+    static SKYLESS: AtomicBool = AtomicBool::new(false);
+    if integrator.name() == "light"
+        && scene.lights.iter().any(|l| l.is_environment())
+        && !SKYLESS.swap(true, Ordering::Relaxed)
+    {
+        eprintln!(
+            "warning: light tracing starts no path at the environment of `{}`: the sky's light \
+             is missing from this image (too dark, or black under a sky alone); path or bdpt \
+             render it",
+            scene.name
+        );
+    }
     static WARNED: AtomicBool = AtomicBool::new(false);
     if scene.lights.is_empty() && integrator.name() != "ao" && !WARNED.swap(true, Ordering::Relaxed)
     {

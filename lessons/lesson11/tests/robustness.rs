@@ -1497,3 +1497,27 @@ fn chapters_name_their_files_after_the_scene_they_render() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Light tracing says up front that it cannot see an environment (the white
+/// furnace, lit by a sky alone, came out black with no word).
+#[test]
+fn light_tracing_says_it_cannot_see_the_sky() {
+    let dir = fresh("light-sky");
+    let o = run(
+        &dir,
+        &tiny(&["render", "-s", "white-furnace", "-i", "light"]),
+    );
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert!(
+        text(&o.stderr).contains("light tracing starts no path at the environment"),
+        "{}",
+        text(&o.stderr)
+    );
+    let o = run(&dir, &tiny(&["render", "-s", "cornell", "-i", "light"]));
+    assert!(
+        !text(&o.stderr).contains("environment"),
+        "{}",
+        text(&o.stderr)
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
