@@ -56,6 +56,12 @@ impl SceneOrigin {
     }
 }
 
+/// The brightest radiance (or intensity) a scene may give: 10¹². Light paths
+/// multiply it by a light's area, 1/pdf and cosines in 32-bit floats (to
+/// 3.4·10³⁸), and an `emission = 3e38` made light tracing black and
+/// bidirectional tracing 6× too dark; the sun's luminance is about 1.6·10⁹.
+pub const MAX_RADIANCE: f32 = 1e12;
+
 /// Loads and checks the scene file `path`.
 ///
 /// Only a regular file of at most [`MAX_SCENE_FILE_BYTES`] is read: a
@@ -192,10 +198,20 @@ impl Context<'_> {
         }
     }
 
-    /// A radiance or intensity: every component ≥ 0.
+    /// A radiance or intensity: every component ≥ 0 and at most
+    /// [`MAX_RADIANCE`].
     fn radiance(&self, c: &Spanned<ColorDesc>) -> Result<Color> {
         let v = c.get_ref().0;
-        if v.min_element() >= 0.0 {
+        if v.max_element() > MAX_RADIANCE {
+            Err(self.error(
+                c.span(),
+                format!(
+                    "radiance {} is too bright: at most {MAX_RADIANCE:e} (brighter light overflows \
+                     the renderer's 32-bit products: light tracing gave black)",
+                    fmt_color(v)
+                ),
+            ))
+        } else if v.min_element() >= 0.0 {
             Ok(v)
         } else {
             Err(self.error(
@@ -540,6 +556,37 @@ mod tests {
     }
 
     const CAMERA: &str = "[camera]\nposition = [0, 0, 5]\nlook_at = [0, 0, 1]\nfov = 40\n";
+
+    /// Light brighter than 32-bit products can carry is refused where it is
+    /// given (emission, an environment's radiance, a point light's
+    /// intensity), naming the bound; 10¹² itself is accepted.
+    #[test]
+    fn radiance_too_bright_for_f32_is_refused() {
+        let shape = "[materials.m]\ntype = \"lambert\"\nalbedo = 0.5\n\
+                     [[shapes]]\nname = \"s\"\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"m\"\n";
+        for (extra, ok) in [
+            ("emission = 3e38\n", false),
+            ("emission = [1, 1e13, 1]\n", false),
+            ("emission = 1e12\n", true),
+        ] {
+            let text = format!("{CAMERA}{shape}{extra}");
+            match load_str(&text, &origin()) {
+                Ok(_) => assert!(ok, "{extra} was accepted"),
+                Err(e) => {
+                    let e = e.to_string();
+                    assert!(!ok, "{extra}: {e}");
+                    assert!(e.contains("too bright") && e.contains("test.toml"), "{e}");
+                }
+            }
+        }
+        let sky = format!("{CAMERA}[environment]\nradiance = 1e30\n");
+        assert!(
+            load_str(&sky, &origin())
+                .unwrap_err()
+                .to_string()
+                .contains("too bright")
+        );
+    }
 
     #[test]
     fn defaults_fill_what_the_file_leaves_out() {
