@@ -180,11 +180,13 @@ pub fn render_setup(
         ));
     }
     options.progress = false;
-    // The checks of `lesson11 render`; naive recursion's ray budget is for
-    // batch renders (a lab render can be stopped at any time), hence `force`.
+    // The checks of `lesson11 render`, naive recursion's ray budget among
+    // them: the lab refuses what the command line refuses, with its message
+    // (it ran a naive render of 6.4e14 rays whose command the page showed
+    // and `lesson11 render` refused).
     let plan = args
         .integrator
-        .plan(&args.integrator_args, &scene, &options, true)
+        .plan(&args.integrator_args, &scene, &options, false)
         .map_err(|e| one_line(&e))?;
     let options_line = words
         .iter()
@@ -234,6 +236,17 @@ pub fn one_line(e: &anyhow::Error) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Naive recursion over the command line's ray budget is refused with
+    /// its message (N = 8 at max depth 12: 8¹¹ rays per sample).
+    #[test]
+    fn the_lab_refuses_the_naive_renders_the_command_line_refuses() {
+        let Err(e) = setup("integrator=naive&width=64&height=64&spp=16&max-depth=12") else {
+            panic!("accepted");
+        };
+        assert!(e.contains("more than the budget"), "{e}");
+        assert!(setup("integrator=naive&width=64&height=64&spp=16&max-depth=3").is_ok());
+    }
 
     /// A symbolic link in the scenes folder is neither listed nor loaded,
     /// whether it leads out of the folder or not (`lab --scenes DIR`
