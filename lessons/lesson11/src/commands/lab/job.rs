@@ -202,8 +202,9 @@ fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
 }
 
 /// Why the inspector has nothing to show for SPPM.
-const SPPM_NO_SAMPLES: &str = "sppm's picture is made of passes of visible points and photons, \
-     not of pixel samples, so there are no paths of one sample to show (photon mapping's are)";
+pub(super) const SPPM_NO_SAMPLES: &str = "sppm's picture is made of passes of visible points and photons, \
+     not of pixel samples, so there are no paths of one sample to show (photon mapping does not \
+     record its paths either; path, direct, naive, light and bdpt do)";
 
 /// Why the inspector has nothing to show for Metropolis.
 const MLT_NO_SAMPLES: &str = "mlt's picture is made of Markov chains that mutate paths, not of \

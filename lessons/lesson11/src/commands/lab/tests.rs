@@ -141,5 +141,15 @@ fn a_biased_integrator_is_built_on_the_jobs_thread() {
     assert_eq!(status, 200, "{body}");
     let r: Value = serde_json::from_str(&body).unwrap();
     assert_eq!(r["integrator"], "photon");
+    // The inspector says the same of photon mapping wherever it speaks of
+    // it: its record says it records no paths, so SPPM's note must not send
+    // the student to photon mapping's paths (it said "photon mapping's are").
+    assert!(
+        r["truncated"]
+            .as_str()
+            .is_some_and(|t| t.contains("does not record its paths")),
+        "{r}"
+    );
+    assert!(super::job::SPPM_NO_SAMPLES.contains("photon mapping does not record"));
     lab.stop();
 }
