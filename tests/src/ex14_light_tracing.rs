@@ -34,7 +34,7 @@
 //! tests, a false failure below 5e-4 under the normal approximation. Light
 //! tracing's splats are heavy-tailed, so that was measured too: 60 gradings
 //! (the reference solution and the two correct fixtures, 20 seeds each, the
-//! ignored test `ex14_false_failures` in `tests/tests/check_grader.rs`) had
+//! test `ex14_false_failures` in `tests/tests/check_grader.rs`) had
 //! no false failure.
 
 use std::sync::Mutex;

@@ -33,7 +33,7 @@
 //! which is why the variance is taken over maps, tile by tile). Measured:
 //! over 25 seeds of the reference solution the largest |z| stayed below
 //! 0.52 of the threshold, over 24 of a fixture with another roulette below
-//! 0.60 (`check_grader`'s ignored `ex17_caustic_comparison_over_seeds`);
+//! 0.60 (`check_grader`'s `ex17_caustic_comparison_over_seeds`);
 //! the whole grading takes about 1 s in the test profile.
 
 use std::path::{Path, PathBuf};

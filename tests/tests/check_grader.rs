@@ -642,12 +642,11 @@ fn ex14_light_tracing() {
 
 /// The false-failure rate of exercise 14's grader, measured over seeds (light
 /// tracing's splats are heavy-tailed, so the normal approximation of its
-/// z-tests is checked): the reference solution and the two correct fixtures,
-/// 20 seeds each. About 45 s on two cores, hence ignored; run it after a
-/// change to the grader or its reference:
-/// `cargo test -p grading --features solutions --test check_grader -- --ignored ex14_false_failures`.
+/// z-tests is checked): the reference solution (with the feature
+/// `solutions`) and the two correct fixtures, 20 seeds each; 7 s on two
+/// cores (`cargo test -p grading --features solutions --test check_grader
+/// ex14_false_failures`).
 #[test]
-#[ignore]
 fn ex14_false_failures() {
     use fixtures::ex14;
     let mut failed = Vec::new();
@@ -775,8 +774,8 @@ fn ex17_photon_mapping() {
 /// photon maps: a correct solution (another roulette, another order of the
 /// random numbers) passes for every seed, with the largest |z| well under
 /// the threshold (measured: see `tests/src/ex17_photon_mapping.rs`).
+/// 24 renders of 32 photon maps each: 3 s on two cores.
 #[test]
-#[ignore = "slow: 24 renders of 32 photon maps each; run with --ignored to measure the margin"]
 fn ex17_caustic_comparison_over_seeds() {
     use fixtures::ex17::*;
     let mut largest = 0.0f64;

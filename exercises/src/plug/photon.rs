@@ -2,14 +2,13 @@
 //! estimate.
 
 use std::sync::OnceLock;
-use std::sync::atomic::AtomicBool;
 
 use raytracer::brdf::Brdf;
 use raytracer::film::Splat;
 use raytracer::integrator::photon::{Photon, photon_sample_index};
 use raytracer::integrator::photon_map::{PhotonMap, Search, radius_for};
 use raytracer::integrator::visible_point::visible_point;
-use raytracer::integrator::{Integrator, PhotonMapping, PhotonSettings, nee};
+use raytracer::integrator::{Integrator, PhotonSettings, nee};
 use raytracer::math::{Color, UVec2};
 use raytracer::sampling::Sampler;
 use raytracer::scene::{Interaction, Scene};
@@ -122,43 +121,6 @@ impl Integrator for StudentPhotonMapping {
         let brdf = scene.brdf(&it);
         let direct = nee::sample_light(scene, &it, brdf, sampler, false);
         vp.le + vp.beta * (direct + (self.estimate)(map, &it, brdf, *search))
-    }
-}
-
-/// The renderer's photon mapping, its maps built at the first sample (for
-/// the scene rendered).
-pub struct LazyPhotonMapping {
-    pub settings: PhotonSettings,
-    built: OnceLock<PhotonMapping>,
-}
-
-impl LazyPhotonMapping {
-    pub fn new(settings: PhotonSettings) -> Self {
-        LazyPhotonMapping {
-            settings,
-            built: OnceLock::new(),
-        }
-    }
-}
-
-impl Integrator for LazyPhotonMapping {
-    fn name(&self) -> &'static str {
-        "photon"
-    }
-
-    fn sample(
-        &self,
-        scene: &Scene,
-        pixel: UVec2,
-        sampler: &mut Sampler,
-        splats: &mut Vec<Splat>,
-    ) -> Color {
-        self.built
-            .get_or_init(|| {
-                PhotonMapping::build(scene, self.settings, &AtomicBool::new(false))
-                    .expect("photon settings checked by the caller")
-            })
-            .sample(scene, pixel, sampler, splats)
     }
 }
 

@@ -1,9 +1,17 @@
 //! What `lesson11 render --student` renders: the student's integrator beside
 //! the renderer's of the same estimator.
 
+use std::sync::OnceLock;
+use std::sync::atomic::AtomicBool;
+
+use raytracer::film::Splat;
 use raytracer::integrator::{
-    Bdpt, DirectStrategy, Integrator, LightTracer, NaiveRecursive, PathTracer, VplSettings,
+    Bdpt, DirectStrategy, InstantRadiosity, Integrator, LightTracer, NaiveRecursive, PathTracer,
+    PhotonMapping, VplSettings,
 };
+use raytracer::math::{Color, UVec2};
+use raytracer::sampling::Sampler;
+use raytracer::scene::Scene;
 
 use crate::{ex12_nee, ex13_mis};
 
@@ -225,26 +233,32 @@ impl StudentRender {
                 radius_bits,
                 rr_depth,
                 seed,
-            } => Box::new(LazyPhotonMapping::new(photon_settings(
-                photons,
-                k,
-                radius_bits,
-                rr_depth,
-                seed,
-            ))),
+            } => {
+                let settings = photon_settings(photons, k, radius_bits, rr_depth, seed);
+                Box::new(BuiltAtFirstSample::new("photon", move |scene| {
+                    PhotonMapping::build(scene, settings, &AtomicBool::new(false))
+                        .expect("photon settings checked by the caller")
+                }))
+            }
             StudentRender::Vpl {
                 paths,
                 clamp,
                 max_depth,
                 rr_depth,
                 seed,
-            } => Box::new(LazyInstantRadiosity::new(VplSettings {
-                paths: paths as u64,
-                clamp: clamp.unwrap_or(0.0),
-                max_depth,
-                rr_depth,
-                seed,
-            })),
+            } => {
+                let settings = VplSettings {
+                    paths: paths as u64,
+                    clamp: clamp.unwrap_or(0.0),
+                    max_depth,
+                    rr_depth,
+                    seed,
+                };
+                Box::new(BuiltAtFirstSample::new("vpl", move |scene| {
+                    InstantRadiosity::build(scene, settings, &AtomicBool::new(false))
+                        .expect("instant radiosity's settings are checked where they are made")
+                }))
+            }
         }
     }
 
@@ -290,5 +304,42 @@ impl StudentRender {
                 "the renderer's instant radiosity (`--integrator vpl`) with the same number of light paths, clamp, depth and seed; it samples the light for direct light where yours gathers the VPLs on the light, and its VPL set is another draw than yours: the same mean over VPL sets, but each picture carries its own set's error, the same in every pixel, which the tile z-test does not see as noise"
             }
         }
+    }
+}
+
+/// A renderer integrator that is built from the scene (photon maps, VPLs)
+/// but asked for before it sees one: built at its first sample, from the
+/// scene that sample is of.
+pub struct BuiltAtFirstSample<I> {
+    name: &'static str,
+    build: Box<dyn Fn(&Scene) -> I + Send + Sync>,
+    built: OnceLock<I>,
+}
+
+impl<I> BuiltAtFirstSample<I> {
+    pub fn new(name: &'static str, build: impl Fn(&Scene) -> I + Send + Sync + 'static) -> Self {
+        BuiltAtFirstSample {
+            name,
+            build: Box::new(build),
+            built: OnceLock::new(),
+        }
+    }
+}
+
+impl<I: Integrator + Send> Integrator for BuiltAtFirstSample<I> {
+    fn name(&self) -> &'static str {
+        self.name
+    }
+
+    fn sample(
+        &self,
+        scene: &Scene,
+        pixel: UVec2,
+        sampler: &mut Sampler,
+        splats: &mut Vec<Splat>,
+    ) -> Color {
+        self.built
+            .get_or_init(|| (self.build)(scene))
+            .sample(scene, pixel, sampler, splats)
     }
 }

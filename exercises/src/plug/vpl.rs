@@ -2,11 +2,10 @@
 //! gather.
 
 use std::sync::OnceLock;
-use std::sync::atomic::AtomicBool;
 
 use raytracer::film::Splat;
 use raytracer::integrator::photon::photon_sample_index;
-use raytracer::integrator::{InstantRadiosity, Integrator, VplSettings, camera_ray};
+use raytracer::integrator::{Integrator, camera_ray};
 use raytracer::math::{Color, UVec2, Vec3A};
 use raytracer::sampling::Sampler;
 use raytracer::scene::{Interaction, Scene};
@@ -164,44 +163,5 @@ impl Integrator for StudentVpl {
             }
         };
         le + (self.gather)(scene, &x, vpls, self.clamp)
-    }
-}
-
-/// The renderer's instant radiosity ([`InstantRadiosity`]), its VPLs traced
-/// at the first sample from the scene it is given (the integrator is built
-/// before it sees the scene).
-#[derive(Debug)]
-pub struct LazyInstantRadiosity {
-    pub settings: VplSettings,
-    built: OnceLock<InstantRadiosity>,
-}
-
-impl LazyInstantRadiosity {
-    pub fn new(settings: VplSettings) -> Self {
-        LazyInstantRadiosity {
-            settings,
-            built: OnceLock::new(),
-        }
-    }
-}
-
-impl Integrator for LazyInstantRadiosity {
-    fn name(&self) -> &'static str {
-        "vpl"
-    }
-
-    fn sample(
-        &self,
-        scene: &Scene,
-        pixel: UVec2,
-        sampler: &mut Sampler,
-        splats: &mut Vec<Splat>,
-    ) -> Color {
-        self.built
-            .get_or_init(|| {
-                InstantRadiosity::build(scene, self.settings, &AtomicBool::new(false))
-                    .expect("instant radiosity's settings are checked where they are made")
-            })
-            .sample(scene, pixel, sampler, splats)
     }
 }
