@@ -438,79 +438,82 @@ fn check_gather(gather: GatherFn) -> Result<(), String> {
     let Some(k) = (0..cases.len()).find(|&k| !same(got[k], right(&cases[k]))) else {
         return Ok(());
     };
-    let scene = &scene;
-    let slip = |s: Slip| move |c: &Case| value(scene, c, s);
-    let signed = slip(Slip {
-        signed: true,
-        ..Slip::default()
-    });
-    let incoming = slip(Slip {
-        incoming: true,
-        ..Slip::default()
-    });
-    let r = slip(Slip {
-        r: true,
-        ..Slip::default()
-    });
-    let clamp_light = slip(Slip {
-        clamp_light: true,
-        ..Slip::default()
-    });
-    let no_clamp = slip(Slip {
-        no_clamp: true,
-        ..Slip::default()
-    });
-    let no_shadow = slip(Slip {
-        no_shadow: true,
-        ..Slip::default()
-    });
-    let no_f_y = slip(Slip {
-        no_f_y: true,
-        ..Slip::default()
-    });
-    let no_f_x = slip(Slip {
-        no_f_x: true,
-        ..Slip::default()
-    });
-    let no_cos_surface = slip(Slip {
-        no_cos_surface: true,
-        ..Slip::default()
-    });
-    let mistakes: [Mistake<Case, Color>; 9] = [
+    // Each usual mistake: what it is called, and the slip that makes it.
+    let slips: [(&str, Slip); 9] = [
         (
             "signed cosines: your geometry term is negative where exactly one of the two normals faces away from the connection (the floor seen from below); G weighs how much the two surfaces see of each other, whichever way their normals point",
-            &signed,
+            Slip {
+                signed: true,
+                ..Slip::default()
+            },
         ),
         (
             "the cosine at the wrong end: at the VPL you took the cosine with the direction the light path ARRIVED from, not with the connection to x, which is where the VPL's light leaves",
-            &incoming,
+            Slip {
+                incoming: true,
+                ..Slip::default()
+            },
         ),
         (
             "r for r²: your light falls off as 1/r with distance; the geometry term changes a solid angle into area, which brings 1/‖x − y‖²",
-            &r,
+            Slip {
+                r: true,
+                ..Slip::default()
+            },
         ),
         (
             "the clamp is applied to the contribution (the light, per colour) instead of to the geometry term G: the lecture's clamping bounds G",
-            &clamp_light,
+            Slip {
+                clamp_light: true,
+                ..Slip::default()
+            },
         ),
         (
             "no clamping: with clamp = Some(g_max), your G still exceeds g_max near the corner",
-            &no_clamp,
+            Slip {
+                no_clamp: true,
+                ..Slip::default()
+            },
         ),
         (
             "no visibility: a VPL behind the blocker still lights x (the shadow ray is missing)",
-            &no_shadow,
+            Slip {
+                no_shadow: true,
+                ..Slip::default()
+            },
         ),
         (
             "the BRDF at the VPL is missing: a VPL on a surface reflects its flux with its BRDF, from its incoming direction towards x",
-            &no_f_y,
+            Slip {
+                no_f_y: true,
+                ..Slip::default()
+            },
         ),
-        ("the BRDF at x is missing", &no_f_x),
+        (
+            "the BRDF at x is missing",
+            Slip {
+                no_f_x: true,
+                ..Slip::default()
+            },
+        ),
         (
             "the cosine at a VPL on a surface is missing: the geometry term has a cosine at each end of the connection, at the VPL too (its light leaves the surface towards x)",
-            &no_cos_surface,
+            Slip {
+                no_cos_surface: true,
+                ..Slip::default()
+            },
         ),
     ];
+    let scene = &scene;
+    let answers: Vec<_> = slips
+        .iter()
+        .map(|&(_, s)| move |c: &Case| value(scene, c, s))
+        .collect();
+    let mistakes: Vec<Mistake<Case, Color>> = slips
+        .iter()
+        .zip(&answers)
+        .map(|((why, _), answer)| (*why, answer as &dyn Fn(&Case) -> Color))
+        .collect();
     let c = &cases[k];
     let why = recognise(&cases, &got, &mistakes, same).unwrap_or_else(|| {
         // Light missing only where no clamping was asked and G is large.
