@@ -3,16 +3,18 @@
 
 use std::time::Instant;
 
-use anyhow::{Result, bail};
+use anyhow::{Result, anyhow, bail};
 use exercises::ex16_metropolis;
 use exercises::plug::{ChainSettings, PrimaryPaths, StudentRender, chains_film, run_chains};
 use grading::Outcome;
+use raytracer::film::Image;
 use raytracer::metrics::{z_test, z_threshold};
+use raytracer::render::RenderStats;
 use raytracer::render::metropolis::render_metropolis;
-use raytracer::render::{RenderStats, render};
 
 use crate::integrators::{IntegratorArgs, IntegratorKind, IntegratorPlan};
 use crate::options::SceneArgs;
+use crate::page::Picture;
 use crate::render_files::{OutputFiles, render_to_files};
 
 /// The student's integrator (exercises 10–15, 17 and 18, by `--integrator`:
@@ -96,8 +98,50 @@ pub fn run(
              photon (17) or vpl (18); ambient occlusion, SPPM and irradiance caching are the renderer's only"
         ),
     };
-    let exercise = which.exercise();
+    announce(&which)?;
     let (student, reference) = (which.student(), which.reference());
+    let out = &scene_args.out;
+    let stem = format!("{}-{}", scene.name, reference.name());
+    let a = render_to_files(
+        &scene,
+        student.as_ref(),
+        &options,
+        out,
+        &format!("{stem}-student"),
+        exposure,
+    )?;
+    // Another seed for the reference: the two integrators may use the same
+    // random numbers in the same order, and correlated pictures would hide
+    // a difference.
+    let mut other = options.clone();
+    other.seed = other.seed.wrapping_add(1);
+    let b = render_to_files(
+        &scene,
+        reference.as_ref(),
+        &other,
+        out,
+        &format!("{stem}-reference"),
+        exposure,
+    )?;
+    // Compared as written (mean and variance EXR), not rendered again.
+    let read = |p: &Picture| -> Result<(Image, Image)> {
+        let variance = p.exr.with_file_name(format!(
+            "{}-variance.exr",
+            p.exr.file_stem().unwrap_or_default().to_string_lossy()
+        ));
+        Ok((
+            Image::read_exr(&p.exr).map_err(|e| anyhow!("{}: {e}", p.exr.display()))?,
+            Image::read_exr(&variance).map_err(|e| anyhow!("{}: {e}", variance.display()))?,
+        ))
+    };
+    say_tile_z_test(&read(&a)?, &read(&b)?);
+    Ok(())
+}
+
+/// Says which exercise renders and what stands beside it; refuses one that
+/// is not started.
+fn announce(which: &StudentRender) -> Result<()> {
+    let exercise = which.exercise();
     let outcome = grading::grade_exercise(exercise).unwrap_or(Outcome::NotStarted(None));
     if outcome.is_not_started() {
         bail!(
@@ -106,39 +150,14 @@ pub fn run(
     }
     crate::console::say!("{exercise}: {outcome}");
     crate::console::say!("  beside it: {}", which.reference_note());
-    let out = &scene_args.out;
-    let stem = format!("{}-{}", scene.name, reference.name());
-    render_to_files(
-        &scene,
-        student.as_ref(),
-        &options,
-        out,
-        &format!("{stem}-student"),
-        exposure,
-    )?;
-    render_to_files(
-        &scene,
-        reference.as_ref(),
-        &options,
-        out,
-        &format!("{stem}-reference"),
-        exposure,
-    )?;
-    // Compare them tile by tile (16-pixel tiles), as the grader does.
-    // Different seeds: the two integrators may use the same random numbers in
-    // the same order, and correlated pictures would hide a difference.
-    let mut quiet = options.clone();
-    quiet.progress = false;
-    let a = render(&scene, student.as_ref(), &quiet);
-    quiet.seed = quiet.seed.wrapping_add(1);
-    let b = render(&scene, reference.as_ref(), &quiet);
-    let z = z_test(
-        &a.film.image(),
-        &a.film.variance_image(),
-        &b.film.image(),
-        &b.film.variance_image(),
-        16,
-    );
+    Ok(())
+}
+
+/// The grader's tile z-test (16-pixel tiles, family-wise 1e-4) between the
+/// student's picture and the reference's, each as (mean, variance), said in
+/// one line.
+fn say_tile_z_test(a: &(Image, Image), b: &(Image, Image)) {
+    let z = z_test(&a.0, &a.1, &b.0, &b.1, 16);
     let threshold = z_threshold(z.z.len() * 3, 1e-4);
     crate::console::say!(
         "  tile z-test: largest |z| = {:.1} in tile {} (threshold {threshold:.1}): {}",
@@ -150,7 +169,6 @@ pub fn run(
             "DIFFERS from the reference"
         }
     );
-    Ok(())
 }
 
 /// The student's Metropolis chains (exercise 16) over bidirectional path
@@ -170,15 +188,7 @@ fn run_metropolis(scene_args: &SceneArgs, ia: &IntegratorArgs, exposure: f32) ->
         max_depth: bdpt.max_depth,
         rr_depth: bdpt.rr_depth,
     };
-    let exercise = which.exercise();
-    let outcome = grading::grade_exercise(exercise).unwrap_or(Outcome::NotStarted(None));
-    if outcome.is_not_started() {
-        bail!(
-            "{exercise} is not started yet ({outcome}): fill in exercises/src/{exercise}.rs first"
-        );
-    }
-    crate::console::say!("{exercise}: {outcome}");
-    crate::console::say!("  beside it: {}", which.reference_note());
+    announce(&which)?;
     let (w, h) = (scene.camera.width, scene.camera.height);
     let chains = metropolis.chains;
     let settings = ChainSettings {
@@ -230,23 +240,9 @@ fn run_metropolis(scene_args: &SceneArgs, ia: &IntegratorArgs, exposure: f32) ->
     )?;
     // Pixels of one chain are not independent (its streaks), so this test
     // is only a guide; the grader tests tiles with the chains' own spread.
-    let z = z_test(
-        &student.image(),
-        &student.variance_image(),
-        &reference.film.image(),
-        &reference.film.variance_image(),
-        16,
-    );
-    let threshold = z_threshold(z.z.len() * 3, 1e-4);
-    crate::console::say!(
-        "  tile z-test: largest |z| = {:.1} in tile {} (threshold {threshold:.1}): {}",
-        z.max_abs_z,
-        z.worst_tile,
-        if (z.max_abs_z as f64) <= threshold {
-            "consistent with the reference"
-        } else {
-            "DIFFERS from the reference"
-        }
+    say_tile_z_test(
+        &(student.image(), student.variance_image()),
+        &(reference.film.image(), reference.film.variance_image()),
     );
     Ok(())
 }
