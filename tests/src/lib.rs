@@ -384,11 +384,17 @@ mod tests {
     }
 
     /// The gate of `cargo test --workspace` (and `cargo test -p grading`):
-    /// red while an exercise the student started fails. The student's own
+    /// red while an exercise the student started fails. With the feature
+    /// `solutions` the self-test's `reference_solutions_pass` does this work. The student's own
     /// harness (`--test exercises`) exits with success so that its summary
     /// stays the last line printed; this test is what fails instead.
     #[test]
     fn every_exercise_you_started_passes() {
+        if exercises::SOLUTIONS {
+            // The reference solutions: check_grader's `reference_solutions_pass`
+            // grades them, and demands more (every one passed).
+            return;
+        }
         let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
         let failing: Vec<String> = grade_all(threads, TIMEOUT)
             .into_iter()
