@@ -92,7 +92,7 @@ impl ImageTexture {
     /// any pixel memory is taken (a file of a few bytes may claim billions of
     /// pixels); the decoder is also given that limit for what it allocates.
     pub fn load(path: &std::path::Path) -> Result<ImageTexture, String> {
-        use image::{ImageFormat, ImageReader, Limits};
+        use image::{ImageDecoder, ImageFormat, ImageReader, Limits};
         let named = |e: &dyn std::fmt::Display| {
             format!(
                 "cannot load texture '{}': {}",
@@ -100,31 +100,33 @@ impl ImageTexture {
                 crate::film::output::one_line(&e.to_string())
             )
         };
-        let open = || -> Result<ImageReader<_>, String> {
-            let reader = ImageReader::open(path)
-                .and_then(|r| r.with_guessed_format())
-                .map_err(|e| named(&e))?;
-            match reader.format() {
-                Some(ImageFormat::Png | ImageFormat::Jpeg) => Ok(reader),
-                Some(other) => Err(named(&format!(
+        let reader = ImageReader::open(path)
+            .and_then(|r| r.with_guessed_format())
+            .map_err(|e| named(&e))?;
+        match reader.format() {
+            Some(ImageFormat::Png | ImageFormat::Jpeg) => {}
+            Some(other) => {
+                return Err(named(&format!(
                     "a {other:?} image; textures are PNG or JPEG files"
-                ))),
-                None => Err(named(&"not a PNG or JPEG file")),
+                )));
             }
-        };
-        let (w, h) = open()?.into_dimensions().map_err(|e| named(&e))?;
+            None => return Err(named(&"not a PNG or JPEG file")),
+        }
+        // The decoder reads the header alone; its size is checked before
+        // any pixel memory is taken.
+        let mut decoder = reader.into_decoder().map_err(|e| named(&e))?;
+        let (w, h) = decoder.dimensions();
         if w as u64 * h as u64 > MAX_TEXTURE_PIXELS {
             return Err(named(&format!(
                 "{w} × {h} pixels, more than a texture may have ({MAX_TEXTURE_PIXELS} pixels, \
                  e.g. 8192 × 8192, 768 MiB in linear RGB)"
             )));
         }
-        let mut reader = open()?;
         let mut limits = Limits::default();
         // At most 16-bit RGBA in the decoder's buffer, plus its working memory.
         limits.max_alloc = Some(MAX_TEXTURE_PIXELS * 8 + (64 << 20));
-        reader.limits(limits);
-        let decoded = reader.decode().map_err(|e| named(&e))?;
+        decoder.set_limits(limits).map_err(|e| named(&e))?;
+        let decoded = image::DynamicImage::from_decoder(decoder).map_err(|e| named(&e))?;
         // 8- and 16-bit samples to [0, 1] (k/255, k/65535), grey to RGB,
         // alpha dropped; then sRGB decoded to linear.
         let rgb = decoded.to_rgb32f();
