@@ -203,13 +203,10 @@ impl EnvironmentMap {
         let mut bytes = vec![0u8; decoder.total_bytes() as usize];
         decoder.read_image(&mut bytes).map_err(|e| unreadable(&e))?;
         // Rgb32F: three native-endian f32 a pixel.
-        let floats: Vec<f32> = bytes
-            .chunks_exact(4)
-            .map(|b| f32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
-            .collect();
-        let pixels = floats
-            .chunks_exact(3)
-            .map(|c| Color::new(c[0], c[1], c[2]))
+        let float = |b: &[u8]| f32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
+        let pixels = bytes
+            .chunks_exact(12)
+            .map(|p| Color::new(float(&p[0..4]), float(&p[4..8]), float(&p[8..12])))
             .collect();
         Ok((w as usize, pixels))
     }
