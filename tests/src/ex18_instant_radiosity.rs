@@ -247,6 +247,8 @@ struct Slip {
     no_f_x: bool,
     /// No cosine at a VPL on a surface (G with the cosine at x alone).
     no_cos_surface: bool,
+    /// No cosine at any VPL, on the light or on a surface.
+    no_cos_y: bool,
 }
 
 /// The light one VPL sends to `x`, with the slip `s`.
@@ -288,7 +290,7 @@ fn one(scene: &Scene, x: &Interaction, vpl: &Vpl, clamp: Option<f32>, s: Slip) -
     let cos_x = x.frame.n.dot(w);
     let cos_y = if s.incoming {
         cos_in
-    } else if s.no_cos_surface && matches!(vpl, Vpl::Surface { .. }) {
+    } else if s.no_cos_y || (s.no_cos_surface && matches!(vpl, Vpl::Surface { .. })) {
         1.0
     } else {
         n.dot(w)
@@ -439,7 +441,7 @@ fn check_gather(gather: GatherFn) -> Result<(), String> {
         return Ok(());
     };
     // Each usual mistake: what it is called, and the slip that makes it.
-    let slips: [(&str, Slip); 9] = [
+    let slips: [(&str, Slip); 10] = [
         (
             "signed cosines: your geometry term is negative where exactly one of the two normals faces away from the connection (the floor seen from below); G weighs how much the two surfaces see of each other, whichever way their normals point",
             Slip {
@@ -500,6 +502,13 @@ fn check_gather(gather: GatherFn) -> Result<(), String> {
             "the cosine at a VPL on a surface is missing: the geometry term has a cosine at each end of the connection, at the VPL too (its light leaves the surface towards x)",
             Slip {
                 no_cos_surface: true,
+                ..Slip::default()
+            },
+        ),
+        (
+            "the cosine at the VPL's end is missing: the geometry term has a cosine at each end of the connection, at y too (its light leaves y towards x), whether y lies on a surface or on the light",
+            Slip {
+                no_cos_y: true,
                 ..Slip::default()
             },
         ),

@@ -843,6 +843,11 @@ fn ex18_instant_radiosity() {
         "cosine at a VPL on a surface is missing",
     );
     fails(
+        "no cosine at any VPL",
+        check(generate::<A, NONE>, gather::<A, NO_COS_Y>),
+        "the cosine at the VPL's end is missing",
+    );
+    fails(
         "flux not divided by N",
         check(generate::<A, NOT_SHARED>, gather::<A, NONE>),
         "1/N of its path's flux",

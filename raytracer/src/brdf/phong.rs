@@ -4,30 +4,29 @@
 //! energy (Lewis, "Making Shaders More Physically Plausible", 1994; the
 //! original Phong model is neither).
 //!
-//! `f_r(ω_i, ω_o) = ρ_s (n+2)/(2π) cos^n α`, with α the angle between `ω_i`
+//! `f_r(ω_i, ω_o) = ρ_s S(n) cos^n α`, with α the angle between `ω_i`
 //! and the mirror direction `ω_r = (−ω_o.x, −ω_o.y, ω_o.z)` of `ω_o`, and
 //! `f_r = 0` below the surface.
 //!
 //! **Reciprocity.** `cos α = ω_r·ω_i = −ω_o.x ω_i.x − ω_o.y ω_i.y + ω_o.z ω_i.z`
 //! is symmetric in `ω_i` and `ω_o`, hence so is `f_r`.
 //!
-//! **The constant.** At normal incidence `ω_r = +z`, so `α = θ_i` and the
-//! directional albedo is `ρ_s (n+2)/(2π) ∫_{H²} cos^n θ cos θ dω`. With
-//! `dω = sin θ dθ dφ` and `t = cos θ`:
-//! `∫_{H²} cos^{n+1} θ dω = 2π ∫_0^1 t^{n+1} dt = 2π/(n+2)`,
-//! so the factor `(n+2)/(2π)` makes the albedo exactly `ρ_s`. At other
-//! incidence the lobe (symmetric about `ω_r`) is tilted: part of it falls
-//! below the horizon, where `f_r = 0`, and the cosine weights the remaining
-//! part less, so the albedo is below `ρ_s` — the model conserves energy for
-//! every `ρ_s ≤ 1`. (Using `(n+1)/(2π)` instead would normalize the lobe
-//! without the cosine and let the albedo exceed `ρ_s`.)
+//! **The constant.** `S(n)` is chosen so that the directional albedo
+//! `∫ f_r cos θ_i dω_i` is exactly `ρ_s` at normal incidence, where
+//! `ω_r = +z` and `α = θ_i` (the cosine of the rendering equation counts:
+//! the lobe alone normalized to 1 is another constant, which lets the
+//! albedo exceed `ρ_s`). Exercise 4 derives it; `exercises/INSTRUCTOR.md`
+//! has the derivation. At other incidence the lobe (symmetric about `ω_r`)
+//! is tilted: part of it falls below the horizon, where `f_r = 0`, and the
+//! cosine weights the remaining part less, so the albedo is below `ρ_s` —
+//! the model conserves energy for every `ρ_s ≤ 1`.
 
 use super::BrdfSample;
 use crate::frame::Frame;
 use crate::math::{Color, INV_2PI, PI, Vec2, Vec3A};
 
-/// `f_r = ρ_s (n+2)/(2π) cos^n α`, α the angle between `ω_i` and the mirror
-/// direction of `ω_o`.
+/// `f_r = ρ_s S(n) cos^n α`, α the angle between `ω_i` and the mirror
+/// direction of `ω_o` (see the module doc for `S(n)`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Phong {
     /// Specular albedo ρ_s (the directional albedo at normal incidence).
@@ -66,7 +65,8 @@ impl Phong {
     /// Samples the lobe `cos^n α` about the mirror direction of `wo`: with
     /// density `p(α, φ) ∝ cos^n α sin α` the inverse CDF of `cos α` is
     /// `cos α = (1 − u₁)^{1/(n+1)}`, and `φ = 2π u₂`. Its pdf per solid angle
-    /// is `(n+1)/(2π) cos^n α` (the lobe integrates to one over the sphere).
+    /// is proportional to `cos^n α`, normalized over the sphere (exercise 8
+    /// derives it).
     /// Directions that fall below the horizon are rejected (`None`); the pdf
     /// stays that of the whole lobe, so accepted directions keep their
     /// density and the estimator `f cos θ_i / pdf` stays unbiased (a rejected
@@ -96,8 +96,8 @@ impl Phong {
         })
     }
 
-    /// Density of [`Phong::sample`] for an accepted `wi` (upper hemisphere):
-    /// `(n+1)/(2π) cos^n α`.
+    /// Density of [`Phong::sample`] per unit solid angle for an accepted `wi`
+    /// (upper hemisphere).
     #[inline]
     pub fn pdf(&self, wo: Vec3A, wi: Vec3A) -> f32 {
         let n = self.exponent;

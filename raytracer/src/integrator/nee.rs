@@ -49,9 +49,9 @@ pub fn sample_light_point<'a>(
     Some(LightPoint { choice, sample })
 }
 
-/// One light sample for the point `it` with BRDF `brdf`: the estimate
-/// `w_light · f_r · L_e · |cos θ_i| / (P(light) · p(ω_i))`, where `w_light` is
-/// the power heuristic against BRDF sampling if `mis`, else 1.
+/// One light sample for the point `it` with BRDF `brdf`: the one-sample
+/// estimate of the direct light (exercise 12 builds it), weighted by the
+/// power heuristic against BRDF sampling if `mis`.
 ///
 /// Draws as [`sample_light_point`].
 #[inline]

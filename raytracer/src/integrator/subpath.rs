@@ -157,8 +157,10 @@ pub fn camera_subpath(
 /// The light subpath `y_0 y_1 …`: a light chosen with `P(light)`, a point
 /// `y_0` with area density `p_A` and a direction with `p_ω` from
 /// `sample_le`; `y_0` stores `β_0 = 1/(P(light) p_A)` (its `L_e(ω)` is
-/// applied by whoever leaves it), the walk starts with
-/// `β_1 = L_e(y_0, ω) |cos θ_0| / (P(light) p_A p_ω)`, in importance mode.
+/// applied by whoever leaves it), and the walk starts, in importance mode,
+/// with the throughput of the emitted ray: its radiance as a Monte Carlo
+/// estimate over the choices of the light, the point and the direction
+/// (exercise 14 derives it; mind the cosine at the light).
 /// Returns the number of vertices (0 if no light path could start, e.g. the
 /// environment was chosen: not supported on the light side). Draws
 /// [`LIGHT_CHOICE`], [`EMISSION_POINT`] and [`EMISSION_DIRECTION`] (always,

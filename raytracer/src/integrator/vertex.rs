@@ -21,8 +21,10 @@
 //! `p_{s,t}(x̄) = Π_{i<s} p(y_i) · Π_{j<t} p(z_j)` (area measure).
 //!
 //! **Densities.** A direction sampled with solid-angle density `p_ω` at `x`
-//! that reaches `y` gives `y` the area density (thesis, eq. 8.10)
-//! `p_A(y) = p_ω · |cos θ_y| / ‖x − y‖²` ([`pdf_w_to_a`]). Every vertex
+//! that reaches `y` gives `y` an area density `p_A(y)`: the same probability
+//! per unit area instead of per unit solid angle, the change of measure of
+//! the lecture's `dω = cos θ_y dA / r²` (thesis, eq. 8.10; exercise 12
+//! derives it, [`pdf_w_to_a`] computes it). Every vertex
 //! stores two of them, as in pbrt-v4: `pdf_fwd_a`, the density with which its
 //! own subpath generated it, and `pdf_rev_a`, the density with which the
 //! *other* subpath would have generated it (the same walk run backwards).
@@ -139,9 +141,9 @@ pub fn path_vertices(max_depth: Option<u32>) -> usize {
     max_depth.map_or(usize::MAX, |d| d as usize + 1)
 }
 
-/// `p_A(y) = p_ω · |cos θ_y| / ‖x − y‖²` (thesis eq. 8.10): a solid-angle
-/// density at `from` turned into an area density at `to` (no cosine if `to`
-/// is not on a surface: a point light or a pinhole).
+/// A solid-angle density at `from` turned into an area density at `to`
+/// (thesis eq. 8.10: the change of measure `dω = |cos θ_y| dA / r²`; no
+/// cosine if `to` is not on a surface: a point light or a pinhole).
 #[inline]
 pub fn pdf_w_to_a(pdf_w: f32, from: &Vertex, to: &Vertex) -> f32 {
     let d = to.it.p - from.it.p;
@@ -334,8 +336,9 @@ impl Vertex {
 
     /// Area density with which next event estimation at `from` picks this
     /// (light or emitting surface) point — the strategy `s = 1` of
-    /// bidirectional tracing: `P(light) · p_ω · |cos θ_y| / ‖y − x‖²` with
-    /// `p_ω` of [`crate::light::Light::pdf_li_w`]. For a quad that is the
+    /// bidirectional tracing: the light's choice probability times the
+    /// density of [`crate::light::Light::pdf_li_w`], changed from solid angle
+    /// to area. For a quad that is the
     /// origin density `P(light)/A`; for a sphere seen from outside, the
     /// cone's density (zero off the cap `from` sees); for a point light the
     /// origin density (the point is fixed).
