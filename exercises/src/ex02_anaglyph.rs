@@ -11,10 +11,11 @@
 //! Task: mix one pixel of the left frame and the same pixel of the right
 //! frame into the pixel of a red–cyan anaglyph (red filter over the left
 //! eye, cyan over the right):
-//! 1. desaturate both colours by `d = desaturation ∈ [0, 1]`: the colour
-//!    moves in a straight line towards the grey of the same brightness,
-//!    `Y(c) = raytracer::math::luminance(c)` in every channel, reaching it
-//!    at `d = 1` (`d = 0` leaves the colour unchanged);
+//! 1. desaturate both colours by `d = desaturation ∈ [0, 1]`: `d = 0`
+//!    leaves a colour as it is, `d = 1` turns it into the grey of the same
+//!    luminance (`raytracer::math::luminance`), and in between the colour
+//!    changes linearly with `d` (its luminance stays the same throughout:
+//!    check that yours does);
 //! 2. each filter lets through its own channels: red for the left eye,
 //!    green and blue (cyan) for the right.
 //!

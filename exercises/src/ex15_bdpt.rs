@@ -81,8 +81,10 @@
 //! vertex the path now comes from, so the connection changes some of them
 //! next to the edge: work out which, and compute those anew for this path
 //! (`Vertex::pdf_a`, `Vertex::pdf_light_a`, `Vertex::pdf_light_origin_a`).
-//! `lens`, if any, takes the place of `camera[0]`. The slices are shared:
-//! copy what you change.
+//! `lens`, if any, takes the place of `camera[0]` (for `t = 1` without a
+//! `lens`, `camera[0]` is the lens point). The slices are shared: copy what
+//! you change. Count every strategy of this renderer, the shortest paths
+//! too: a path of two vertices has the strategies (0, 2) and (1, 1).
 //!
 //! Impossible strategies have density 0 and count for nothing: one whose
 //! edge would end at a vertex with a delta BRDF (mirror), or `s' = 0` ending

@@ -66,16 +66,17 @@ pub enum TransportMode {
     Importance,
 }
 
-/// A sampled direction with its BRDF value and density. An integrator
-/// weights the light arriving from `wi` by `f · |cos θ_i| / pdf_w`.
+/// A sampled direction with its BRDF value and its density: what a Monte
+/// Carlo estimate of the reflected radiance needs of one draw (exercise 9
+/// builds that estimate).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BrdfSample {
     /// Sampled direction `ω_i`, local frame.
     pub wi: Vec3A,
     /// `f_r(ω_i → ω_o)`, per steradian (sr⁻¹). A delta lobe has no value at
     /// a direction (it is a distribution): its `f` is whatever makes the
-    /// weight `f · |cos θ_i| / pdf_w` the delta's share of the light arriving
-    /// from `wi` in the reflected radiance.
+    /// usual Monte Carlo estimate with this draw give the delta's share of
+    /// the light arriving from `wi` in the reflected radiance (exercise 6).
     pub f: Color,
     /// Density of `wi` per unit solid angle (sr⁻¹). For a delta lobe, which
     /// has no density over directions: the probability (no unit) with which

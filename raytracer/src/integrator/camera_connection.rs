@@ -22,17 +22,12 @@ pub struct CameraConnection {
 
 /// The `t = 1` connection: light-subpath vertex `q` joined to a lens point
 /// chosen by `u_lens`. Its contribution to the pixel at `CameraSample::raster`
-/// is (Veach's light tracing estimate)
-///
-/// ```text
-///   β_q · f(ω_o, ω_c) · |cos θ_q| · G-part · W_e / p_A(lens)
-///     = β_q · f(ω_o, ω_c) · |cos θ_q| · W_e / p_ω(lens),
-/// ```
-///
-/// because `G(q, lens) / p_A(lens) = |cos θ_q| |cos θ_lens| / (d² p_A)` and
-/// `camera.sample_wi` returns `p_ω = d² / (cos θ_lens · A_lens)` (the lens
-/// density per unit solid angle at `q`). At a surface, `f` is the adjoint
-/// BRDF of importance transport ([`Vertex::f_importance`]). Visibility-tested.
+/// is Veach's light tracing estimate (slide "The connection to the camera";
+/// exercise 14 derives it), written with the lens density per unit solid
+/// angle at `q` that `camera.sample_wi` returns, in which the lens's cosine
+/// and distance cancel against the geometry term's. At a surface the BRDF is
+/// the adjoint one of importance transport ([`Vertex::f_importance`]).
+/// Visibility-tested.
 /// `None` if the point is off the film, behind the camera or in shadow.
 pub fn connect_to_camera(scene: &Scene, q: &Vertex, u_lens: Vec2) -> Option<CameraConnection> {
     if !q.is_connectible(scene) {

@@ -4,13 +4,14 @@
 //! for a diffuse emitter, `L_e = L` (a constant) on the emitting side, and the
 //! two ways to sample it:
 //! - from a receiver `x` (next event estimation): a point `y` on the light,
-//!   turned into a direction `ωi` whose density per unit solid angle is
-//!   `p_ω = p_A · ‖x − y‖² / |cos θ_y|` (the change of measure `dω = cos θ_y
-//!   dA / r²`), or, for a sphere seen from outside, a direction drawn
-//!   uniformly in the cone the sphere subtends, `p_ω = 1 / (2π (1 − cos θ_max))`;
+//!   turned into a direction `ωi` with its density per unit solid angle (the
+//!   change of measure `dω = cos θ_y dA / r²` of the lecture; exercise 12
+//!   derives the conversion of the density), or, for a sphere seen from
+//!   outside, a direction drawn uniformly in the cone the sphere subtends,
+//!   `p_ω = 1 / (2π (1 − cos θ_max))`;
 //! - from the light itself (light tracing, bidirectional): a point uniform by
-//!   area, `p_A = 1/A`, and a cosine-weighted direction, `p_ω = cos θ / π`,
-//!   so that `L_e cos θ / (p_A p_ω) = π A L` is the emitted flux `Φ`.
+//!   area and a cosine-weighted direction, so that every path that leaves
+//!   the light starts with the same share of its emitted flux `Φ`.
 
 use crate::frame::Frame;
 use crate::geometry::{Quad, Sphere};
@@ -160,9 +161,9 @@ impl AreaLight {
     }
 
     /// [`Self::sample_li`] on a quad: a point `y = origin + u.x e1 + u.y e2`
-    /// uniform by area and `p_ω = r² / (A |cos θ_y|)`. The area vector
-    /// `e1 × e2 = A n` gives both the area and the normal, and
-    /// `A |cos θ_y| = |(e1 × e2)·(p − y)| / r`: one cross product and two
+    /// uniform by area, its density turned into one per unit solid angle.
+    /// The area vector `e1 × e2 = A n` gives both the area and the normal,
+    /// and `A |cos θ_y| = |(e1 × e2)·(p − y)| / r`: one cross product and two
     /// square roots (A and r) per sample.
     #[inline]
     fn sample_li_quad(&self, quad: &Quad, p: Vec3A, u: Vec2) -> Option<LightSample> {
