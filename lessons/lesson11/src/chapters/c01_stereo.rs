@@ -73,10 +73,12 @@ struct StereoArgs {
     /// Light field: side of the square aperture the views cover, in scene units.
     #[arg(long, default_value_t = 0.4)]
     pub lf_aperture: f32,
-    /// Light field: the views are rendered this many times smaller than the eyes.
-    #[arg(long, default_value_t = 2)]
+    /// Light field: the views are rendered this many times smaller than the eyes
+    /// (1: the eyes' size, which the slides show the pair of views at).
+    #[arg(long, default_value_t = 1)]
     pub lf_downscale: u32,
-    /// Light field: samples per pixel of each view (default: a quarter of --spp, at least 1).
+    /// Light field: samples per pixel of each view (default: a sixteenth of --spp, at least 1;
+    /// a refocused picture averages all the views, so it has views × this many).
     #[arg(long)]
     pub lf_spp: Option<u32>,
     /// Light field: depths to refocus at, comma-separated (default: half, once and
@@ -105,7 +107,7 @@ impl Default for StereoArgs {
             leakage: 0.3,
             lf_views: 5,
             lf_aperture: 0.4,
-            lf_downscale: 2,
+            lf_downscale: 1,
             lf_spp: None,
             refocus: Vec::new(),
             exposure: 0.0,
@@ -477,8 +479,8 @@ fn eye_views(
 const SWEEP: [f32; 3] = [0.02, 0.065, 0.3];
 
 /// Dubois anaglyphs of the scene at the separations of [`SWEEP`], all with
-/// the same convergence distance, at half the eyes' size and half their
-/// samples (what the sweep shows is depth, not detail).
+/// the same convergence distance, at 0.64 of the eyes' size and about a
+/// third of their samples (what the sweep shows is depth, not detail).
 #[allow(clippy::too_many_arguments)]
 fn separation_sweep(
     args: &StereoArgs,
@@ -489,13 +491,16 @@ fn separation_sweep(
     page_root: &Path,
     section: &mut Section,
 ) -> Result<()> {
+    // 0.64 of the eyes' size (256×192 from 400×300: the width the slide
+    // shows them at, with no blowing up) and as many pixel samples as half
+    // the size at half the samples: 0.25 / 0.64² of the eyes' samples.
     let mut small = scene.clone();
     let (w, h) = (
-        (scene.camera.width / 2).max(1),
-        (scene.camera.height / 2).max(1),
+        (scene.camera.width * 16 / 25).max(1),
+        (scene.camera.height * 16 / 25).max(1),
     );
     small.set_resolution(w, h);
-    let spp = (options.spp / 2).max(1);
+    let spp = (options.spp * 10 / 32).max(1);
     let start = Instant::now();
     for separation in SWEEP {
         let rig = StereoRig {
@@ -563,7 +568,7 @@ fn light_field(
     let mut lf_scene = scene.clone();
     let (w, h) = light_field_size(args, scene);
     lf_scene.set_resolution(w, h);
-    let spp = args.lf_spp.unwrap_or((options.spp / 4).max(1));
+    let spp = args.lf_spp.unwrap_or((options.spp / 16).max(1));
     let lf_options = RenderOptions {
         spp,
         label: format!("{} light field", scene.name),

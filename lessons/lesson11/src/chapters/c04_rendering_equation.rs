@@ -56,11 +56,15 @@ fn render(tour: &Tour) -> Result<Section> {
          2, 1) tames the tree, but not enough. Path tracing follows one ray per bounce and spends \
          the same rays on many samples per pixel.",
     )?;
-    let (mut scene, mut options) = tour.scene("cornell", 1)?;
-    if tour.quality != Quality::Tiny {
-        scene.set_resolution(96, 96);
-    }
+    // The pictures at the scene's size (256 × 256: the slides show them at
+    // about that width); the ladder of N and D, which only counts rays and
+    // seconds, on a 96 × 96 copy.
+    let (scene, mut options) = tour.scene("cornell", 1)?;
     options.progress = false;
+    let mut ladder_scene = scene.clone();
+    if tour.quality != Quality::Tiny {
+        ladder_scene.set_resolution(96, 96);
+    }
     let mut table = Table::new(
         "Naive recursion on the Cornell box: rays per pixel sample, counted",
         &[
@@ -72,14 +76,15 @@ fn render(tour: &Tour) -> Result<Section> {
             "ended by",
         ],
     );
-    // The ladder of N and D at 1 spp; N = 8, D = 4 is also the chapter's picture.
+    // The ladder of N and D at 1 spp; N = 8, D = 4 is also the chapter's
+    // picture, at full size.
     let mut ladder = options.clone();
     ladder.spp = 1;
     for n in [2u32, 4, 8] {
         for d in [2u32, 3, 4] {
             let naive = NaiveRecursive::new(vec![n], Some(d));
-            let rays = if (n, d) == (8, 4) {
-                let (rays, _) = picture(
+            if (n, d) == (8, 4) {
+                picture(
                     tour,
                     &mut s,
                     &scene,
@@ -88,10 +93,8 @@ fn render(tour: &Tour) -> Result<Section> {
                     "naive-n8-d4",
                     "Naive recursion, N = 8, D = 4",
                 )?;
-                rays
-            } else {
-                measure(&scene, &naive, &ladder)
-            };
+            }
+            let rays = measure(&ladder_scene, &naive, &ladder);
             table.rows.push(row(&naive, rays, "max depth", None));
             let r = table.rows.last().expect("a row");
             crate::console::say!(
@@ -102,17 +105,15 @@ fn render(tour: &Tour) -> Result<Section> {
     }
 
     // Stopping the recursion: the same N, and a depth limit that neither
-    // reaches. Without light sampling both are noisy, so they get a smaller
-    // image and many samples; roulette, with fewer rays per pixel sample,
-    // twice the samples.
-    let mut small = scene.clone();
-    if tour.quality != Quality::Tiny {
-        small.set_resolution(64, 64);
-    }
+    // reaches. Without light sampling both are noisy; roulette, with fewer
+    // rays per pixel sample, gets twice the samples. (Their means are
+    // compared over the whole picture, so what matters is the pixel samples
+    // in all: 256² × 8 is 64² × 128.)
+    let small = scene.clone();
     let (cut_spp, roulette_spp) = match tour.quality {
         Quality::Tiny => (options.spp, options.spp),
-        Quality::Quick => (128, 256),
-        Quality::Full => (1024, 2048),
+        Quality::Quick => (8, 16),
+        Quality::Full => (64, 128),
     };
     let spp = |n: u32| RenderOptions {
         spp: tour.overrides.spp.unwrap_or(n),
@@ -227,9 +228,9 @@ fn render(tour: &Tour) -> Result<Section> {
         ),
     )?;
     // The trees are drawn over a clean picture of the same size (light
-    // sampling under MIS, 16 spp: a fraction of a second), not on the page.
+    // sampling under MIS, 8 spp: a fraction of a second), not on the page.
     let clean = RenderOptions {
-        spp: tour.overrides.spp.unwrap_or(16),
+        spp: tour.overrides.spp.unwrap_or(8),
         ..options.clone()
     };
     let picture = render_to_files(
@@ -291,10 +292,12 @@ struct Rays {
 
 /// Renders `naive` without a picture: its rays per pixel sample and seconds.
 fn measure(scene: &Scene, naive: &NaiveRecursive, options: &RenderOptions) -> Rays {
+    // The counter keeps what `naive` traced before (its picture, for N = 8, D = 4).
+    let before = naive.rays_traced();
     let result = raytracer::render::render(scene, naive, options);
     let samples = scene.camera.width as f64 * scene.camera.height as f64 * options.spp as f64;
     Rays {
-        per_sample: naive.rays_traced() as f64 / samples,
+        per_sample: (naive.rays_traced() - before) as f64 / samples,
         seconds: result.stats.elapsed.as_secs_f64(),
     }
 }

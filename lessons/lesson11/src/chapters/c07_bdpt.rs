@@ -5,6 +5,7 @@
 use std::time::Instant;
 
 use anyhow::Result;
+use raytracer::film::Image;
 use raytracer::integrator::Bdpt;
 use raytracer::integrator::record::{PathRecord, SegmentEnd, VertexRef};
 use raytracer::math::UVec2;
@@ -14,7 +15,7 @@ use raytracer::scene::Scene;
 use crate::page::{Figure, Picture, Section, seconds_text};
 use crate::plots::{Labels, in_picture, pick_sample};
 use crate::render_files::write_image;
-use crate::tour::{Chapter, ChapterOutput, Quality, Tour};
+use crate::tour::{Chapter, ChapterOutput, Tour};
 
 pub const CHAPTER: Chapter = Chapter::new(
     "bdpt",
@@ -24,6 +25,10 @@ pub const CHAPTER: Chapter = Chapter::new(
 
 /// The max depth D of the strategy images: every path of 1 to 3 segments.
 const STRATEGY_DEPTH: u32 = 3;
+
+/// Exposure of each strategy's image in stops: each holds the light of one
+/// path length only and is dark at exposure 0 (their sum is shown at 0).
+const STRATEGY_EXPOSURE: f32 = 1.0;
 
 /// Chapter 7: bidirectional path tracing and its strategies.
 fn render(tour: &Tour) -> Result<Section> {
@@ -53,10 +58,9 @@ fn render(tour: &Tour) -> Result<Section> {
         "Cornell box, bidirectional path tracing, unlimited depth (roulette from depth 5).",
     )?;
     bdpt_sample(tour, &mut c, &scene, options.seed, &picture)?;
-    let (mut scene, mut options) = tour.scene("cornell", 16)?;
-    if tour.quality != Quality::Tiny {
-        scene.set_resolution(96, 96);
-    }
+    // At the scene's size (256 × 256, what the slides show them at) and 4
+    // spp: each strategy is a render of its own, 18 in all.
+    let (scene, mut options) = tour.scene("cornell", 4)?;
     options.progress = false;
     let start = Instant::now();
     let strategies = render_strategies(&scene, &options, STRATEGY_DEPTH);
@@ -64,10 +68,20 @@ fn render(tour: &Tour) -> Result<Section> {
     let (w, h) = (scene.camera.width, scene.camera.height);
     let count = 2 * strategies.len();
     let made = format!(
-        "max depth {STRATEGY_DEPTH}, {w}×{h}, no roulette; one of {count} strategy images that took \
+        "max depth {STRATEGY_DEPTH}, {w}×{h}, no roulette, exposure +{STRATEGY_EXPOSURE} stop; one of \
+         {count} strategy images that took \
          {} together",
         seconds_text(seconds)
     );
+    // The weighted images of all strategies add up to bidirectional path
+    // tracing of max depth D = 3: written, so that the slide shows the sum.
+    let mut sum = Image::new(w, h);
+    for (_, weighted, _) in &strategies {
+        for (a, b) in sum.pixels.iter_mut().zip(&weighted.pixels) {
+            *a += *b;
+        }
+    }
+    let sum_picture = write_image(&c.dir, "strategy-sum", &sum, options.spp, 0.0, None)?;
     for ((s, t), weighted, unweighted) in strategies {
         for (image, kind, what) in [
             (
@@ -78,7 +92,7 @@ fn render(tour: &Tour) -> Result<Section> {
             (&weighted, "weighted", "its share after MIS"),
         ] {
             let stem = format!("strategy-s{s}-t{t}-{kind}");
-            let picture = write_image(&c.dir, &stem, image, options.spp, 0.0, None)?;
+            let picture = write_image(&c.dir, &stem, image, options.spp, STRATEGY_EXPOSURE, None)?;
             c.section.figures.push(Figure::new(
                 &tour.out,
                 &picture,
@@ -92,6 +106,15 @@ fn render(tour: &Tour) -> Result<Section> {
             ));
         }
     }
+    c.section.figures.push(Figure::new(
+        &tour.out,
+        &sum_picture,
+        &format!(
+            "The sum of the weighted images of all strategies: bidirectional path tracing of max \
+             depth {STRATEGY_DEPTH} ({w}×{h}, {} spp, no roulette).",
+            options.spp
+        ),
+    ));
     crate::console::say!(
         "  wrote the {count} strategy images of max depth {STRATEGY_DEPTH} in {}",
         seconds_text(seconds)
