@@ -215,3 +215,18 @@ impl Prepared {
         (((budget - self.build_seconds) / per) as u32).clamp(1, 1 << 16)
     }
 }
+
+/// Its colour on every chart: `Drawn::from(algorithm).color()`.
+impl From<Algorithm> for crate::plots::Drawn {
+    fn from(a: Algorithm) -> Self {
+        use crate::plots::Drawn;
+        match a {
+            Algorithm::Path => Drawn::Path,
+            Algorithm::Bdpt => Drawn::Bdpt,
+            Algorithm::Photon => Drawn::Photon,
+            Algorithm::Sppm => Drawn::Sppm,
+            Algorithm::Vpl => Drawn::Vpl,
+            Algorithm::IrradianceCache => Drawn::IrradianceCache,
+        }
+    }
+}

@@ -11,8 +11,7 @@ use raytracer::sampling::Sampler;
 
 use crate::page::{Figure, Section, Table};
 use crate::plots::{
-    Chart, HEMISPHERE_LANGS, Hemisphere, HemisphereWords, Scale, Series, hemisphere_svg,
-    polar_svg,
+    Chart, Hemisphere, HemisphereWords, LANGS, Scale, Series, hemisphere_svg, polar_svg,
 };
 use crate::tour::{Chapter, ChapterOutput, Quality, Tour};
 
@@ -73,7 +72,7 @@ fn render(tour: &Tour) -> Result<Section> {
 /// slides (`hemisphere-en.svg`, `hemisphere-bg.svg`); the page shows the English one.
 fn hemisphere(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
     let h = Hemisphere::default();
-    for lang in HEMISPHERE_LANGS {
+    for lang in LANGS {
         let words = HemisphereWords::for_lang(lang).expect("the figure's languages have words");
         raytracer::film::output::write_file(
             c.dir.join(format!("hemisphere-{lang}.svg")),
@@ -171,6 +170,9 @@ fn two_digits(x: f64) -> String {
     format!("{x:.decimals$}")
 }
 
+/// The smallest f_r drawn on the log axis of the lobes' true heights.
+const LOBE_FLOOR: f64 = 0.01;
+
 /// The plots and tables: lobes, directional albedo and reciprocity.
 fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
     let samples = if tour.quality == Quality::Tiny {
@@ -180,10 +182,12 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
     };
 
     // Lobes for light arriving 30° from the normal: f_r over outgoing
-    // directions in the plane of incidence, each scaled to its peak.
+    // directions in the plane of incidence, each scaled to its peak (the
+    // shapes), and again at their true heights on a log axis.
     let incoming = 30f64.to_radians();
     let wi = dir(-incoming);
     let mut lobes = Vec::new();
+    let mut heights = Vec::new();
     for (label, brdf) in [
         ("Lambert", lambert()),
         ("Phong n=1", phong(1.0)),
@@ -197,6 +201,14 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
             })
             .collect();
         let peak = points.iter().map(|p| p.1).fold(1e-12, f64::max);
+        heights.push(Series {
+            label: label.into(),
+            points: points
+                .iter()
+                .filter(|p| p.1 >= LOBE_FLOOR)
+                .map(|&(t, r)| (t.to_degrees(), r))
+                .collect(),
+        });
         lobes.push(Series {
             label: label.into(),
             points: points.into_iter().map(|(t, r)| (t, r / peak)).collect(),
@@ -206,16 +218,57 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
         label: "mirror (a delta)".into(),
         points: vec![(0.0, 0.0), (incoming, 1.0)],
     });
-    let path = c.dir.join("lobes.svg");
-    raytracer::film::output::write_file(
-        &path,
-        polar_svg(
-            "BRDF lobes, light from 30°, each scaled to its peak",
-            &lobes,
-            30.0,
+    for lang in LANGS {
+        let bg = lang == "bg";
+        let mut lobes_here = lobes.clone();
+        if bg {
+            if let Some(mirror) = lobes_here.last_mut() {
+                mirror.label = "огледало (делта)".into();
+            }
+        }
+        raytracer::film::output::write_file(
+            c.dir.join(format!("lobes-{lang}.svg")),
+            polar_svg(
+                if bg {
+                    "Лобове на BRDF, светлина от 30°, всеки до върха си"
+                } else {
+                    "BRDF lobes, light from 30°, each scaled to its peak"
+                },
+                &lobes_here,
+                30.0,
+                if bg { "падаща" } else { "incoming" },
+            ),
+        )?;
+        Chart {
+            title: if bg {
+                "f_r при светлина от 30°: истинските височини"
+            } else {
+                "f_r for light from 30°: the true heights"
+            }
+            .into(),
+            x_label: if bg {
+                "θ_o в равнината на падане (градуси)"
+            } else {
+                "θ_o in the plane of incidence (degrees)"
+            }
+            .into(),
+            y_label: "f_r (1/sr)".into(),
+            x_scale: Scale::Linear,
+            y_scale: Scale::Log,
+            series: heights.clone(),
+        }
+        .write(&c.dir.join(format!("lobe-heights-{lang}.svg")))?;
+    }
+    c.section.figures.push(Figure::plot(&tour.out, &c.dir.join("lobes-en.svg"), "Lobes in the plane of incidence: Phong narrows around the mirror direction as n grows; Lambert is a half circle. Each is scaled to its own peak (the shapes); the next plot shows their true heights."));
+    c.section.figures.push(Figure::plot(
+        &tour.out,
+        &c.dir.join("lobe-heights-en.svg"),
+        &format!(
+            "The same lobes at their true heights, f_r on a log axis (values below {LOBE_FLOOR} \
+             left out): a narrower normalized lobe is taller, so that its albedo stays at most 1 — \
+             Lambert 1/π ≈ 0.318 everywhere, Phong n = 100 about 16 at the mirror direction."
         ),
-    )?;
-    c.section.figures.push(Figure::plot(&tour.out, &path, "Lobes in the plane of incidence: Phong narrows around the mirror direction as n grows; Lambert is a half circle."));
+    ));
 
     // Directional albedo against the angle of the outgoing direction.
     let mut albedo = Chart {
@@ -281,8 +334,15 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
                 .collect(),
         });
     }
-    let path = c.dir.join("albedo.svg");
-    albedo.write(&path)?;
+    albedo.write(&c.dir.join("albedo-en.svg"))?;
+    albedo.title = "Албедо по посоки ∫ f_r cos θ dω".into();
+    albedo.x_label = "θ_o (градуси)".into();
+    albedo.y_label = "албедо".into();
+    for series in &mut albedo.series {
+        series.label = series.label.replace("unnorm.", "ненорм.");
+    }
+    albedo.write(&c.dir.join("albedo-bg.svg"))?;
+    let path = c.dir.join("albedo-en.svg");
     c.section.figures.push(Figure::plot(&tour.out, &path, "Directional albedo against the angle of ω_o: normalized Phong is 1 at normal incidence (exactly; the estimate within its standard error) and less at grazing angles, where part of the lobe falls below the surface; unnormalized Phong with n = 1 reflects more than it receives, with n = 100 far less."));
     table.write_csv(&c.dir.join("albedo.csv"))?;
     c.section.tables.push(table);

@@ -11,7 +11,7 @@ use raytracer::scene::Scene;
 
 use crate::equal_time::{Also, EqualTimeRow, NAIVE_N, equal_time};
 use crate::page::{Figure, Section, Table, seconds_number, seconds_text};
-use crate::plots::{Chart, Scale, Series};
+use crate::plots::{Chart, LANGS, Scale, Series};
 use crate::reference::{Reference, independent};
 use crate::render_files::write_image;
 use crate::tour::{Chapter, ChapterOutput, Quality, Tour};
@@ -128,27 +128,35 @@ fn render(tour: &Tour) -> Result<Section> {
         }
         let times = rows.iter().flat_map(|r| r.curve.iter().map(|p| p.0));
         let (t0, t1) = times.fold((f64::MAX, 0.0f64), |(a, b), t| (a.min(t), b.max(t)));
-        let mut series: Vec<Series> = rows
-            .iter()
-            .map(|r| Series {
-                label: r.algorithm.into(),
-                points: r.curve.clone(),
-            })
-            .collect();
-        series.push(Series {
-            label: "reference noise floor".into(),
-            points: vec![(t0, floor), (t1, floor)],
-        });
-        let chart = Chart {
-            title: format!("{name}: error against time"),
-            x_label: "seconds".into(),
-            y_label: "RMSE".into(),
-            x_scale: Scale::Log,
-            y_scale: Scale::Log,
-            series,
-        };
-        let svg = c.dir.join(format!("{name}-convergence.svg"));
-        chart.write(&svg)?;
+        // The chart in each language of the decks (the page shows English).
+        for lang in LANGS {
+            let bg = lang == "bg";
+            let word = |en: &str| {
+                let en = short(en);
+                if bg { in_bulgarian(en) } else { en.to_string() }
+            };
+            let mut series: Vec<Series> = rows
+                .iter()
+                .map(|r| Series {
+                    label: word(r.algorithm),
+                    points: r.curve.clone(),
+                })
+                .collect();
+            series.push(Series {
+                label: word("reference noise floor"),
+                points: vec![(t0, floor), (t1, floor)],
+            });
+            let chart = Chart {
+                title: format!("{}: {}", word(name), word("error against time")),
+                x_label: word("seconds"),
+                y_label: "RMSE".into(),
+                x_scale: Scale::Log,
+                y_scale: Scale::Log,
+                series,
+            };
+            chart.write(&c.dir.join(format!("{name}-convergence-{lang}.svg")))?;
+        }
+        let svg = c.dir.join(format!("{name}-convergence-en.svg"));
         c.section.figures.push(Figure::plot(
             &tour.out,
             &svg,
@@ -290,4 +298,30 @@ fn metropolis_noise(
             .push(Figure::new(&tour.out, &picture, &caption));
     }
     Ok(())
+}
+
+/// An algorithm's name in a chart's legend: short enough for three to a row.
+fn short(algorithm: &str) -> &str {
+    match algorithm {
+        "naive recursion, N = 4 then 1" => "naive recursion",
+        "Metropolis (over bidirectional)" => "Metropolis",
+        "reference noise floor" => "noise floor",
+        other => other,
+    }
+}
+
+/// The Bulgarian of a word on the convergence charts (the algorithms keep
+/// the lecture's English names, as on the slides).
+fn in_bulgarian(en: &str) -> String {
+    match en {
+        "door" => "сцената с вратата",
+        "cornell" => "Cornell box",
+        "error against time" => "грешка спрямо времето",
+        "seconds" => "секунди",
+        "noise floor" => "дъното на шума",
+        "path (BRDF only)" => "path (само BRDF)",
+        "naive recursion" => "наивна рекурсия",
+        other => other,
+    }
+    .to_string()
 }

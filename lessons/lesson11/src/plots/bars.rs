@@ -6,7 +6,9 @@ use std::path::Path;
 
 use anyhow::{Context, Result};
 
-use super::series::{COLORS, escape};
+use super::chart::{FONT, TITLE_FONT, legend_layout};
+use super::palette::OTHERS as COLORS;
+use super::series::escape;
 
 /// A stacked bar chart with a linear y axis from 0.
 pub struct Bars {
@@ -20,10 +22,10 @@ pub struct Bars {
 
 const W: f64 = 560.0;
 const H: f64 = 380.0;
-const LEFT: f64 = 80.0;
-const RIGHT: f64 = 150.0;
+const LEFT: f64 = 84.0;
+const RIGHT: f64 = 20.0;
 const TOP: f64 = 40.0;
-const BOTTOM: f64 = 80.0;
+const BOTTOM: f64 = 110.0;
 
 /// A round step for about five ticks up to `hi`.
 fn step(hi: f64) -> f64 {
@@ -47,15 +49,23 @@ impl Bars {
         let top = if top > 0.0 { top * 1.05 } else { 1.0 };
         let py = |v: f64| H - BOTTOM - v / top * (H - TOP - BOTTOM);
         let slot = (W - LEFT - RIGHT) / self.bars.len().max(1) as f64;
+        // The bars' labels slant down to the right: the last one may need
+        // the chart to be wider (a character taken as 0.6 of the font size).
+        let last = self.bars.last().map_or(0, |(l, _)| l.chars().count());
+        let reach = LEFT + slot * (self.bars.len() as f64 - 0.5) + 0.6 * FONT * last as f64 * 0.87;
+        let width = W.max(reach + 6.0);
+        let parts: Vec<&str> = self.parts.iter().map(String::as_str).collect();
+        let (columns, column, rows) = legend_layout(&parts, width);
+        let height = H + 22.0 * rows as f64 + 8.0;
         let mut s = String::new();
         let _ = writeln!(
             s,
-            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{W}\" height=\"{H}\" viewBox=\"0 0 {W} {H}\" \
-             font-family=\"sans-serif\" font-size=\"12\"><rect width=\"100%\" height=\"100%\" fill=\"white\"/>"
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width:.0}\" height=\"{height}\" viewBox=\"0 0 {width:.0} {height}\" \
+             font-family=\"sans-serif\" font-size=\"{FONT}\"><rect width=\"100%\" height=\"100%\" fill=\"white\"/>"
         );
         let _ = writeln!(
             s,
-            "<text x=\"{}\" y=\"22\" text-anchor=\"middle\" font-size=\"14\">{}</text>",
+            "<text x=\"{}\" y=\"24\" text-anchor=\"middle\" font-size=\"{TITLE_FONT}\">{}</text>",
             W / 2.0,
             escape(&self.title)
         );
@@ -89,6 +99,7 @@ impl Bars {
                 base += v;
             }
             let cx = x + slot * 0.3;
+            // Slanted 30° so that long names do not run into each other.
             let _ = writeln!(
                 s,
                 "<text transform=\"translate({cx:.1} {}) rotate(30)\" text-anchor=\"start\">{}</text>",
@@ -108,16 +119,17 @@ impl Bars {
             (TOP + H - BOTTOM) / 2.0,
             escape(&self.y_label)
         );
+        // The legend, under the bars' labels.
         for (k, part) in self.parts.iter().enumerate() {
-            let ly = TOP + 10.0 + 18.0 * k as f64;
-            let lx = W - RIGHT + 12.0;
+            let lx = 10.0 + column * (k % columns) as f64;
+            let ly = H + 14.0 + 22.0 * (k / columns) as f64;
             let _ = writeln!(
                 s,
-                "<rect x=\"{lx}\" y=\"{}\" width=\"14\" height=\"10\" fill=\"{}\"/><text x=\"{}\" y=\"{}\">{}</text>",
-                ly - 5.0,
+                "<rect x=\"{lx}\" y=\"{}\" width=\"16\" height=\"12\" fill=\"{}\"/><text class=\"legend\" x=\"{}\" y=\"{}\">{}</text>",
+                ly - 6.0,
                 COLORS[k % COLORS.len()],
-                lx + 20.0,
-                ly + 4.0,
+                lx + 22.0,
+                ly + 5.0,
                 escape(part)
             );
         }

@@ -6,7 +6,8 @@ use std::path::Path;
 
 use anyhow::{Context, Result};
 
-use super::series::{COLORS, Series, escape};
+use super::palette::curve_color;
+use super::series::{Series, escape};
 
 /// Scale of an axis.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -26,19 +27,54 @@ pub struct Chart {
 }
 
 const W: f64 = 560.0;
-const H: f64 = 380.0;
-const LEFT: f64 = 70.0;
-const RIGHT: f64 = 170.0;
+/// The plot area and the text: sizes chosen so that a chart shown at 0.8 of
+/// its size (two side by side on a 1280×720 slide) still has text of 12 px.
+const H: f64 = 360.0;
+const LEFT: f64 = 78.0;
+const RIGHT: f64 = 22.0;
 const TOP: f64 = 40.0;
-const BOTTOM: f64 = 50.0;
+const BOTTOM: f64 = 56.0;
+/// Font sizes of the ticks, labels and legend, and of the title.
+pub(super) const FONT: f64 = 15.0;
+pub(super) const TITLE_FONT: f64 = 17.0;
+
+/// The legend under the plot area, in as many columns as the longest label
+/// lets fit in the chart's width: `(columns, column width, rows)`. A
+/// character of the sans-serif font is taken as 0.6 of the font size wide,
+/// more than most glyphs need, so that no label runs off the chart.
+pub(super) fn legend_layout(labels: &[&str], width: f64) -> (usize, f64, usize) {
+    let longest = labels.iter().map(|l| l.chars().count()).max().unwrap_or(0);
+    let entry = 30.0 + 0.6 * FONT * longest as f64;
+    let columns = ((width - 20.0) / entry).floor().max(1.0) as usize;
+    let columns = columns.min(labels.len().max(1));
+    let rows = labels.len().div_ceil(columns);
+    (columns, (width - 20.0) / columns as f64, rows)
+}
 
 /// Tick positions covering `[lo, hi]` (in the axis' own units: log10 for logs).
+/// A log axis gets at least three labelled ticks: the decades, then 2 and 5
+/// times them, then every integer multiple, as the range narrows.
 fn ticks(lo: f64, hi: f64, scale: Scale) -> Vec<f64> {
     if scale == Scale::Log {
-        return (lo.floor() as i32..=hi.ceil() as i32)
-            .map(f64::from)
-            .filter(|t| *t >= lo - 1e-9 && *t <= hi + 1e-9)
-            .collect();
+        let inside = |t: &f64| *t >= lo - 1e-9 && *t <= hi + 1e-9;
+        let all: [&[f64]; 3] = [
+            &[1.0],
+            &[1.0, 2.0, 5.0],
+            &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0],
+        ];
+        for multiples in all {
+            let out: Vec<f64> = (lo.floor() as i32..=hi.ceil() as i32)
+                .flat_map(|d| {
+                    multiples
+                        .iter()
+                        .map(move |m: &f64| f64::from(d) + m.log10())
+                })
+                .filter(inside)
+                .collect();
+            if out.len() >= 3 || multiples.len() == 9 {
+                return out;
+            }
+        }
     }
     let span = (hi - lo).max(1e-12);
     let raw = span / 5.0;
@@ -62,9 +98,22 @@ fn tick_label(t: f64, scale: Scale) -> String {
         Scale::Log => {
             let v = 10f64.powf(t);
             if (1e-3..1e4).contains(&v) {
-                format!("{}", (v * 1e3).round() / 1e3)
+                // Three significant digits: 0.002, 0.05, 20.
+                let digits = (2 - v.log10().floor() as i32).max(0) as usize;
+                let text = format!("{v:.digits$}");
+                if text.contains('.') {
+                    text.trim_end_matches('0').trim_end_matches('.').to_string()
+                } else {
+                    text
+                }
             } else {
-                format!("1e{t}")
+                let e = t.floor();
+                let m = (10f64.powf(t - e)).round();
+                if m == 1.0 {
+                    format!("1e{e}")
+                } else {
+                    format!("{m}e{e}")
+                }
             }
         }
         Scale::Linear => format!("{}", (t * 1e6).round() / 1e6),
@@ -116,15 +165,18 @@ impl Chart {
         );
         let px = |x: f64| LEFT + (x - x0) / (x1 - x0) * (W - LEFT - RIGHT);
         let py = |y: f64| H - BOTTOM - (y - y0) / (y1 - y0) * (H - TOP - BOTTOM);
+        let labels: Vec<&str> = self.series.iter().map(|s| s.label.as_str()).collect();
+        let (columns, column, rows) = legend_layout(&labels, W);
+        let height = H + 22.0 * rows as f64 + 8.0;
         let mut s = String::new();
         let _ = writeln!(
             s,
-            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{W}\" height=\"{H}\" viewBox=\"0 0 {W} {H}\" \
-             font-family=\"sans-serif\" font-size=\"12\"><rect width=\"100%\" height=\"100%\" fill=\"white\"/>"
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{W}\" height=\"{height}\" viewBox=\"0 0 {W} {height}\" \
+             font-family=\"sans-serif\" font-size=\"{FONT}\"><rect width=\"100%\" height=\"100%\" fill=\"white\"/>"
         );
         let _ = writeln!(
             s,
-            "<text x=\"{}\" y=\"22\" text-anchor=\"middle\" font-size=\"14\">{}</text>",
+            "<text x=\"{}\" y=\"24\" text-anchor=\"middle\" font-size=\"{TITLE_FONT}\">{}</text>",
             W / 2.0,
             escape(&self.title)
         );
@@ -135,7 +187,7 @@ impl Chart {
                 "<line x1=\"{x:.1}\" y1=\"{}\" x2=\"{x:.1}\" y2=\"{}\" stroke=\"#ddd\"/><text x=\"{x:.1}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
                 TOP,
                 H - BOTTOM,
-                H - BOTTOM + 16.0,
+                H - BOTTOM + 19.0,
                 tick_label(t, self.x_scale)
             );
         }
@@ -160,7 +212,7 @@ impl Chart {
             s,
             "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
             (LEFT + W - RIGHT) / 2.0,
-            H - 12.0,
+            H - 14.0,
             escape(&self.x_label)
         );
         let _ = writeln!(
@@ -170,7 +222,7 @@ impl Chart {
             escape(&self.y_label)
         );
         for (i, series) in self.series.iter().enumerate() {
-            let color = COLORS[i % COLORS.len()];
+            let color = curve_color(&series.label, i);
             let path: Vec<String> = series
                 .points
                 .iter()
@@ -196,14 +248,15 @@ impl Chart {
                     );
                 }
             }
-            let ly = TOP + 10.0 + 18.0 * i as f64;
-            let lx = W - RIGHT + 12.0;
+            // The legend, under the plot: row by row, `columns` to a row.
+            let lx = 10.0 + column * (i % columns) as f64;
+            let ly = H + 14.0 + 22.0 * (i / columns) as f64;
             let _ = writeln!(
                 s,
-                "<line x1=\"{lx}\" y1=\"{ly}\" x2=\"{}\" y2=\"{ly}\" stroke=\"{color}\" stroke-width=\"3\"/><text x=\"{}\" y=\"{}\">{}</text>",
-                lx + 18.0,
-                lx + 24.0,
-                ly + 4.0,
+                "<line x1=\"{lx}\" y1=\"{ly}\" x2=\"{}\" y2=\"{ly}\" stroke=\"{color}\" stroke-width=\"3\"/><text class=\"legend\" x=\"{}\" y=\"{}\">{}</text>",
+                lx + 20.0,
+                lx + 26.0,
+                ly + 5.0,
                 escape(&series.label)
             );
         }
@@ -228,6 +281,16 @@ mod tests {
             vec![0.0, 0.2, 0.4, 0.6000000000000001, 0.8, 1.0]
         );
         assert_eq!(ticks(-1.3, 2.0, Scale::Log), vec![-1.0, 0.0, 1.0, 2.0]);
+        // Less than a decade: 2 and 5 times the decades join in, or every multiple.
+        let labels = |lo: f64, hi: f64| -> Vec<String> {
+            ticks(lo, hi, Scale::Log)
+                .into_iter()
+                .map(|t| tick_label(t, Scale::Log))
+                .collect()
+        };
+        assert_eq!(labels(-2.5, -1.2), ["0.005", "0.01", "0.02", "0.05"]);
+        assert_eq!(labels(0.1, 0.65), ["2", "3", "4"]);
+        assert_eq!(labels(-7.0, -5.0), ["1e-7", "1e-6", "1e-5"]);
     }
 
     #[test]

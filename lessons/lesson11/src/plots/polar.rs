@@ -2,12 +2,15 @@
 
 use std::fmt::Write as _;
 
-use super::series::{COLORS, Series, escape};
+use super::chart::{FONT, TITLE_FONT};
+use super::palette::curve_color;
+use super::series::{Series, escape};
 
 /// A polar plot of BRDF lobes in the plane of incidence: each series gives
 /// `(θ, r)` pairs, θ measured from the normal (positive towards the mirror
-/// side), drawn as `r (sin θ, cos θ)` above a horizontal surface line.
-pub fn polar_svg(title: &str, series: &[Series], incoming_deg: f64) -> String {
+/// side), drawn as `r (sin θ, cos θ)` above a horizontal surface line, the
+/// legend on the right; `incoming` labels the direction of the light.
+pub fn polar_svg(title: &str, series: &[Series], incoming_deg: f64, incoming: &str) -> String {
     let (cx, cy, radius) = (200.0, 250.0, 180.0);
     let r_max = series
         .iter()
@@ -17,11 +20,11 @@ pub fn polar_svg(title: &str, series: &[Series], incoming_deg: f64) -> String {
     let _ = writeln!(
         s,
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"560\" height=\"300\" viewBox=\"0 0 560 300\" font-family=\"sans-serif\" \
-         font-size=\"12\"><rect width=\"100%\" height=\"100%\" fill=\"white\"/>"
+         font-size=\"{FONT}\"><rect width=\"100%\" height=\"100%\" fill=\"white\"/>"
     );
     let _ = writeln!(
         s,
-        "<text x=\"280\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">{}</text>",
+        "<text x=\"280\" y=\"22\" text-anchor=\"middle\" font-size=\"{TITLE_FONT}\">{}</text>",
         escape(title)
     );
     for k in 1..=4 {
@@ -42,14 +45,15 @@ pub fn polar_svg(title: &str, series: &[Series], incoming_deg: f64) -> String {
     let a = incoming_deg.to_radians();
     let _ = writeln!(
         s,
-        "<line x1=\"{:.1}\" y1=\"{:.1}\" x2=\"{cx}\" y2=\"{cy}\" stroke=\"#888\" stroke-dasharray=\"6 4\"/><text x=\"{:.1}\" y=\"{:.1}\" fill=\"#888\">incoming</text>",
+        "<line x1=\"{:.1}\" y1=\"{:.1}\" x2=\"{cx}\" y2=\"{cy}\" stroke=\"#888\" stroke-dasharray=\"6 4\"/><text x=\"{:.1}\" y=\"{:.1}\" fill=\"#888\">{}</text>",
         cx - radius * a.sin(),
         cy - radius * a.cos(),
         cx - radius * a.sin() - 20.0,
-        cy - radius * a.cos() - 6.0
+        cy - radius * a.cos() - 6.0,
+        escape(incoming)
     );
     for (i, series) in series.iter().enumerate() {
-        let color = COLORS[i % COLORS.len()];
+        let color = curve_color(&series.label, i);
         let pts: Vec<String> = series
             .points
             .iter()
@@ -63,10 +67,10 @@ pub fn polar_svg(title: &str, series: &[Series], incoming_deg: f64) -> String {
             "<polyline fill=\"none\" stroke=\"{color}\" stroke-width=\"2\" points=\"{}\"/>",
             pts.join(" ")
         );
-        let ly = 50.0 + 18.0 * i as f64;
+        let ly = 50.0 + 22.0 * i as f64;
         let _ = writeln!(
             s,
-            "<line x1=\"410\" y1=\"{ly}\" x2=\"428\" y2=\"{ly}\" stroke=\"{color}\" stroke-width=\"3\"/><text x=\"434\" y=\"{}\">{}</text>",
+            "<line x1=\"384\" y1=\"{ly}\" x2=\"402\" y2=\"{ly}\" stroke=\"{color}\" stroke-width=\"3\"/><text class=\"legend\" x=\"408\" y=\"{}\">{}</text>",
             ly + 4.0,
             escape(&series.label)
         );

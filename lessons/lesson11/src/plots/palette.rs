@@ -1,0 +1,147 @@
+//! One colour per algorithm, on every chart of both decks and the page: a
+//! curve of path tracing is the same blue in chapter 8's convergence plots
+//! and in chapter 9's, whatever else the chart shows. Curves that are not an
+//! algorithm (BRDF lobes, a noise floor) take the colours of [`OTHERS`],
+//! none of which an algorithm uses.
+
+/// Every algorithm a chart draws a curve of.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Drawn {
+    Naive,
+    /// Path tracing with light sampling and MIS (the default path tracer).
+    Path,
+    /// Path tracing with BRDF sampling only.
+    PathBrdf,
+    Light,
+    Bdpt,
+    Metropolis,
+    Photon,
+    Sppm,
+    Vpl,
+    IrradianceCache,
+}
+
+impl Drawn {
+    #[cfg(test)]
+    pub const ALL: [Drawn; 10] = [
+        Drawn::Naive,
+        Drawn::Path,
+        Drawn::PathBrdf,
+        Drawn::Light,
+        Drawn::Bdpt,
+        Drawn::Metropolis,
+        Drawn::Photon,
+        Drawn::Sppm,
+        Drawn::Vpl,
+        Drawn::IrradianceCache,
+    ];
+
+    /// Its colour, the same on every chart.
+    pub fn color(self) -> &'static str {
+        match self {
+            Drawn::Naive => "#7f7f00",
+            Drawn::Path => "#0060c0",
+            Drawn::PathBrdf => "#56b4e9",
+            Drawn::Light => "#e69f00",
+            Drawn::Bdpt => "#009e73",
+            Drawn::Metropolis => "#cc3399",
+            Drawn::Photon => "#d55e00",
+            Drawn::Sppm => "#8b1a1a",
+            Drawn::Vpl => "#6a3d9a",
+            Drawn::IrradianceCache => "#8c6d31",
+        }
+    }
+
+    /// The algorithm a curve's label names, in either language of the
+    /// decks (chapter 8's "path (BRDF only)", chapter 9's "photon mapping",
+    /// "фотонни карти", …), or `None` for a curve that is no algorithm.
+    pub fn of_label(label: &str) -> Option<Drawn> {
+        let l = label.to_lowercase();
+        let has = |words: &[&str]| words.iter().any(|w| l.contains(w));
+        Some(if has(&["naive", "наивна"]) {
+            Drawn::Naive
+        } else if has(&["metropolis"]) {
+            Drawn::Metropolis
+        } else if has(&["bidirectional", "bdpt"]) {
+            Drawn::Bdpt
+        } else if has(&["sppm"]) {
+            Drawn::Sppm
+        } else if has(&["photon", "фотон"]) {
+            Drawn::Photon
+        } else if has(&["instant radiosity", "vpl"]) {
+            Drawn::Vpl
+        } else if has(&["irradiance", "кеширане"]) {
+            Drawn::IrradianceCache
+        } else if has(&["brdf"]) && has(&["path"]) {
+            Drawn::PathBrdf
+        } else if l.starts_with("light") || has(&["light tracing"]) {
+            Drawn::Light
+        } else if has(&["path"]) {
+            Drawn::Path
+        } else {
+            return None;
+        })
+    }
+}
+
+/// The colours of curves that are no algorithm, in order.
+pub const OTHERS: [&str; 8] = [
+    "#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42d4f4", "#f032e6", "#9a6324",
+];
+
+/// The grey of a reference's noise floor and other guide lines.
+pub const GUIDE: &str = "#777777";
+
+/// The colour of the `i`-th curve of a chart, labelled `label`.
+pub fn curve_color(label: &str, i: usize) -> &'static str {
+    if let Some(d) = Drawn::of_label(label) {
+        return d.color();
+    }
+    let l = label.to_lowercase();
+    if l.contains("noise floor") || l.contains("шум") {
+        return GUIDE;
+    }
+    OTHERS[i % OTHERS.len()]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_algorithm_has_a_colour_of_its_own_that_no_other_curve_takes() {
+        let mut seen: Vec<&str> = Vec::new();
+        for d in Drawn::ALL {
+            assert!(!seen.contains(&d.color()), "{d:?} shares its colour");
+            seen.push(d.color());
+        }
+        for c in OTHERS.iter().chain([&GUIDE]) {
+            assert!(!seen.contains(c), "{c} is an algorithm's colour");
+        }
+    }
+
+    #[test]
+    fn the_labels_of_both_chapters_and_both_languages_name_their_algorithm() {
+        for (label, d) in [
+            ("naive recursion, N = 4 then 1", Drawn::Naive),
+            ("наивна рекурсия", Drawn::Naive),
+            ("path (MIS)", Drawn::Path),
+            ("path tracing", Drawn::Path),
+            ("path (BRDF only)", Drawn::PathBrdf),
+            ("path tracing (само BRDF)", Drawn::PathBrdf),
+            ("light", Drawn::Light),
+            ("light tracing", Drawn::Light),
+            ("bidirectional", Drawn::Bdpt),
+            ("Metropolis (over bidirectional)", Drawn::Metropolis),
+            ("photon mapping", Drawn::Photon),
+            ("SPPM", Drawn::Sppm),
+            ("instant radiosity", Drawn::Vpl),
+            ("irradiance caching", Drawn::IrradianceCache),
+        ] {
+            assert_eq!(Drawn::of_label(label), Some(d), "{label}");
+        }
+        for other in ["Lambert", "Phong n=10", "reference noise floor", "bias²"] {
+            assert_eq!(Drawn::of_label(other), None, "{other}");
+        }
+    }
+}
