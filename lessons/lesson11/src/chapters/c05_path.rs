@@ -10,8 +10,8 @@ use raytracer::light::{AreaLight, AreaShape, Light};
 use raytracer::math::UVec2;
 use raytracer::scene::Scene;
 
-use crate::page::{Picture, Section};
-use crate::plots::{Labels, pick_sample};
+use crate::page::{Figure, Picture, Section};
+use crate::plots::{Labels, SolidAngle, pick_sample, solid_angle_svg};
 use crate::tour::{Chapter, ChapterOutput, Tour};
 
 pub const CHAPTER: Chapter = Chapter::new(
@@ -65,6 +65,19 @@ fn render(tour: &Tour) -> Result<Section> {
     if let Some((scene, seed, picture)) = last {
         path_sample(tour, &mut s, &scene, seed, &picture)?;
     }
+    // Light sampling's change of variables, drawn from its geometry.
+    let figure = s.dir.join("solid-angle.svg");
+    raytracer::film::output::write_file(&figure, solid_angle_svg(&SolidAngle::default()))?;
+    s.section.figures.push(Figure::plot(
+        &tour.out,
+        &figure,
+        &format!(
+            "From area to solid angle: a patch dA at y, turned by θ_y = {}° from the direction to \
+             x, shows x only dA cos θ_y of itself (dashed), and at distance r that covers \
+             dω = cos θ_y dA / r² of the unit sphere around x (the arc).",
+            SolidAngle::default().theta_y_deg
+        ),
+    ));
     let (scene, options) = tour.scene("cornell", 16)?;
     for (strategy, stem, caption) in [
         (
@@ -154,7 +167,9 @@ fn path_sample(
         &format!(
             "One path-tracing sample of pixel ({}, {}), recorded by the renderer and drawn over \
              the picture: the camera ray from the lens x₀, the bounces x₁ … (D = 5), and from \
-             every vertex a shadow ray to a point on the lamp (green; red where blocked).",
+             every vertex but the last a shadow ray to a point on the lamp (green; red where \
+             blocked). The last vertex has none, since its shadow ray would be segment D + 1, nor \
+             has a vertex whose lamp point lies behind its surface (f_r = 0 there).",
             pixel.x, pixel.y
         ),
     )
