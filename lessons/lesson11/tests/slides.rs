@@ -1029,3 +1029,270 @@ fn bulgarian_slides_use_the_lectures_words_and_decimal_commas() {
         assert!(all.contains(word), "the Bulgarian deck should use `{word}`");
     }
 }
+
+/// Every chart the chapters draw (line charts, bars, polar plots: the SVGs
+/// with a legend) in a folder of the tour, with its path.
+fn charts(out: &Path) -> Vec<(String, String)> {
+    let mut found = Vec::new();
+    let mut dirs = vec![out.to_path_buf()];
+    while let Some(dir) = dirs.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                dirs.push(path);
+            } else if path.extension().is_some_and(|e| e == "svg") {
+                let svg = std::fs::read_to_string(&path).unwrap();
+                if svg.contains("class=\"legend\"") {
+                    let name = path.strip_prefix(out).unwrap().display().to_string();
+                    found.push((name, svg));
+                }
+            }
+        }
+    }
+    found.sort();
+    found
+}
+
+/// The legend of a chart: (colour, label) of each entry, read from the
+/// swatch (a line or a box) just before each legend text.
+fn legend(svg: &str) -> Vec<(String, String)> {
+    let mut entries = Vec::new();
+    for (k, _) in svg.match_indices("<text class=\"legend\"") {
+        let before = &svg[..k];
+        let swatch = &before[before.rfind('<').unwrap()..];
+        let color = ["stroke=\"", "fill=\""]
+            .iter()
+            .find_map(|attr| {
+                let start = swatch.find(attr)? + attr.len();
+                Some(swatch[start..start + swatch[start..].find('"')?].to_string())
+            })
+            .expect("a swatch with a colour");
+        let text = &svg[k..];
+        let label = &text[text.find('>').unwrap() + 1..text.find("</text>").unwrap()];
+        entries.push((color, label.replace("&amp;", "&")));
+    }
+    entries
+}
+
+/// The algorithm a legend label names, as this test reads the labels of
+/// both languages (independently of the program's palette).
+fn algorithm_of(label: &str) -> Option<&'static str> {
+    let l = label.to_lowercase();
+    let has = |w: &str| l.contains(w);
+    Some(if has("naive") || has("наивна") {
+        "naive recursion"
+    } else if has("metropolis") {
+        "Metropolis"
+    } else if has("bidirectional") {
+        "bidirectional path tracing"
+    } else if has("sppm") {
+        "SPPM"
+    } else if has("photon") || has("фотон") {
+        "photon mapping"
+    } else if has("radiosity") {
+        "instant radiosity"
+    } else if has("irradiance") {
+        "irradiance caching"
+    } else if has("brdf") && has("path") {
+        "path tracing, BRDF sampling only"
+    } else if l == "light" || has("light tracing") {
+        "light tracing"
+    } else if has("path") {
+        "path tracing"
+    } else {
+        return None;
+    })
+}
+
+#[test]
+fn every_algorithm_has_one_colour_on_every_chart_of_both_decks() {
+    let out = tiny_build();
+    let charts = charts(out);
+    assert!(
+        charts.iter().any(|(n, _)| n.contains("08-compare"))
+            && charts.iter().any(|(n, _)| n.contains("03-brdf")),
+        "the tiny build has the charts of chapters 3 and 8: {:?}",
+        charts.iter().map(|c| &c.0).collect::<Vec<_>>()
+    );
+    let mut colour_of: BTreeMap<&str, (String, String)> = BTreeMap::new();
+    let mut algorithm_with: BTreeMap<String, (&str, String)> = BTreeMap::new();
+    for (name, svg) in &charts {
+        for (colour, label) in legend(svg) {
+            let Some(algorithm) = algorithm_of(&label) else {
+                // A curve that is no algorithm must not wear one's colour.
+                if let Some((a, w)) = algorithm_with.get(&colour) {
+                    panic!("{name}: `{label}` is drawn in {colour}, the colour of {a} ({w})");
+                }
+                continue;
+            };
+            let here = format!("{name}: {label}");
+            if let Some((c, w)) = colour_of.get(algorithm) {
+                assert_eq!(c, &colour, "{algorithm}: {colour} in {here}, {c} in {w}");
+            }
+            if let Some((a, w)) = algorithm_with.get(&colour) {
+                assert_eq!(
+                    *a, algorithm,
+                    "{colour} stands for {a} in {w} and for {here}"
+                );
+            }
+            colour_of.insert(algorithm, (colour.clone(), here.clone()));
+            algorithm_with.insert(colour, (algorithm, here));
+        }
+    }
+    assert!(
+        colour_of.len() >= 6,
+        "the charts name the algorithms of chapters 8 and 9: {colour_of:?}"
+    );
+}
+
+#[test]
+fn chart_texts_and_legends_stay_inside_their_charts_in_chromium() {
+    let Some(chromium) = chromium::chromium() else {
+        eprintln!("skipped: no chromium, so the charts' legends were not measured");
+        return;
+    };
+    let out = tiny_build();
+    let charts = charts(out);
+    // Every chart inline in one page, whose script measures each text's box
+    // against its chart's own box and writes what sticks out.
+    let mut page = String::from("<!doctype html><html><head><meta charset=\"utf-8\"></head><body>");
+    for (name, svg) in &charts {
+        page.push_str(&format!("<div data-name=\"{name}\">{svg}</div>"));
+    }
+    page.push_str(
+        "<script>addEventListener('load',function(){var bad=[],n=0;\
+         document.querySelectorAll('div[data-name]').forEach(function(d){\
+         var svg=d.querySelector('svg'),r=svg.getBoundingClientRect();n++;\
+         svg.querySelectorAll('text').forEach(function(t){var b=t.getBBox(),m=t.getScreenCTM(),\
+         p=svg.createSVGPoint(),xs=[],ys=[];[[b.x,b.y],[b.x+b.width,b.y],[b.x,b.y+b.height],\
+         [b.x+b.width,b.y+b.height]].forEach(function(c){p.x=c[0];p.y=c[1];\
+         var q=p.matrixTransform(m);xs.push(q.x);ys.push(q.y);});\
+         if(Math.min.apply(null,xs)<r.left-1||Math.max.apply(null,xs)>r.right+1||\
+            Math.min.apply(null,ys)<r.top-1||Math.max.apply(null,ys)>r.bottom+1)\
+         bad.push(d.dataset.name+': \\u201c'+t.textContent+'\\u201d sticks out');});});\
+         var pre=document.createElement('pre');pre.id='charts';\
+         pre.textContent='measured '+n+' charts\\n'+bad.join('\\n');document.body.appendChild(pre);});\
+         </script></body></html>",
+    );
+    let file = scratch("charts-page").join("charts.html");
+    std::fs::create_dir_all(file.parent().unwrap()).unwrap();
+    std::fs::write(&file, page).unwrap();
+    let dom = dump_dom(&chromium, &format!("file://{}", file.display()), 1400, 900).unwrap();
+    let start = dom
+        .find("<pre id=\"charts\">")
+        .expect("the page measured the charts")
+        + 17;
+    let report = dom[start..start + dom[start..].find("</pre>").unwrap()].replace("&amp;", "&");
+    let mut lines = report.lines();
+    assert_eq!(
+        lines.next(),
+        Some(format!("measured {} charts", charts.len()).as_str())
+    );
+    let bad: Vec<&str> = lines.filter(|l| !l.is_empty()).collect();
+    assert!(bad.is_empty(), "chart texts cut off:\n{}", bad.join("\n"));
+}
+
+#[test]
+#[ignore = "renders the whole tour at the default quality (a few minutes on two cores): \
+            cargo test -p lesson11 --test slides -- --ignored"]
+fn every_picture_is_at_least_256_px_wide_and_shown_at_most_twice_its_size() {
+    let Some(chromium) = chromium::chromium() else {
+        eprintln!("skipped: no chromium, so the pictures' sizes were not measured");
+        return;
+    };
+    let out = scratch("slides-quick");
+    let o = lesson11(&[
+        "slides",
+        "--quality",
+        "quick",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut problems = Vec::new();
+    for lang in ["bg", "en"] {
+        let page = out.join("slides").join(lang).join("index.html");
+        let url = format!("file://{}#check-sizes", page.display());
+        let dom = dump_dom(&chromium, &url, 1280, 720).unwrap();
+        let report = overflow_report(&dom).expect("a #check-sizes report");
+        problems.extend(report.lines.into_iter().map(|l| format!("{lang}: {l}")));
+    }
+    assert!(
+        problems.is_empty(),
+        "pictures too small or blown up (or slides that do not fit):\n{}",
+        problems.join("\n")
+    );
+}
+
+#[test]
+fn the_slides_readme_numbers_the_exercises_as_the_registry_does() {
+    let readme = std::fs::read_to_string(slides_dir().join("README.md")).unwrap();
+    let start = readme
+        .find("(1 stereo")
+        .expect("the README's list of exercises");
+    let list = &readme[start + 1..start + readme[start..].find("):").unwrap()];
+    let list = list.split_whitespace().collect::<Vec<_>>().join(" ");
+    let registry = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../exercises/info.toml"),
+    )
+    .unwrap();
+    let names: Vec<&str> = registry
+        .lines()
+        .filter_map(|l| l.strip_prefix("name = \"ex"))
+        .map(|l| l.trim_end_matches('"'))
+        .collect();
+    let entries: Vec<&str> = list.split(", ").collect();
+    assert_eq!(entries.len(), names.len(), "{list}");
+    // Each entry's words name its exercise in the registry (ex16_metropolis:
+    // "16 the Metropolis chain …"), by a word of the registry's name.
+    for (entry, name) in entries.iter().zip(&names) {
+        let (number, topic) = name.split_once('_').unwrap();
+        let (n, words) = entry.split_once(' ').unwrap();
+        assert_eq!(n, number.trim_start_matches('0'), "{entry} / ex{name}");
+        let words = words.to_lowercase();
+        let known = |w: &str| {
+            let w = match w {
+                "naive" => "naive recursion",
+                "nee" => "next event",
+                "radiosity" => "vpl",
+                "lobe" | "pdf" => "pdf",
+                "cone" => "cone",
+                other => other,
+            };
+            words.contains(w) || words.contains(&w[..w.len().min(5)])
+        };
+        assert!(
+            topic.split('_').any(known),
+            "README `{entry}` is not ex{name} of exercises/info.toml"
+        );
+    }
+}
+
+#[test]
+fn bulgarian_titles_are_in_bulgarian_but_the_lectures_names() {
+    // The lecture names these in English, as the exercises' registry does.
+    let names = [
+        "stereoSeparation",
+        "Next event estimation",
+        "Multiple importance sampling",
+        "Light tracing",
+        "Bidirectional path tracing",
+        "Metropolis light transport",
+    ];
+    for (file, slides) in read_deck("bg") {
+        if file.starts_with("09") {
+            continue;
+        }
+        for s in slides {
+            let cyrillic = s
+                .title
+                .chars()
+                .any(|c| ('\u{400}'..='\u{4ff}').contains(&c));
+            assert!(
+                cyrillic || names.contains(&s.title.as_str()),
+                "bg/{file}: the title `{}` is not in Bulgarian",
+                s.title
+            );
+        }
+    }
+}

@@ -27,6 +27,17 @@ pub struct Figure {
     pub spp: Option<u32>,
     /// Exposure of the PNG in stops, for a render.
     pub exposure: Option<f32>,
+    /// The PNG's width in pixels: the page never shows it wider than twice that.
+    pub width: Option<u32>,
+}
+
+/// The width of a PNG, from its header (`None` if it is not one).
+fn png_width(png: &Path) -> Option<u32> {
+    use std::io::Read as _;
+    let mut head = [0u8; 24];
+    std::fs::File::open(png).ok()?.read_exact(&mut head).ok()?;
+    (head[..8] == *b"\x89PNG\r\n\x1a\n" && head[12..16] == *b"IHDR")
+        .then(|| u32::from_be_bytes([head[16], head[17], head[18], head[19]]))
 }
 
 impl Figure {
@@ -46,6 +57,7 @@ impl Figure {
             caption: format!("{caption} ({})", facts.join(", ")),
             spp: Some(picture.spp),
             exposure: Some(picture.exposure),
+            width: png_width(&picture.png),
         }
     }
 
@@ -57,6 +69,7 @@ impl Figure {
             caption,
             spp: None,
             exposure: None,
+            width: png_width(png),
         }
     }
 
@@ -68,6 +81,7 @@ impl Figure {
             caption: caption.into(),
             spp: None,
             exposure: None,
+            width: None,
         }
     }
 }
@@ -164,5 +178,20 @@ mod tests {
         };
         let f = Figure::new(Path::new("/o"), &derived, "Strategy.");
         assert_eq!(f.caption, "Strategy. (64 spp, exposure +4 stops (×16))");
+    }
+
+    #[test]
+    fn a_png_width_is_read_from_its_header() {
+        let dir = std::env::temp_dir().join(format!("lesson11-png-width-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let png = dir.join("x.png");
+        let mut bytes = b"\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR".to_vec();
+        bytes.extend(300u32.to_be_bytes());
+        bytes.extend(200u32.to_be_bytes());
+        std::fs::write(&png, bytes).unwrap();
+        assert_eq!(png_width(&png), Some(300));
+        std::fs::write(&png, b"not a png, but long enough").unwrap();
+        assert_eq!(png_width(&png), None);
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }

@@ -88,9 +88,13 @@ impl Page {
                 if let Some(stops) = f.exposure {
                     let _ = write!(data, " data-exposure=\"{stops}\"");
                 }
+                // Never blown up above twice its size.
+                let style = f.width.map_or(String::new(), |w| {
+                    format!(" style=\"max-width:{}px\"", 2 * w)
+                });
                 let _ = writeln!(
                     h,
-                    "<figure{data}><a href=\"{src}\"><img src=\"{src}\" alt=\"{cap}\"></a><figcaption>{cap}{exr}</figcaption></figure>",
+                    "<figure{data}><a href=\"{src}\"><img src=\"{src}\"{style} alt=\"{cap}\"></a><figcaption>{cap}{exr}</figcaption></figure>",
                     src = escape(&f.src),
                     cap = escape(&f.caption)
                 );

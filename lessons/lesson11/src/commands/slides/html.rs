@@ -286,7 +286,7 @@ const SCRIPT: &str = r#"
 (function(){
 var s=document.querySelectorAll('section.slide'),i=0;
 if(!s.length)return;
-var checking=location.hash==='#check';
+var sizes=location.hash==='#check-sizes',checking=location.hash==='#check'||sizes;
 document.body.classList.add('js');
 function find(){var h=location.hash.slice(1);for(var k=0;k<s.length;k++)if(s[k].id===h)return k;return 0;}
 function show(n){n=Math.max(0,Math.min(s.length-1,n));s[i].classList.remove('current');i=n;s[i].classList.add('current');
@@ -323,7 +323,8 @@ function measure(sec){var b=sec.getBoundingClientRect(),h=sec.querySelector('h1'
   if(!el.closest('.figures,footer')&&!el.querySelector('.figures')&&onpicture(r)){add(el,'runs into the picture');continue;}
   if(/^(p|li|td|th|figcaption|h2|blockquote|code|span)$/.test(t)&&el.scrollWidth>el.clientWidth+1&&getComputedStyle(el).display!=='inline'){add(el,'is cut off');continue;}
   if((t==='img'||t==='svg')&&el.closest('.figures')){var d=shown(el,r);
-   if(d.height<0.15*innerHeight||d.width<0.1*innerWidth)add(el,'is squeezed to '+Math.round(d.width)+'\u00d7'+Math.round(d.height)+' px');}}
+   if(d.height<0.15*innerHeight||d.width<0.1*innerWidth)add(el,'is squeezed to '+Math.round(d.width)+'\u00d7'+Math.round(d.height)+' px');
+   else if(sizes&&t==='img'&&/\.png$/.test(el.getAttribute('src'))&&(el.naturalWidth<256||d.width>2*el.naturalWidth))add(el,'is '+el.naturalWidth+' px wide, shown at '+Math.round(d.width)+' px');}}
  return bad;}
 function check(){var lines=[],n=0,keep=i;
  for(var k=0;k<s.length;k++){show(k);var bad=measure(s[k]);if(bad.length){n++;
