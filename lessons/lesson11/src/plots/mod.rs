@@ -4,8 +4,8 @@
 //! build time and every browser shows it, so the lesson's page stays
 //! self-contained. One plot is an image
 //! instead, because it lies over a rendered picture pixel for pixel: the tile
-//! z-map of two renders. Path figures are SVG drawn over a render, which they
-//! embed.
+//! z-map of two renders. Path figures, and signed pictures with their
+//! numbered colour bars, are SVG drawn over a picture, which they embed.
 
 mod bars;
 mod chart;
@@ -14,6 +14,7 @@ mod hemisphere;
 mod path_figure;
 mod polar;
 mod series;
+mod signed_map;
 mod zmap;
 
 pub use bars::Bars;
@@ -22,4 +23,5 @@ pub use hemisphere::{Hemisphere, HemisphereWords, LANGS as HEMISPHERE_LANGS, hem
 pub use path_figure::{Labels, in_picture, path_figure_svg, pick_sample};
 pub use polar::polar_svg;
 pub use series::Series;
+pub use signed_map::{round_scale, signed_map_svg};
 pub use zmap::zmap_image;
