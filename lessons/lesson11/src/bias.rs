@@ -163,7 +163,7 @@ mod tests {
     /// A deterministic stand-in for noise: ±1 by a hash of (run, pixel),
     /// so that each pixel's values have mean 0 and variance 1 over even K.
     fn sign(run: usize, pixel: usize) -> f32 {
-        let h = (run as u64 * 0x9e37_79b9_7f4a_7c15)
+        let h = (run as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15)
             ^ (pixel as u64).wrapping_mul(0xbf58_476d_1ce4_e5b9);
         if (h.wrapping_mul(0x94d0_49bb_1331_11eb) >> 63) == 0 {
             1.0

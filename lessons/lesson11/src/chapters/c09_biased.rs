@@ -80,8 +80,8 @@ fn effort(quality: Quality) -> Effort {
         Quality::Full => Effort {
             size: Some(256),
             budget: 2.0,
-            seeds: 32,
-            seed_share: 2.0,
+            seeds: 16,
+            seed_share: 4.0,
             blur_photons: 1_000_000,
             caustic_photons: 400_000,
             knobs: knobs(30_000, 20_000, 128),
@@ -300,8 +300,8 @@ fn render(tour: &Tour) -> Result<Section> {
         &reference,
         e.blur_photons,
         0.15,
-        "it sits along the edges and in the corners, where the disk reaches onto the neighbouring \
-         wall and averages its light in",
+        "besides the photon map's noise (blotches), it sits along the edges and in the corners, \
+         where the disk reaches onto the neighbouring wall and averages its light in",
     )?;
     let vpl = &measured[4];
     let unclamped = Knobs { clamp: 0.0, ..k };
@@ -396,8 +396,8 @@ fn render(tour: &Tour) -> Result<Section> {
         &reference,
         4 * e.blur_photons,
         0.15,
-        "the caustic is spread over the disk: too dim in its centre (blue), too bright around its \
-         edge (red)",
+        "the error is largest at the caustic, where the light changes fastest; elsewhere the \
+         blotches are the photon map's own noise",
     )?;
     table.caption = format!(
         "{}; errors over the pixels off the lamp and its edge (there the error is the \
