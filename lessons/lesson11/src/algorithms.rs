@@ -37,8 +37,10 @@ pub enum Algorithm {
 /// The knobs of the biased algorithms' builds (the unbiased ones have none).
 #[derive(Clone, Copy, Debug)]
 pub struct Knobs {
-    /// Photon mapping: light paths traced once (k = 50 nearest photons).
+    /// Photon mapping: light paths traced once.
     pub photons: u64,
+    /// Photon mapping: the k nearest photons of each density estimate.
+    pub photon_k: usize,
     /// SPPM: photon paths per pass.
     pub sppm_photons: u64,
     /// Instant radiosity: light paths that leave the VPLs.
@@ -126,6 +128,7 @@ impl Algorithm {
                 scene,
                 PhotonSettings {
                     photons: knobs.photons,
+                    k: knobs.photon_k,
                     max_depth,
                     rr_depth,
                     seed,

@@ -18,7 +18,7 @@
 //! chapters/mod.rs  the chapter list in lecture order, and the tour that walks it
 //! chapters/c*.rs   one chapter each: its pictures, tables and plots, and its section of the page
 //! tour.rs          what every chapter is (its entry in the list) and gets (the Tour context)
-//! equal_time.rs algorithms.rs integrators.rs integrators/     shared by chapters and commands
+//! equal_time.rs algorithms.rs integrators.rs integrators/ bias.rs     shared by chapters and commands
 //! metropolis.rs    --integrator mlt: its options and its render to files
 //! render_files.rs  rendering to files: PNG, EXR and the variance, replaced together
 //! reference.rs     the independent references renders are measured against
@@ -35,6 +35,7 @@
 //! `chapters/mod.rs`: its subcommand and its place in the tour follow.
 
 mod algorithms;
+mod bias;
 mod chapters;
 mod commands;
 mod console;

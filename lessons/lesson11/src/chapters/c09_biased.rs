@@ -5,7 +5,7 @@
 
 use std::sync::atomic::AtomicBool;
 
-use anyhow::{Result, anyhow};
+use anyhow::{Context, Result, anyhow};
 use raytracer::film::Image;
 use raytracer::integrator::{
     IrradianceCache, IrradianceCacheSettings, PhotonMapping, PhotonSettings,
@@ -16,8 +16,9 @@ use raytracer::render::RenderOptions;
 use raytracer::scene::Scene;
 
 use crate::algorithms::{Algorithm, Knobs, Prepared, Run};
+use crate::bias::{BiasVariance, split};
 use crate::page::{Figure, Section, Table, seconds_number, seconds_text};
-use crate::plots::{Bars, Chart, Scale, Series};
+use crate::plots::{Bars, Chart, Scale, Series, round_scale, signed_map_svg};
 use crate::reference::{Reference, independent};
 use crate::render_files::write_image;
 use crate::tour::{Chapter, ChapterOutput, Quality, Tour};
@@ -30,10 +31,15 @@ pub const CHAPTER: Chapter = Chapter::new(
 
 /// How hard the chapter works at each quality.
 struct Effort {
+    /// The Cornell box's size (the caustic scene's is its reference's,
+    /// 128 × 96, or half that at tiny).
+    size: Option<u32>,
     /// Seconds per algorithm for the equal-time pictures.
     budget: f64,
-    /// Independent seeds for the bias–variance split.
+    /// Independent seeds for the bias–variance split, each run at
+    /// `budget / seed_share` seconds.
     seeds: u64,
+    seed_share: f64,
     /// Light paths of the photon maps that show the blur (little noise).
     blur_photons: u64,
     /// Photon mapping's light paths on the caustic scene (its caustic is a
@@ -45,41 +51,54 @@ struct Effort {
 fn effort(quality: Quality) -> Effort {
     let knobs = |photons, sppm_photons, vpl_paths| Knobs {
         photons,
+        photon_k: PHOTON_K,
         sppm_photons,
         vpl_paths,
         clamp: VPL_CLAMP,
-        ic_error: 0.3,
+        ic_error: IC_ERROR,
         ic_rays: 64,
     };
     match quality {
         Quality::Tiny => Effort {
+            size: None,
             budget: 0.02,
-            seeds: 2,
+            seeds: 3,
+            seed_share: 2.0,
             blur_photons: 5_000,
             caustic_photons: 2_000,
             knobs: knobs(2_000, 1_000, 8),
         },
         Quality::Quick => Effort {
-            budget: 0.15,
-            seeds: 4,
-            blur_photons: 50_000,
+            size: Some(128),
+            budget: 0.2,
+            seeds: 16,
+            seed_share: 4.0,
+            blur_photons: 100_000,
             caustic_photons: 50_000,
-            knobs: knobs(10_000, 5_000, 32),
+            knobs: knobs(1_500, 5_000, 32),
         },
         Quality::Full => Effort {
+            size: Some(256),
             budget: 2.0,
-            seeds: 8,
+            seeds: 16,
+            seed_share: 4.0,
             blur_photons: 1_000_000,
             caustic_photons: 400_000,
-            knobs: knobs(200_000, 20_000, 128),
+            knobs: knobs(30_000, 20_000, 128),
         },
     }
 }
 
+/// Photon mapping's k nearest photons: twice the usual 50, a wider disk
+/// whose blur (bias) stands out of the noise of 16 seeds.
+const PHOTON_K: usize = 100;
+/// On the caustic scene, the usual 50: its caustic is a small spot, and a
+/// wider disk would only blur it further (and cost more per lookup).
+const CAUSTIC_PHOTON_K: usize = 50;
 /// The bound on instant radiosity's geometry term in the chapter.
 const VPL_CLAMP: f32 = 0.5;
-/// Exposure of the difference images, in stops.
-const DIFFERENCE_EXPOSURE: f32 = 2.0;
+/// Ward's threshold a of irradiance caching in the equal-time comparison.
+const IC_ERROR: f32 = 0.6;
 
 /// Chapter 9: unbiased and biased, at equal time.
 fn render(tour: &Tour) -> Result<Section> {
@@ -97,12 +116,13 @@ fn render(tour: &Tour) -> Result<Section> {
              point lights or cache records) on the Cornell box, measured against Mitsuba 3's image, and on \
              the caustic scene, measured against a stored bidirectional render with thousands of samples. \
              Photon mapping: {} light paths ({} on the caustic scene, whose caustic is a small \
-             spot), the 50 nearest photons under an Epanechnikov kernel. SPPM: \
+             spot), the {PHOTON_K} nearest photons under an Epanechnikov kernel (a wide disk: \
+             smooth, and visibly biased; {CAUSTIC_PHOTON_K} on the caustic scene). SPPM: \
              {} photon paths per pass, radii shrinking with α = 2/3 (consistent: its bias falls with \
              the passes). Instant radiosity: the VPLs of {} light paths, the geometry term clamped at \
              {VPL_CLAMP}. Irradiance caching: a = {}, {} rays per record. The error of each algorithm is \
-             split into bias² (of the mean of {} runs with independent seeds) and variance (their \
-             spread).",
+             split into bias² and variance over {} runs with independent seeds ({} each): the mean of \
+             the runs minus the reference is the bias itself, shown as a picture.",
             seconds_text(e.budget),
             k.photons,
             e.caustic_photons,
@@ -110,7 +130,8 @@ fn render(tour: &Tour) -> Result<Section> {
             k.vpl_paths,
             k.ic_error,
             k.ic_rays,
-            e.seeds
+            e.seeds,
+            seconds_text(e.budget / e.seed_share),
         ),
     )?;
     let mut table = Table::new(
@@ -121,7 +142,7 @@ fn render(tour: &Tour) -> Result<Section> {
             "spp",
             "seconds",
             "RMSE",
-            "bias²",
+            "bias² ± SE",
             "variance",
             "first time RMSE ≤ target",
         ],
@@ -129,8 +150,8 @@ fn render(tour: &Tour) -> Result<Section> {
 
     // The Cornell box: the curves, the grid, bias and variance.
     let (mut scene, mut base) = tour.scene("cornell", 1)?;
-    if tour.quality != Quality::Tiny {
-        scene.set_resolution(64, 64);
+    if let Some(size) = e.size {
+        scene.set_resolution(size, size);
     }
     base.progress = false;
     let builtin = tour.overrides.scene.is_none().then_some("cornell");
@@ -141,23 +162,21 @@ fn render(tour: &Tour) -> Result<Section> {
         scene.name,
         scene.camera.width, scene.camera.height, reference.source
     );
-    // The lamp and the pixels that see part of it are left out of every
-    // error: theirs is the anti-aliasing noise of an edge 18.6 times brighter
-    // than white, the same for every algorithm.
+    // The lamp and the pixels at its edge are left out of every error.
     let counted = off_the_light(&reference.mean);
     let mut measured = Vec::new();
     for algorithm in Algorithm::ALL {
         let m = measure(&scene, &base, algorithm, &k, max_depth, &reference, &counted, &e)?;
         crate::console::say!(
-            "  {} {:20} {:5} spp {:>8} (build {:>8})  RMSE {:.4}  bias² {:.2e}  variance {:.2e}",
+            "  {} {:20} {:5} spp {:>8} (build {:>8})  RMSE {:.4}  bias² {}  variance {:.2e}",
             scene.name,
             algorithm.label(),
             m.run.spp,
             seconds_text(m.run.seconds),
             seconds_text(m.build_seconds),
             m.rmse,
-            m.bias2,
-            m.variance
+            m.split.bias2_text(),
+            m.split.variance
         );
         measured.push(m);
     }
@@ -196,8 +215,8 @@ fn render(tour: &Tour) -> Result<Section> {
             m.run.spp.to_string(),
             seconds_number(m.run.seconds),
             format!("{:.5}", m.rmse),
-            format!("{:.3e}", m.bias2),
-            format!("{:.3e}", m.variance),
+            m.split.bias2_text(),
+            format!("{:.3e}", m.split.variance),
             reached.map_or_else(
                 || format!("not within {}", seconds_text(m.run.seconds)),
                 seconds_number,
@@ -224,18 +243,40 @@ fn render(tour: &Tour) -> Result<Section> {
     };
     let svg = c.dir.join(format!("{}-rmse-time.svg", scene.name));
     chart.write(&svg)?;
+    let flat: Vec<&str> = measured
+        .iter()
+        .filter(|m| m.build_once() && flattens(&m.curve))
+        .map(|m| m.algorithm.label())
+        .collect();
     c.section.figures.push(Figure::plot(
         &tour.out,
         &svg,
         &format!(
             "RMSE against time, log–log, against {} (off the lamp), each point a run of its own: \
              path tracing and bidirectional fall as t^−1/2, all the way to zero; photon mapping, \
-             clamped instant radiosity and irradiance caching build once and then start lower and \
-             fall more slowly, towards the floor their bias sets (the table's bias²); SPPM, \
-             consistent, keeps falling. The flat line is a target RMSE, {target:.4} (halfway, \
-             log, between the best and the worst at equal time); the table gives the time each \
-             algorithm first reaches it.",
-            reference.name
+             clamped instant radiosity and irradiance caching build once, then render more samples \
+             per pixel that all read what was built, so their error falls towards the floor that \
+             build sets (its bias and its own noise, the table's bias² and variance) and no \
+             further. {} SPPM, consistent, \
+             falls further in the limit (its radii shrink with every pass), more slowly. The flat line is a target RMSE, {target:.4} \
+             (halfway, log, between the best and the worst at equal time); the table gives the \
+             time each algorithm first reaches it.",
+            reference.name,
+            if flat.is_empty() {
+                format!(
+                    "Within {} none shows that floor yet: none has a last doubling of work that \
+                     lowered its error by less than a fifth, so the render's noise still dominates \
+                     (more time, or a faster machine, shows it).",
+                    seconds_text(e.budget)
+                )
+            } else {
+                format!(
+                    "Within {}, {} flattened: the last doubling of work lowered the error by less \
+                     than a fifth.",
+                    seconds_text(e.budget),
+                    flat.join(", ")
+                )
+            }
         ),
     ));
     let bars = Bars {
@@ -244,7 +285,10 @@ fn render(tour: &Tour) -> Result<Section> {
         parts: vec!["bias²".into(), "variance".into()],
         bars: measured
             .iter()
-            .map(|m| (m.algorithm.label().to_string(), vec![m.bias2, m.variance]))
+            .map(|m| {
+                let b = m.split.bias2.max(0.0);
+                (m.algorithm.label().to_string(), vec![b, m.split.variance])
+            })
             .collect(),
     };
     let svg = c.dir.join(format!("{}-bias-variance.svg", scene.name));
@@ -253,15 +297,16 @@ fn render(tour: &Tour) -> Result<Section> {
         &tour.out,
         &svg,
         &format!(
-            "Bias² and variance per algorithm at equal time ({} each at half the budget), from {} \
-             runs with independent seeds: variance is their spread per pixel, bias² the squared error \
-             of their mean image against {}, less the part the spread and the reference's own noise \
-             (floor {floor:.5}) explain.",
-            seconds_text(e.budget / 2.0),
+            "Bias² and variance per algorithm at equal time ({} each), from {} runs with \
+             independent seeds: variance is their spread per pixel, bias² the squared error of their \
+             mean image against {}, less the part the spread and the reference's own noise (floor \
+             {floor:.5}) explain; the table gives each bias² with its standard error.",
+            seconds_text(e.budget / e.seed_share),
             e.seeds,
             reference.name
         ),
     ));
+    bias_pictures(tour, &mut c, &scene.name, &measured, &reference, e.seeds)?;
 
     // The bias, named.
     photon_blur(
@@ -271,8 +316,8 @@ fn render(tour: &Tour) -> Result<Section> {
         &reference,
         e.blur_photons,
         0.15,
-        "the blur is brightest along the edges and in the corners, where the disk reaches onto the \
-         neighbouring wall and averages its light in",
+        "besides the photon map's noise (blotches), it sits along the edges and in the corners, \
+         where the disk reaches onto the neighbouring wall and averages its light in",
     )?;
     let vpl = &measured[4];
     let unclamped = Knobs { clamp: 0.0, ..k };
@@ -281,26 +326,36 @@ fn render(tour: &Tour) -> Result<Section> {
         .map_err(|e| anyhow!(e))?;
     let full = prepared.run(&scene, &base, vpl.run.spp);
     let (lost, total) = (mean(&full.image) - mean(&vpl.run.image), mean(&full.image));
-    difference(
+    let removed: Vec<f32> = full
+        .image
+        .pixels
+        .iter()
+        .zip(&vpl.run.image.pixels)
+        .map(|(&a, &b)| luminance(a - b))
+        .collect();
+    signed_figure(
         tour,
         &mut c,
         &format!("{}-vpl-clamping", scene.name),
-        &full.image,
-        &vpl.run.image,
-        vpl.run.spp,
+        &removed,
+        (scene.camera.width, scene.camera.height),
         &format!(
             "What clamping G at {VPL_CLAMP} removes: unclamped minus clamped instant radiosity, the \
-             same VPLs. The light lost sits in the corners and along the edges, where a VPL is close \
-             to the point it lights; the clamped image is {:.1}% darker overall.",
+             same VPLs ({} spp), in luminance. The light lost sits in the corners and along the \
+             edges, where a VPL is close to the point it lights; the clamped image is {:.1}% darker \
+             overall.",
+            vpl.run.spp,
             100.0 * luminance(lost) / luminance(total).max(1e-9)
         ),
     )?;
     irradiance_records(tour, &mut c, (&scene, &base, max_depth), &k, &reference, &counted)?;
 
-    // The caustic scene: the grid at equal time.
+    // The caustic scene: the grid at equal time, for the algorithms that
+    // find a caustic (instant radiosity and irradiance caching, like path
+    // tracing, see it only through their camera paths).
     let (mut scene, mut base) = tour.scene("caustic", 1)?;
-    if tour.quality != Quality::Tiny {
-        scene.set_resolution(64, 48);
+    if e.size.is_some() {
+        scene.set_resolution(128, 96);
     }
     base.progress = false;
     let (reference, max_depth) = independent(Some("caustic"), &scene, &base, 8, 256);
@@ -311,9 +366,15 @@ fn render(tour: &Tour) -> Result<Section> {
     let everywhere = vec![true; reference.mean.pixels.len()];
     let caustic_knobs = Knobs {
         photons: e.caustic_photons,
+        photon_k: CAUSTIC_PHOTON_K,
         ..k
     };
-    for algorithm in Algorithm::ALL {
+    for algorithm in [
+        Algorithm::Path,
+        Algorithm::Bdpt,
+        Algorithm::Photon,
+        Algorithm::Sppm,
+    ] {
         let prepared = algorithm
             .prepare(&scene, &caustic_knobs, max_depth, base.seed)
             .map_err(|e| anyhow!(e))?;
@@ -350,13 +411,15 @@ fn render(tour: &Tour) -> Result<Section> {
         &mut c,
         (&scene, &base, max_depth),
         &reference,
-        e.blur_photons,
+        4 * e.blur_photons,
         0.15,
-        "the caustic is spread over the disk: too dim in its centre, too bright around its edge",
+        "the error is largest at the caustic, where the light changes fastest; elsewhere the \
+         blotches are the photon map's own noise",
     )?;
     table.caption = format!(
-        "{}; errors over the pixels off the lamp (its edge is anti-aliasing noise 18.6 times \
-         brighter than white, the same for all); target RMSE {target:.4}.",
+        "{}; errors over the pixels off the lamp and its edge (there the error is the \
+         anti-aliasing noise of an edge 18.6 times brighter than white, the same for all); bias² ± its standard error (jackknife over the \
+         seeds), or \"< bound\" where it does not stand out of its noise; target RMSE {target:.4}.",
         table.caption
     );
     table.write_csv(&c.dir.join("biased.csv"))?;
@@ -372,15 +435,27 @@ struct Measured {
     rmse: f64,
     /// (seconds, RMSE) of runs with doubling work.
     curve: Vec<(f64, f64)>,
-    bias2: f64,
-    variance: f64,
+    /// Bias² and variance over independent seeds.
+    split: BiasVariance,
     build_seconds: f64,
+}
+
+impl Measured {
+    /// Whether the algorithm builds once and then only renders more samples
+    /// per pixel (photon mapping, instant radiosity, irradiance caching):
+    /// those whose curve flattens at what they built.
+    fn build_once(&self) -> bool {
+        matches!(
+            self.algorithm,
+            Algorithm::Photon | Algorithm::Vpl | Algorithm::IrradianceCache
+        )
+    }
 }
 
 /// Runs `algorithm` with doubling work until the next run would pass the
 /// budget (the curve), then once at the work that fits the budget (the
-/// picture), then `effort.seeds` times with independent seeds at half the
-/// budget (bias² and variance).
+/// picture), then `effort.seeds` times with independent seeds at
+/// `budget / seed_share` (bias² and variance).
 #[allow(clippy::too_many_arguments)]
 fn measure(
     scene: &Scene,
@@ -397,26 +472,121 @@ fn measure(
         .prepare(scene, knobs, max_depth, base.seed)
         .map_err(|e| anyhow!(e))?;
     let (run, curve) = equal_time(&prepared, scene, base, effort.budget, error);
-    let half = prepared.fit(run.spp, run.seconds, effort.budget / 2.0);
+    let work = prepared.fit(run.spp, run.seconds, effort.budget / effort.seed_share);
     let images: Vec<Image> = (0..effort.seeds)
         .map(|s| {
             let seed = base.seed.wrapping_add(1 + s).wrapping_mul(0x9e37_79b9);
             let p: Prepared = algorithm
                 .prepare(scene, knobs, max_depth, seed)
                 .map_err(|e| anyhow!(e))?;
-            Ok(p.run(scene, base, half).image)
+            Ok(p.run(scene, base, work).image)
         })
         .collect::<Result<_>>()?;
-    let (bias2, variance) = bias_and_variance(&images, reference, counted);
     Ok(Measured {
         algorithm,
         rmse: error(&run.image),
         run,
         curve,
-        bias2,
-        variance,
+        split: split(&images, &reference.mean, &reference.variance, counted),
         build_seconds: prepared.build_seconds,
     })
+}
+
+/// Whether a curve has flattened: its last doubling of work (or more)
+/// lowered the error by less than a fifth (an unbiased one falls by 29%).
+fn flattens(curve: &[(f64, f64)]) -> bool {
+    let Some(&(t1, e1)) = curve.last() else {
+        return false;
+    };
+    curve
+        .iter()
+        .rev()
+        .find(|&&(t, _)| t <= t1 / 2.0)
+        .is_some_and(|&(_, e0)| e1 > 0.8 * e0)
+}
+
+/// The mean of each algorithm's runs minus the reference, in luminance and
+/// on one colour scale (a round number above the 99th percentile of the
+/// biased algorithms' |values|): the bias itself, with the noise of a mean.
+fn bias_pictures(
+    tour: &Tour,
+    c: &mut ChapterOutput,
+    name: &str,
+    measured: &[Measured],
+    reference: &Reference,
+    seeds: u64,
+) -> Result<()> {
+    let values: Vec<Vec<f32>> = measured
+        .iter()
+        .map(|m| m.split.signed.pixels.iter().map(|&d| luminance(d)).collect())
+        .collect();
+    let mut biased: Vec<f32> = measured
+        .iter()
+        .zip(&values)
+        .filter(|(m, _)| !m.algorithm.unbiased())
+        .flat_map(|(_, v)| v.iter().map(|x| x.abs()))
+        .collect();
+    biased.sort_by(f32::total_cmp);
+    let p99 = biased.get(biased.len() * 99 / 100).copied().unwrap_or(0.0);
+    let scale = round_scale(p99 as f64);
+    let size = (reference.mean.width, reference.mean.height);
+    for (m, v) in measured.iter().zip(&values) {
+        let noise = (m.split.variance / seeds as f64).sqrt();
+        signed_figure_at(
+            tour,
+            c,
+            &format!("{name}-{}-bias", m.algorithm.stem()),
+            v,
+            size,
+            scale,
+            &format!(
+                "{}: the mean of {seeds} runs with independent seeds minus {}, in luminance (red: \
+                 too bright, blue: too dark): its bias, with the noise of a mean of {seeds} \
+                 (standard deviation {noise:.3} per pixel and channel); bias² {}.",
+                m.algorithm.label(),
+                reference.name,
+                m.split.bias2_text()
+            ),
+        )?;
+    }
+    Ok(())
+}
+
+/// Writes `values` as a signed picture on a round scale of its own (above
+/// its 99th percentile of |value|) and adds it to the chapter.
+fn signed_figure(
+    tour: &Tour,
+    c: &mut ChapterOutput,
+    stem: &str,
+    values: &[f32],
+    size: (u32, u32),
+    caption: &str,
+) -> Result<()> {
+    let mut sorted: Vec<f32> = values.iter().map(|v| v.abs()).collect();
+    sorted.sort_by(f32::total_cmp);
+    let p99 = sorted.get(sorted.len() * 99 / 100).copied().unwrap_or(0.0);
+    signed_figure_at(tour, c, stem, values, size, round_scale(p99 as f64), caption)
+}
+
+/// Writes `values` as `stem.svg`, a signed picture spanning [−scale, scale]
+/// with its numbered colour bar, and adds it to the chapter.
+fn signed_figure_at(
+    tour: &Tour,
+    c: &mut ChapterOutput,
+    stem: &str,
+    values: &[f32],
+    (width, height): (u32, u32),
+    scale: f64,
+    caption: &str,
+) -> Result<()> {
+    let svg = c.dir.join(format!("{stem}.svg"));
+    let text = signed_map_svg(values, width, height, scale)?;
+    raytracer::film::output::write_file(&svg, text)
+        .with_context(|| format!("cannot write {}", svg.display()))?;
+    c.section
+        .figures
+        .push(Figure::plot(&tour.out, &svg, caption));
+    Ok(())
 }
 
 /// Runs `prepared` with doubling work until the next run would pass
@@ -451,33 +621,22 @@ fn equal_time(
     (run, curve)
 }
 
-/// Bias² and variance of `images` (independent runs) against `reference`,
-/// averaged over pixels and channels. The variance is the unbiased sample
-/// variance per pixel; the squared error of the mean image holds, besides
-/// the bias², the variance of that mean (variance / K) and the reference's
-/// own, so both are subtracted (and the result kept ≥ 0).
-fn bias_and_variance(images: &[Image], reference: &Reference, counted: &[bool]) -> (f64, f64) {
-    let k = images.len() as f64;
-    let (mut bias2, mut variance) = (0.0f64, 0.0f64);
-    let pixels = reference.mean.pixels.len();
-    for p in (0..pixels).filter(|&p| counted[p]) {
-        for ch in 0..3 {
-            let values: Vec<f64> = images.iter().map(|i| i.pixels[p][ch] as f64).collect();
-            let m = values.iter().sum::<f64>() / k;
-            let v = values.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / (k - 1.0).max(1.0);
-            let d = m - reference.mean.pixels[p][ch] as f64;
-            bias2 += d * d - v / k - reference.variance.pixels[p][ch] as f64;
-            variance += v;
-        }
-    }
-    let n = (3 * counted.iter().filter(|&&c| c).count()).max(1) as f64;
-    ((bias2 / n).max(0.0), variance / n)
-}
-
-/// The pixels an error counts: those whose reference luminance is below 1
-/// (not the lamp, nor a pixel that sees part of it).
+/// The pixels an error counts: those off the lamp, and not next to it — a
+/// pixel is left out if its reference luminance or that of one of its eight
+/// neighbours is 1 or more. A pixel at the lamp's edge sees the lamp (18.6
+/// times brighter than white) through part of its area, and a few samples
+/// per pixel either hit it or miss it: its error is that edge's
+/// anti-aliasing noise, the same for every algorithm and larger than all
+/// else.
 fn off_the_light(reference: &Image) -> Vec<bool> {
-    reference.pixels.iter().map(|&c| luminance(c) < 1.0).collect()
+    let (w, h) = (reference.width as i64, reference.height as i64);
+    let bright = |x: i64, y: i64| {
+        (0..w).contains(&x) && (0..h).contains(&y) && luminance(reference.get(x as u32, y as u32)) >= 1.0
+    };
+    (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| !(-1..=1).any(|dy| (-1..=1).any(|dx| bright(x + dx, y + dy))))
+        .collect()
 }
 
 /// The RMSE over the `counted` pixels and all channels.
@@ -507,24 +666,6 @@ fn first_time_below(curve: &[(f64, f64)], target: f64) -> Option<f64> {
 
 fn luminance(c: Color) -> f32 {
     raytracer::math::luminance(c)
-}
-
-/// Writes |a − b| at [`DIFFERENCE_EXPOSURE`] and adds it to the chapter.
-fn difference(
-    tour: &Tour,
-    c: &mut ChapterOutput,
-    stem: &str,
-    a: &Image,
-    b: &Image,
-    spp: u32,
-    caption: &str,
-) -> Result<()> {
-    let diff = Image::from_fn(a.width, a.height, |x, y| (a.get(x, y) - b.get(x, y)).abs());
-    let picture = write_image(&c.dir, stem, &diff, spp, DIFFERENCE_EXPOSURE, None)?;
-    c.section
-        .figures
-        .push(Figure::new(&tour.out, &picture, caption));
-    Ok(())
 }
 
 /// Photon mapping with many photons and a fixed search `radius` (little
@@ -576,15 +717,21 @@ fn photon_blur(
              {radius}: little noise, so the blur shows."
         ),
     ));
-    difference(
+    let error: Vec<f32> = image
+        .pixels
+        .iter()
+        .zip(&reference.mean.pixels)
+        .map(|(&a, &b)| luminance(a - b))
+        .collect();
+    signed_figure(
         tour,
         c,
         &format!("{name}-photon-error"),
-        &image,
-        &reference.mean,
-        options.spp,
+        &error,
+        (image.width, image.height),
         &format!(
-            "{name}, |photon mapping − {}| of the picture before: {what}.",
+            "{name}, photon mapping − {} for the picture before, in luminance (red: too bright, \
+             blue: too dark): {what}.",
             reference.name
         ),
     )
@@ -658,4 +805,49 @@ fn irradiance_records(
         ));
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The slides say how many seeds the default quality averages.
+    #[test]
+    fn the_slides_state_the_default_seed_count() {
+        let seeds = effort(Quality::Quick).seeds;
+        let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../../slides");
+        for (lang, phrase) in [
+            ("en", format!("The mean of {seeds} runs with independent seeds (at the default quality)")),
+            ("bg", format!("Средното от {seeds} рендерирания с независими seed-ове (при качеството по подразбиране)")),
+        ] {
+            let text = std::fs::read_to_string(format!("{root}/{lang}/09-biased.md")).unwrap();
+            assert!(text.contains(&phrase), "{lang}: `{phrase}` missing");
+            assert!(text.contains(&format!("√{seeds}")), "{lang}: √{seeds} missing");
+        }
+    }
+
+    /// The lamp and its one-pixel rim are left out; the rest counts.
+    #[test]
+    fn the_lamp_and_its_rim_are_not_counted() {
+        let reference = Image::from_fn(5, 4, |x, y| {
+            Color::splat(if (x, y) == (2, 1) { 18.6 } else { 0.5 })
+        });
+        let counted = off_the_light(&reference);
+        let at = |x: usize, y: usize| counted[y * 5 + x];
+        assert!(!at(2, 1) && !at(1, 0) && !at(3, 2) && !at(2, 2));
+        assert!(at(0, 0) && at(4, 1) && at(2, 3) && at(0, 3));
+        assert_eq!(counted.iter().filter(|&&c| !c).count(), 9);
+    }
+
+    #[test]
+    fn a_curve_flattens_when_doubling_the_work_no_longer_helps() {
+        let unbiased: Vec<(f64, f64)> = (0..6).map(|i| (2f64.powi(i), 2f64.powf(-i as f64 / 2.0))).collect();
+        assert!(!flattens(&unbiased), "t^-1/2 falls by 29% per doubling");
+        let biased: Vec<(f64, f64)> = (0..9)
+            .map(|i| (2f64.powi(i), (0.01 + 2f64.powi(-i)).sqrt()))
+            .collect();
+        assert!(flattens(&biased));
+        assert!(!flattens(&biased[..2]), "not yet at its floor");
+        assert!(!flattens(&[]));
+    }
 }

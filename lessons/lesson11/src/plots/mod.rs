@@ -4,8 +4,8 @@
 //! build time and every browser shows it, so the lesson's page stays
 //! self-contained. One plot is an image
 //! instead, because it lies over a rendered picture pixel for pixel: the tile
-//! z-map of two renders. Path figures are SVG drawn over a render, which they
-//! embed.
+//! z-map of two renders. Path figures, and signed pictures with their
+//! numbered colour bars, are SVG drawn over a picture, which they embed.
 
 mod bars;
 mod chart;
@@ -15,6 +15,7 @@ mod palette;
 mod path_figure;
 mod polar;
 mod series;
+mod signed_map;
 mod solid_angle;
 mod zmap;
 
@@ -25,5 +26,6 @@ pub use palette::Drawn;
 pub use path_figure::{Labels, in_picture, path_figure_svg, pick_sample};
 pub use polar::polar_svg;
 pub use series::Series;
+pub use signed_map::{round_scale, signed_map_svg};
 pub use solid_angle::{SolidAngle, solid_angle_svg};
 pub use zmap::zmap_image;

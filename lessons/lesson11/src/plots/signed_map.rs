@@ -1,0 +1,165 @@
+//! A signed picture with a numbered colour bar: an error or a bias image
+//! (chapter 9: where each biased algorithm's bias sits) painted in the
+//! diverging map of the z-map — blue below zero, grey at zero, red above —
+//! with the bar under it saying which colour is which value.
+//!
+//! The picture lies in the SVG as a PNG at its own pixels (a data URI, as
+//! the slides show SVG with `<img>`), drawn at a whole multiple of its size
+//! (twice at least, the drawing at least 256 units wide) without smoothing;
+//! the bar's numbers are SVG text 13 units high, so at least 13 px wherever
+//! the figure is shown at its drawing's size or more.
+
+use std::fmt::Write as _;
+
+use raytracer::film::Image;
+
+use super::data_uri::png_data_uri;
+use super::zmap::diverging;
+
+/// The least width of the drawing, in its units.
+const LEAST_WIDTH: u32 = 256;
+/// Height of the bar and of its labels, in drawing units.
+const BAR: u32 = 14;
+const FONT: u32 = 13;
+
+/// A round bound for a colour scale: the smallest of 1, 2, 5 × 10ⁿ at or
+/// above `v` (and 1 for a `v` that is not a positive number).
+pub fn round_scale(v: f64) -> f64 {
+    if !(v > 0.0 && v.is_finite()) {
+        return 1.0;
+    }
+    let mag = 10f64.powf(v.log10().floor());
+    [1.0, 2.0, 5.0, 10.0]
+        .iter()
+        .map(|m| m * mag)
+        .find(|&s| s >= v * (1.0 - 1e-12))
+        .unwrap_or(10.0 * mag)
+}
+
+/// A number as the bar prints it: `−0.05`, `0`, `+0.025`, with as few
+/// digits as the bar's ticks (at halves of `scale`) need.
+fn label(v: f64, scale: f64) -> String {
+    if v == 0.0 {
+        return "0".into();
+    }
+    // The fewest decimals that print a quarter of the scale exactly.
+    let digits = (0..12)
+        .find(|&d| {
+            let q = scale / 2.0 * 10f64.powi(d);
+            (q - q.round()).abs() < 1e-6 * q.max(1.0)
+        })
+        .unwrap_or(12) as usize;
+    let text = format!("{:.*}", digits, v.abs());
+    format!("{}{text}", if v < 0.0 { '−' } else { '+' })
+}
+
+/// The SVG of `values` (one signed number per pixel of a `width`×`height`
+/// picture, row by row) in colours spanning [−scale, scale], with a bar of
+/// five numbered ticks. An error, for pictures that cannot be encoded.
+pub fn signed_map_svg(
+    values: &[f32],
+    width: u32,
+    height: u32,
+    scale: f64,
+) -> std::io::Result<String> {
+    let s = scale as f32;
+    let image = Image::from_fn(width, height, |x, y| {
+        diverging(values[(y * width + x) as usize] / s)
+    });
+    let png = image.png_bytes(0.0)?;
+    let zoom = LEAST_WIDTH.div_ceil(width.max(1)).max(2);
+    let (w, h) = (width * zoom, height * zoom);
+    let margin = 3 * FONT;
+    let (bar_x, bar_w) = (margin, w - 2 * margin);
+    let bar_y = h + FONT / 2;
+    let total_h = bar_y + BAR + 6 + FONT + 4;
+    let mut svg = String::new();
+    let _ = writeln!(
+        svg,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{total_h}\" \
+         viewBox=\"0 0 {w} {total_h}\" font-family=\"sans-serif\" font-size=\"{FONT}\">\
+         <rect width=\"100%\" height=\"100%\" fill=\"white\"/>"
+    );
+    let _ = writeln!(
+        svg,
+        "<image width=\"{w}\" height=\"{h}\" preserveAspectRatio=\"none\" \
+         style=\"image-rendering:pixelated\" href=\"{}\"/>",
+        png_data_uri(&png)
+    );
+    // The bar: the map sampled at 21 stops, as the PNG writer encodes it.
+    let _ = write!(
+        svg,
+        "<defs><linearGradient id=\"bar\" x1=\"0\" x2=\"1\" y1=\"0\" y2=\"0\">"
+    );
+    for i in 0..=20 {
+        let t = i as f32 / 20.0;
+        let c = diverging(2.0 * t - 1.0);
+        let hex: Vec<String> = [c.x, c.y, c.z]
+            .iter()
+            .map(|&v| format!("{:02x}", raytracer::film::output::srgb8(v)))
+            .collect();
+        let _ = write!(
+            svg,
+            "<stop offset=\"{t}\" stop-color=\"#{}\"/>",
+            hex.concat()
+        );
+    }
+    let _ = writeln!(svg, "</linearGradient></defs>");
+    let _ = writeln!(
+        svg,
+        "<rect x=\"{bar_x}\" y=\"{bar_y}\" width=\"{bar_w}\" height=\"{BAR}\" fill=\"url(#bar)\" \
+         stroke=\"#333\" stroke-width=\"0.5\"/>"
+    );
+    for i in 0..5 {
+        let v = scale * (i as f64 / 2.0 - 1.0);
+        let x = bar_x as f64 + bar_w as f64 * i as f64 / 4.0;
+        let _ = writeln!(
+            svg,
+            "<line x1=\"{x:.1}\" x2=\"{x:.1}\" y1=\"{bar_y}\" y2=\"{}\" stroke=\"#111\"/>\
+             <text x=\"{x:.1}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
+            bar_y + BAR + 4,
+            bar_y + BAR + 4 + FONT,
+            label(v, scale)
+        );
+    }
+    svg.push_str("</svg>\n");
+    Ok(svg)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scales_are_round_and_at_least_the_value() {
+        assert_eq!(round_scale(0.03), 0.05);
+        assert_eq!(round_scale(0.05), 0.05);
+        assert_eq!(round_scale(0.11), 0.2);
+        assert_eq!(round_scale(7.0), 10.0);
+        assert_eq!(round_scale(0.0), 1.0);
+        assert_eq!(round_scale(f64::NAN), 1.0);
+    }
+
+    #[test]
+    fn the_bar_is_numbered_with_signs_and_zero() {
+        let svg = signed_map_svg(&[0.0, 0.1, -0.1, 0.05], 2, 2, 0.1).unwrap();
+        for text in [">−0.10<", ">−0.05<", ">0<", ">+0.05<", ">+0.10<"] {
+            assert!(svg.contains(text), "{text} missing");
+        }
+        assert!(svg.contains("data:image/png;base64,"));
+        assert!(
+            svg.contains("width=\"256\" height=\"256\""),
+            "drawn 256 wide"
+        );
+        let svg = signed_map_svg(&[0.0; 300 * 2], 300, 2, 0.1).unwrap();
+        assert!(
+            svg.contains("width=\"600\" height=\"4\""),
+            "at twice its size at least"
+        );
+        assert_eq!(label(0.2, 0.2), "+0.2");
+        assert_eq!(label(-0.002, 0.004), "−0.002");
+        assert_eq!(label(0.025, 0.05), "+0.025", "the half-scale tick exactly");
+        assert_eq!(label(0.05, 0.05), "+0.050");
+        assert_eq!(label(-5.0, 10.0), "−5");
+    }
+}
