@@ -62,16 +62,16 @@ fn metropolis<'a>(scene: &'a Scene, bdpt: &'a Bdpt, base: &'a RenderOptions) -> 
     })
 }
 
+/// What [`render_for`] measures: the image, its samples per pixel, its
+/// seconds and the convergence curve (seconds, RMSE).
+type Measured = (Image, u32, f64, Vec<(f64, f64)>);
+
 /// Renders with `run` for about `seconds`: renders of 1, 2, 4, … samples
 /// per pixel measure the time per sample and trace the error against
 /// `reference` as it falls (the convergence curve), then one render takes the
 /// samples that fit the budget (after the fixed part of the time). `None`
 /// if Ctrl-C cut a render short.
-fn render_for(
-    run: &Run,
-    seconds: f64,
-    reference: &Image,
-) -> Option<(Image, u32, f64, Vec<(f64, f64)>)> {
+fn render_for(run: &Run, seconds: f64, reference: &Image) -> Option<Measured> {
     let mut curve = Vec::new();
     let mut spp = 1;
     let (fixed, per_spp) = loop {

@@ -455,6 +455,73 @@ fn naive_recursion_states_its_rays_and_keeps_to_its_budget() {
     );
 }
 
+/// One work budget for every option that multiplies work (issue 26): each
+/// of these would trace 10¹⁰–10¹² rays, light paths or mutations, and is
+/// refused in one line naming what to lower and `--force` (before the
+/// budget they rendered for hours). Each refusal takes milliseconds.
+#[test]
+fn every_option_that_multiplies_work_keeps_to_the_budget() {
+    let cases: [(&str, &[&str], &str); 5] = [
+        (
+            "gather",
+            &[
+                "--integrator",
+                "photon",
+                "--final-gather",
+                "4294967295",
+                "--spp",
+                "1",
+            ],
+            "photon mapping's final gather would trace up to 2.06e11 rays",
+        ),
+        (
+            "ic-rays",
+            &[
+                "--integrator",
+                "irradiance-cache",
+                "--ic-rays",
+                "4294967295",
+            ],
+            "the irradiance cache would trace up to 2.06e11 rays",
+        ),
+        (
+            "sppm",
+            &[
+                "--integrator",
+                "sppm",
+                "--photons",
+                "1000000",
+                "--spp",
+                "100000",
+            ],
+            "SPPM would trace up to 1.00e11 light paths",
+        ),
+        (
+            "vpl",
+            &[
+                "--integrator",
+                "vpl",
+                "--vpl-paths",
+                "100000",
+                "--spp",
+                "100000",
+            ],
+            "instant radiosity would trace up to",
+        ),
+        (
+            "mlt",
+            &["--integrator", "mlt", "--spp", "300000000"],
+            "Metropolis light transport would trace up to 1.44e10 bidirectional paths",
+        ),
+    ];
+    for (name, options, expected) in cases {
+        let mut args = vec!["render"];
+        args.extend_from_slice(options);
+        args.extend(["--width", "8", "--height", "6", "--out", "out"]);
+        refused(&format!("budget-{name}"), &args, expected);
+    }
+}
+
 /// How long a stopped render may take to exit. After the stop request a
 /// worker finishes at most the sample (or batch of 1024 photon paths, or
 /// Metropolis step) it is in — none of the renders below has one longer
