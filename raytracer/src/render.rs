@@ -141,10 +141,17 @@ pub struct RenderResult {
 static INTERRUPTED: AtomicBool = AtomicBool::new(false);
 static HANDLER: Once = Once::new();
 
+/// What the first signal says (see [`on_interrupt_say`]).
+static INTERRUPT_MESSAGE: Mutex<&str> = Mutex::new(
+    "interrupted: stopping and keeping the samples computed so far (interrupt again to quit)",
+);
+
 /// Makes Ctrl-C (SIGINT), SIGTERM and SIGHUP request a clean stop of the
 /// running render (see [`interrupted`]): the samples computed so far are
 /// kept and written. A second signal exits the process at once with status
-/// 130 (files are written atomically, so none is left half-written).
+/// 130 (files are written atomically, so none is left half-written, and the
+/// temporaries of those being written are removed first:
+/// [`crate::film::output::exit_removing_staged_files`]).
 /// Calling it again does nothing. If the handler cannot be installed (another
 /// one exists), a warning is printed and the signals keep their default effect.
 pub fn install_interrupt_handler() {
@@ -152,16 +159,26 @@ pub fn install_interrupt_handler() {
         let installed = ctrlc::set_handler(|| {
             if INTERRUPTED.swap(true, Ordering::SeqCst) {
                 eprintln!("\ninterrupted twice: exiting without writing");
-                std::process::exit(130);
+                crate::film::output::exit_removing_staged_files(130);
             }
-            eprintln!(
-                "\ninterrupted: stopping and keeping the samples computed so far (interrupt again to quit)"
-            );
+            let message = *INTERRUPT_MESSAGE
+                .lock()
+                .unwrap_or_else(|poisoned| poisoned.into_inner());
+            eprintln!("\n{message}");
         });
         if let Err(e) = installed {
             eprintln!("warning: cannot install the Ctrl-C handler: {e}");
         }
     });
+}
+
+/// Makes the first Ctrl-C say `message` instead of the render's "keeping
+/// the samples computed so far" (a command that renders nothing, such as
+/// watching files, says what a stop means for it).
+pub fn on_interrupt_say(message: &'static str) {
+    *INTERRUPT_MESSAGE
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner()) = message;
 }
 
 /// True once Ctrl-C (or [`request_interrupt`]) asked renders to stop.

@@ -9,7 +9,7 @@
 //! build for no gain here.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::process::{Command, Output, Stdio};
 use std::time::{Duration, SystemTime};
 
 use exercises::Exercise;
@@ -89,9 +89,54 @@ pub fn verdict(stdout: &[u8], stderr: &[u8]) -> String {
     )
 }
 
-/// Watches `exercises/src/` until interrupted: grades everything once, then
-/// the exercise of each file saved.
-pub fn run() -> std::io::Result<()> {
+/// Runs `cmd` to its end and returns its output, or `None` as soon as
+/// `stop()` says so (the command is then killed): a grading run can take
+/// minutes when it rebuilds the student's code.
+fn output_unless(mut cmd: Command, stop: &dyn Fn() -> bool) -> std::io::Result<Option<Output>> {
+    let mut child = cmd
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()?;
+    // Read both pipes all along, so that the command never blocks on them
+    // (on threads of their own: a killed cargo's compilers may hold the
+    // pipes open a while, and a stop does not wait for them).
+    let read = |pipe: Option<Box<dyn std::io::Read + Send>>| {
+        std::thread::spawn(move || {
+            let mut bytes = Vec::new();
+            if let Some(mut pipe) = pipe {
+                let _ = pipe.read_to_end(&mut bytes);
+            }
+            bytes
+        })
+    };
+    let stdout = read(child.stdout.take().map(|p| Box::new(p) as _));
+    let stderr = read(child.stderr.take().map(|p| Box::new(p) as _));
+    let status = loop {
+        if stop() {
+            let _ = child.kill();
+            let _ = child.wait();
+            return Ok(None);
+        }
+        if let Some(status) = child.try_wait()? {
+            break status;
+        }
+        std::thread::sleep(STOP_POLL);
+    };
+    Ok(Some(Output {
+        status,
+        stdout: stdout.join().unwrap_or_default(),
+        stderr: stderr.join().unwrap_or_default(),
+    }))
+}
+
+/// How often a wait asks whether to stop.
+const STOP_POLL: Duration = Duration::from_millis(20);
+
+/// Watches `exercises/src/`: grades everything once, then the exercise of
+/// each file saved, until `stop()` says so (it is asked every
+/// [`STOP_POLL`], during a grading run too, which is then killed).
+pub fn run(stop: &dyn Fn() -> bool) -> std::io::Result<()> {
     let root = crate::texts::repo_root();
     let registry = exercises::registry();
     let files: Vec<PathBuf> = registry
@@ -100,14 +145,21 @@ pub fn run() -> std::io::Result<()> {
         .collect();
     let mut watcher = Watcher::new(files);
     println!("Grading every exercise once…");
-    let out = grade_command(&root, "").output()?;
+    let Some(out) = output_unless(grade_command(&root, ""), stop)? else {
+        return Ok(());
+    };
     println!("{}", verdict(&out.stdout, &out.stderr));
     loop {
         println!(
             "\nWatching exercises/src/ — save an exercise's file to grade it again (Ctrl-C to stop)."
         );
         let exercise = loop {
-            std::thread::sleep(POLL);
+            for _ in 0..POLL.as_millis() / STOP_POLL.as_millis() {
+                if stop() {
+                    return Ok(());
+                }
+                std::thread::sleep(STOP_POLL);
+            }
             if let Some(e) = watcher
                 .changed()
                 .iter()
@@ -122,7 +174,9 @@ pub fn run() -> std::io::Result<()> {
             exercise.file,
             exercise.number().unwrap_or(0)
         );
-        let out = grade_command(&root, &exercise.name).output()?;
+        let Some(out) = output_unless(grade_command(&root, &exercise.name), stop)? else {
+            return Ok(());
+        };
         println!("{}", verdict(&out.stdout, &out.stderr));
         // Saves made while grading belong to this run.
         watcher.changed();

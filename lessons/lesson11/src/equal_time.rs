@@ -15,8 +15,9 @@ use crate::reference::Reference;
 
 /// How one algorithm renders: `spp` samples (mutations, for Metropolis) per
 /// pixel in; the image, its seconds, and the part of them that does not grow
-/// with `spp` (Metropolis's bootstrap) out.
-type Run<'a> = Box<dyn Fn(u32) -> (Image, f64, f64) + 'a>;
+/// with `spp` (Metropolis's bootstrap) out, or `None` if Ctrl-C cut the
+/// render short (its time measures nothing).
+type Run<'a> = Box<dyn Fn(u32) -> Option<(Image, f64, f64)> + 'a>;
 
 /// An integrator rendered by the pixel loop.
 fn pixels<'a>(
@@ -31,11 +32,13 @@ fn pixels<'a>(
             ..base.clone()
         };
         let result = render(scene, integrator, &options);
-        (
-            result.film.image(),
-            result.stats.elapsed.as_secs_f64().max(1e-6),
-            0.0,
-        )
+        (!result.stats.interrupted).then(|| {
+            (
+                result.film.image(),
+                result.stats.elapsed.as_secs_f64().max(1e-6),
+                0.0,
+            )
+        })
     })
 }
 
@@ -49,23 +52,30 @@ fn metropolis<'a>(scene: &'a Scene, bdpt: &'a Bdpt, base: &'a RenderOptions) -> 
             ..base.clone()
         };
         let result = render_metropolis(scene, bdpt, &options, &Metropolis::default());
-        (
-            result.film.image(),
-            result.stats.elapsed.as_secs_f64().max(1e-6),
-            result.bootstrap_seconds,
-        )
+        (!result.stats.interrupted).then(|| {
+            (
+                result.film.image(),
+                result.stats.elapsed.as_secs_f64().max(1e-6),
+                result.bootstrap_seconds,
+            )
+        })
     })
 }
+
+/// What [`render_for`] measures: the image, its samples per pixel, its
+/// seconds and the convergence curve (seconds, RMSE).
+type Measured = (Image, u32, f64, Vec<(f64, f64)>);
 
 /// Renders with `run` for about `seconds`: renders of 1, 2, 4, … samples
 /// per pixel measure the time per sample and trace the error against
 /// `reference` as it falls (the convergence curve), then one render takes the
-/// samples that fit the budget (after the fixed part of the time).
-fn render_for(run: &Run, seconds: f64, reference: &Image) -> (Image, u32, f64, Vec<(f64, f64)>) {
+/// samples that fit the budget (after the fixed part of the time). `None`
+/// if Ctrl-C cut a render short.
+fn render_for(run: &Run, seconds: f64, reference: &Image) -> Option<Measured> {
     let mut curve = Vec::new();
     let mut spp = 1;
     let (fixed, per_spp) = loop {
-        let (image, secs, fixed) = run(spp);
+        let (image, secs, fixed) = run(spp)?;
         curve.push((secs, rmse(&image, reference) as f64));
         if secs * 2.0 > seconds / 2.0 || spp >= 1 << 15 {
             let fixed = fixed.clamp(0.0, secs / 2.0);
@@ -74,10 +84,10 @@ fn render_for(run: &Run, seconds: f64, reference: &Image) -> (Image, u32, f64, V
         spp *= 2;
     };
     let spp = (((seconds - fixed) / per_spp) as u32).clamp(1, 1 << 16);
-    let (image, secs, _) = run(spp);
+    let (image, secs, _) = run(spp)?;
     curve.push((secs, rmse(&image, reference) as f64));
     curve.sort_by(|a, b| a.0.total_cmp(&b.0));
-    (image, spp, secs, curve)
+    Some((image, spp, secs, curve))
 }
 
 /// One row of an equal-time comparison.
@@ -112,7 +122,8 @@ pub struct Also {
 /// own samples are never part of it. Naive recursion (N = 4 down to the
 /// roulette's depth, then one ray per hit, ended by roulette) and
 /// Metropolis light transport (over the same bidirectional tracer) join the
-/// comparison as `also` says.
+/// comparison as `also` says. Ctrl-C ends the comparison: the rows are
+/// those measured before it, and no row is printed for what it cut short.
 pub fn equal_time(
     scene: &Scene,
     base: &RenderOptions,
@@ -169,7 +180,9 @@ pub fn equal_time(
     }
     let mut rows = Vec::new();
     for (algorithm, name, run) in algorithms {
-        let (image, spp, seconds, curve) = render_for(&run, budget, &reference.mean);
+        let Some((image, spp, seconds, curve)) = render_for(&run, budget, &reference.mean) else {
+            break;
+        };
         let rmse = rmse(&image, &reference.mean);
         crate::console::say!(
             "  {:14} {algorithm:34} {spp:6} spp {seconds:7.2} s  RMSE {rmse:.4}",

@@ -8,8 +8,8 @@
 //! Every option is checked before anything is rendered
 //! ([`IntegratorKind::plan`]): an option the chosen integrator does not use
 //! is an error, not silently ignored, and naive recursion states its
-//! worst-case ray count and refuses more than [`RAY_BUDGET`] rays without
-//! `--force`. What takes long (photon maps, VPLs, irradiance records) is
+//! worst-case ray count. Every option that multiplies work keeps to one
+//! budget ([`crate::options::check_work`]) unless `--force`. What takes long (photon maps, VPLs, irradiance records) is
 //! built afterwards ([`IntegratorPlan::build`]) and can be stopped.
 
 mod biased;
@@ -29,7 +29,7 @@ use raytracer::render::{Metropolis, RenderOptions, interrupt_flag, memory_needed
 use raytracer::scene::{Scene, max_depth_from};
 
 use crate::metropolis::MetropolisArgs;
-use crate::options::check_memory;
+use crate::options::{check_memory, check_work};
 
 /// The integrators this build offers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -62,11 +62,6 @@ pub enum IntegratorKind {
     /// Irradiance caching (biased): indirect irradiance at a few records, interpolated (Ward).
     IrradianceCache,
 }
-
-/// The most rays a naive recursive render may trace without `--force`, in
-/// the worst case (every ray hits, nothing ends early): 10¹⁰, some minutes
-/// on two cores.
-pub const RAY_BUDGET: f64 = 1e10;
 
 /// The max depth of naive recursion when neither the command line nor the
 /// scene gives a finite one (an unlimited one must be asked for with
@@ -157,13 +152,15 @@ impl IntegratorKind {
                 strategy_images: None,
             }),
             IntegratorKind::Sppm => {
-                return Ok(IntegratorPlan::Sppm(biased::sppm_plan(
-                    &args.biased,
-                    scene,
-                    max_depth,
-                    rr_depth,
+                let settings = biased::sppm_plan(&args.biased, scene, max_depth, rr_depth, force)?;
+                check_work(
+                    "SPPM",
+                    settings.photons as f64 * options.spp as f64,
+                    "light paths",
+                    "--photons (per pass) or --spp (passes)",
                     force,
-                )?));
+                )?;
+                return Ok(IntegratorPlan::Sppm(settings));
             }
             IntegratorKind::Mlt
             | IntegratorKind::Photon
@@ -172,7 +169,7 @@ impl IntegratorKind {
                 let Some(kind) = self.biased() else {
                     bail!("{self:?} is not a biased integrator")
                 };
-                return Ok(IntegratorPlan::Biased(biased::plan(
+                let plan = biased::plan(
                     kind,
                     &args.biased,
                     scene,
@@ -180,7 +177,9 @@ impl IntegratorKind {
                     max_depth,
                     rr_depth,
                     force,
-                )?));
+                )?;
+                plan.check_work(scene, options.spp, force)?;
+                return Ok(IntegratorPlan::Biased(plan));
             }
         }))
     }
@@ -243,7 +242,7 @@ impl IntegratorKind {
 }
 
 /// Prints the worst-case ray count of a naive recursive render and refuses
-/// more than [`RAY_BUDGET`] rays unless `force`.
+/// more than the work budget unless `force`.
 fn check_ray_budget(
     naive: &NaiveRecursive,
     scene: &Scene,
@@ -280,13 +279,13 @@ fn check_ray_budget(
         scene.camera.height,
         options.spp
     );
-    if total > RAY_BUDGET && !force {
-        bail!(
-            "naive recursion would trace up to {total:.2e} rays, more than the budget of {RAY_BUDGET:.0e}: \
-             lower --branching, --max-depth, --spp or the image size, or pass --force"
-        );
-    }
-    Ok(())
+    check_work(
+        "naive recursion",
+        total,
+        "rays",
+        "--branching, --max-depth, --spp or the image size",
+        force,
+    )
 }
 
 /// Options of the integrators.
@@ -445,6 +444,14 @@ impl IntegratorArgs {
             ),
             bytes,
             "--width and --height, --bootstrap or --threads",
+            force,
+        )?;
+        // Each mutation and each bootstrap path is one bidirectional sample.
+        check_work(
+            "Metropolis light transport",
+            options.spp as f64 * pixels as f64 + metropolis.bootstrap_paths(w, h) as f64,
+            "bidirectional paths (mutations and bootstrap)",
+            "--spp, --bootstrap or the image size",
             force,
         )?;
         Ok((bdpt, metropolis))

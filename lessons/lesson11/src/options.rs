@@ -40,7 +40,7 @@ pub struct SceneArgs {
     #[arg(long, default_value = "out/lesson11")]
     pub out: PathBuf,
     /// Go ahead although the render needs more memory than the cap (half of the physical
-    /// memory) or naive recursion more rays than its budget.
+    /// memory) or more work than the budget (1e10 rays, light paths or mutations at worst).
     #[arg(long)]
     pub force: bool,
 }
@@ -109,6 +109,27 @@ pub fn check_threads(threads: Option<usize>) -> Result<()> {
         ),
         _ => Ok(()),
     }
+}
+
+/// The most work a command line may ask for without `--force`: 10¹⁰ rays
+/// (or light paths, or Metropolis mutations) in the worst case, some
+/// minutes on two cores. One rule for every option that multiplies work
+/// ([`check_work`]): naive recursion's branching, photon mapping's photons
+/// and final gather, SPPM's photons per pass, the VPLs' shadow rays, the
+/// irradiance cache's rays, Metropolis's mutations and bootstrap.
+pub const WORK_BUDGET: f64 = 1e10;
+
+/// Refuses, in one line naming the options to lower, `what` if it would
+/// trace more than [`WORK_BUDGET`] `units` ("rays", "light paths") at
+/// worst, unless `force`.
+pub fn check_work(what: &str, count: f64, units: &str, options: &str, force: bool) -> Result<()> {
+    if count > WORK_BUDGET && !force {
+        bail!(
+            "{what} would trace up to {count:.2e} {units}, more than the budget of \
+             {WORK_BUDGET:.0e}: lower {options}, or pass --force"
+        );
+    }
+    Ok(())
 }
 
 /// Refuses, in one line naming the options to change, what needs more memory

@@ -5,12 +5,18 @@
 //! temporary files first and only then renamed over the old ones (see
 //! `raytracer::film::output`), so a full disk, a kill or an error leaves the
 //! previous picture whole.
+//!
+//! A picture an interrupted render wrote has a note beside it,
+//! `stem.png.partial` ([`partial_note`]), saying how much of the render it
+//! holds ("0.56 of 64 spp on average"); the next complete render of the
+//! picture removes it, and `lesson11 slides` renders such pictures again
+//! rather than show them as finished.
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use anyhow::Result;
-use raytracer::film::output::commit_all;
+use raytracer::film::output::{StagedFile, commit_all};
 use raytracer::film::{Film, Image};
 use raytracer::integrator::Integrator;
 use raytracer::render::{RenderOptions, RenderStats, render};
@@ -96,14 +102,37 @@ impl OutputFiles {
             anyhow::bail!("interrupted before any sample was computed");
         }
         let image = film.image();
+        let note = partial_note(png);
+        // An interrupted render's note goes in place first: a kill between
+        // the renames leaves a finished picture marked partial, never the
+        // other way round.
+        let partial = stats.interrupted.then(|| {
+            let pixels = film.width() as f64 * film.height() as f64;
+            let mean = film.total_samples() as f64 / pixels.max(1.0);
+            StagedFile::write(&note, "note", |w| {
+                use std::io::Write;
+                writeln!(w, "{mean:.2} of {spp} spp on average (interrupted)")
+            })
+        });
         let staged = [
             image.stage_exr(exr),
             film.variance_image().stage_exr(&self.variance),
             image.stage_png(png, exposure),
         ];
         // All written before any is renamed: an error leaves the old three.
-        let staged = staged.into_iter().collect::<std::io::Result<Vec<_>>>()?;
+        let staged = partial
+            .into_iter()
+            .chain(staged)
+            .collect::<std::io::Result<Vec<_>>>()?;
         commit_all(staged)?;
+        if !stats.interrupted {
+            match std::fs::remove_file(&note) {
+                Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+                    anyhow::bail!("cannot remove {}: {e}", note.display())
+                }
+                _ => {}
+            }
+        }
         let seconds = stats.elapsed.as_secs_f64();
         if stats.nonfinite > 0 {
             crate::console::say!(
@@ -131,6 +160,14 @@ impl OutputFiles {
             seconds: Some(seconds),
         })
     }
+}
+
+/// The note beside `png` that says it holds an interrupted render
+/// (`png` with `.partial` appended; see the module doc).
+pub fn partial_note(png: &Path) -> PathBuf {
+    let mut name = png.as_os_str().to_owned();
+    name.push(".partial");
+    PathBuf::from(name)
 }
 
 /// What an interrupted render computed: its samples, their average per
@@ -218,4 +255,38 @@ pub fn write_image(
         exposure,
         seconds,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use raytracer::math::{Color, UVec2};
+
+    /// An interrupted render's picture gets its note ("how much"), and a
+    /// complete render of the same picture removes it (issue 26: `slides`
+    /// showed a 36-of-64-spp picture as finished).
+    #[test]
+    fn an_interrupted_picture_is_marked_until_rendered_whole() {
+        let dir = std::env::temp_dir().join(format!("lesson11-partial-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let files = OutputFiles::new(&dir, "p").unwrap();
+        let mut film = Film::new(2, 1);
+        film.add_sample(UVec2::new(0, 0), Color::ONE);
+        let mut stats = RenderStats {
+            elapsed: std::time::Duration::from_millis(5),
+            samples: 1,
+            interrupted: true,
+            nonfinite: 0,
+        };
+        let note = partial_note(&dir.join("p.png"));
+        assert!(files.write(&film, &stats, 64, 0.0, String::new).is_err());
+        assert_eq!(
+            std::fs::read_to_string(&note).unwrap(),
+            "0.50 of 64 spp on average (interrupted)\n"
+        );
+        stats.interrupted = false;
+        files.write(&film, &stats, 64, 0.0, String::new).unwrap();
+        assert!(!note.exists() && dir.join("p.png").is_file());
+        std::fs::remove_dir_all(&dir).ok();
+    }
 }

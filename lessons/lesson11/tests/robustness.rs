@@ -455,6 +455,73 @@ fn naive_recursion_states_its_rays_and_keeps_to_its_budget() {
     );
 }
 
+/// One work budget for every option that multiplies work (issue 26): each
+/// of these would trace 10¹⁰–10¹² rays, light paths or mutations, and is
+/// refused in one line naming what to lower and `--force` (before the
+/// budget they rendered for hours). Each refusal takes milliseconds.
+#[test]
+fn every_option_that_multiplies_work_keeps_to_the_budget() {
+    let cases: [(&str, &[&str], &str); 5] = [
+        (
+            "gather",
+            &[
+                "--integrator",
+                "photon",
+                "--final-gather",
+                "4294967295",
+                "--spp",
+                "1",
+            ],
+            "photon mapping's final gather would trace up to 2.06e11 rays",
+        ),
+        (
+            "ic-rays",
+            &[
+                "--integrator",
+                "irradiance-cache",
+                "--ic-rays",
+                "4294967295",
+            ],
+            "the irradiance cache would trace up to 2.06e11 rays",
+        ),
+        (
+            "sppm",
+            &[
+                "--integrator",
+                "sppm",
+                "--photons",
+                "1000000",
+                "--spp",
+                "100000",
+            ],
+            "SPPM would trace up to 1.00e11 light paths",
+        ),
+        (
+            "vpl",
+            &[
+                "--integrator",
+                "vpl",
+                "--vpl-paths",
+                "100000",
+                "--spp",
+                "100000",
+            ],
+            "instant radiosity would trace up to",
+        ),
+        (
+            "mlt",
+            &["--integrator", "mlt", "--spp", "300000000"],
+            "Metropolis light transport would trace up to 1.44e10 bidirectional paths",
+        ),
+    ];
+    for (name, options, expected) in cases {
+        let mut args = vec!["render"];
+        args.extend_from_slice(options);
+        args.extend(["--width", "8", "--height", "6", "--out", "out"]);
+        refused(&format!("budget-{name}"), &args, expected);
+    }
+}
+
 /// How long a stopped render may take to exit. After the stop request a
 /// worker finishes at most the sample (or batch of 1024 photon paths, or
 /// Metropolis step) it is in — none of the renders below has one longer
@@ -649,9 +716,16 @@ fn ctrl_c_stops_every_integrator_and_keeps_its_work() {
                 at_least: 1,
             },
             others: &[".exr"],
-            ..case("sppm", vec!["--photons", "20000"], "16", "1000000")
+            // --force: 2e10 photon paths, past the work budget.
+            ..case(
+                "sppm",
+                vec!["--photons", "20000", "--force"],
+                "16",
+                "1000000",
+            )
         },
-        case("vpl", vec!["--vpl-paths", "300"], "8", "1000000"),
+        // --force: 5.8e10 shadow rays, past the work budget.
+        case("vpl", vec!["--vpl-paths", "300", "--force"], "8", "1000000"),
         case("irradiance-cache", vec![], "32", "1000000"),
         case("direct", vec![], "64", "10000000"),
         case("ao", vec![], "64", "10000000"),
@@ -720,6 +794,356 @@ fn ctrl_c_stops_every_integrator_and_keeps_its_work() {
     });
     let failures = failures.into_inner().unwrap();
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+}
+
+/// The slow phases that one unit of work (a sample, a record) made deaf to
+/// Ctrl-C (issue 26), each on settings past the work budget (`--force`) so
+/// that one unit alone would take minutes: a final gather of 10⁸ rays per
+/// sample, naive recursion of 2³² branches per hit, an irradiance record
+/// of 2³² − 1 rays (and of 10⁸ stratified rays, with gradients), and
+/// `bench` in its ray part and in a table of renders. Each is signalled
+/// once it printed the line that starts the phase and then used 0.3 s of
+/// CPU (startup, the scene and the photon maps take < 0.1 s of it
+/// otherwise: the CPU is the phase's); each must exit within
+/// [`STOP_BOUND`] with exit code 1 and an error saying it was interrupted.
+/// Before the fix each phase ran on for minutes (the unit's length, at
+/// the rates measured here), so the bound proves the stop. Two at a time,
+/// about 1 s each.
+#[cfg(target_os = "linux")]
+#[test]
+fn ctrl_c_stops_every_slow_phase() {
+    if !terminal::available() {
+        println!("skipped: no util-linux `script` for a terminal");
+        return;
+    }
+    let ready = |line| Ready::StdoutThenCpu { line, cpu: 0.3 };
+    let tiny = |extra: &[&'static str]| {
+        let mut a = vec!["render"];
+        a.extend_from_slice(extra);
+        a.extend([
+            "--width", "8", "--height", "8", "--spp", "1", "--force", "--out", "out",
+        ]);
+        a
+    };
+    let cases: Vec<(&str, Vec<&str>, Ready<'static>)> = vec![
+        (
+            "final gather",
+            tiny(&["--integrator", "photon", "--final-gather", "100000000"]),
+            ready("photon maps:"),
+        ),
+        (
+            "naive recursion",
+            tiny(&[
+                "--integrator",
+                "naive",
+                "--branching",
+                "4294967295",
+                "--max-depth",
+                "2",
+            ]),
+            ready("rays per sample"),
+        ),
+        (
+            "irradiance record",
+            tiny(&[
+                "--integrator",
+                "irradiance-cache",
+                "--ic-rays",
+                "4294967295",
+            ]),
+            // Nothing is printed before the cache is built.
+            ready(""),
+        ),
+        (
+            "irradiance record with gradients",
+            tiny(&[
+                "--integrator",
+                "irradiance-cache",
+                "--ic-gradients",
+                "--ic-rays",
+                "100000000",
+            ]),
+            ready(""),
+        ),
+        (
+            "bench's rays",
+            vec!["bench", "--threads", "1"],
+            ready("ray throughput"),
+        ),
+        (
+            "bench's renders",
+            vec![
+                "bench",
+                "--threads",
+                "1",
+                "--no-rays",
+                "--no-biased",
+                "--equal-time",
+                "0",
+                "--spp",
+                "1000000",
+            ],
+            ready("M samples/s"),
+        ),
+    ];
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let failures = std::sync::Mutex::new(Vec::new());
+    let one = |(name, args, ready): &(&str, Vec<&str>, Ready)| {
+        let dir = fresh(&format!("phase-{}", name.replace([' ', '\''], "-")));
+        let o = terminal::signalled(EXE, &dir, args, *ready, "-INT", READY_PATIENCE);
+        let mut problems = Vec::new();
+        if o.seconds >= STOP_BOUND {
+            problems.push(format!("took {:.2} s to stop", o.seconds));
+        }
+        if o.status.code() != Some(1) {
+            problems.push(format!("exit status {:?}", o.status));
+        }
+        let last = o.stderr.trim_end().lines().last().unwrap_or_default();
+        if !last.starts_with("error: interrupted") {
+            problems.push(format!("last line {last:?}"));
+        }
+        // An interrupted bench prints no figure it did not measure: the
+        // table's header is its last line.
+        if name == &"bench's renders" && !o.stdout.trim_end().ends_with("M samples/s") {
+            problems.push("a row after the stop".into());
+        }
+        println!("{name}: stopped in {:.3} s", o.seconds);
+        if !problems.is_empty() {
+            failures.lock().unwrap().push(format!(
+                "{name}: {}\nstdout: {}\nterminal: {}",
+                problems.join("; "),
+                o.stdout,
+                o.stderr
+            ));
+        }
+        std::fs::remove_dir_all(&dir).ok();
+    };
+    std::thread::scope(|s| {
+        for _ in 0..2 {
+            s.spawn(|| {
+                while let Some(case) =
+                    cases.get(next.fetch_add(1, std::sync::atomic::Ordering::Relaxed))
+                {
+                    one(case);
+                }
+            });
+        }
+    });
+    let failures = failures.into_inner().unwrap();
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+}
+
+/// `lesson11 args` in `dir` with `env` set, its stdout and stderr in
+/// `dir/stdout.txt` and `dir/stderr.txt` (no terminal).
+fn start(dir: &Path, args: &[&str], env: &[(&str, &Path)]) -> std::process::Child {
+    let file = |name: &str| std::fs::File::create(dir.join(name)).unwrap();
+    Command::new(EXE)
+        .args(args)
+        .envs(env.iter().copied())
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .stdout(file("stdout.txt"))
+        .stderr(file("stderr.txt"))
+        .spawn()
+        .expect("lesson11 runs")
+}
+
+/// Waits (at most [`READY_PATIENCE`]) until `ready()`, panicking with what
+/// the program printed if it exits or never gets there.
+fn wait_until(child: &mut std::process::Child, dir: &Path, ready: impl Fn() -> bool) {
+    let start = Instant::now();
+    while !ready() {
+        let exited = child.try_wait().unwrap().is_some();
+        if exited || start.elapsed() > READY_PATIENCE {
+            let _ = child.kill();
+            let _ = child.wait();
+            let read = |f| std::fs::read_to_string(dir.join(f)).unwrap_or_default();
+            panic!(
+                "not ready{}\nstdout: {}\nstderr: {}",
+                if exited { ", it exited" } else { "" },
+                read("stdout.txt"),
+                read("stderr.txt")
+            );
+        }
+        std::thread::sleep(Duration::from_millis(2));
+    }
+}
+
+/// Sends `signal` to `child` and waits for its exit, at most 3 × [`STOP_BOUND`]
+/// (then it is killed): its status, `None` if it had to be killed, and the
+/// seconds it took.
+fn signal_and_wait(
+    child: &mut std::process::Child,
+    signal: &str,
+) -> (Option<std::process::ExitStatus>, f64) {
+    let sent = Instant::now();
+    let kill = Command::new("kill")
+        .args([signal, &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(kill.success());
+    loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            return (Some(status), sent.elapsed().as_secs_f64());
+        }
+        if sent.elapsed().as_secs_f64() > 3.0 * STOP_BOUND {
+            let _ = child.kill();
+            let _ = child.wait();
+            return (None, sent.elapsed().as_secs_f64());
+        }
+        std::thread::sleep(Duration::from_millis(2));
+    }
+}
+
+/// `bench --mitsuba PEER` with a peer that hangs (it writes its pid and
+/// sleeps for 1000 s): Ctrl-C, sent once the peer runs, ends the bench
+/// within [`STOP_BOUND`] with exit code 1, and the peer is killed. Before
+/// the fix the bench waited for the peer, deaf to Ctrl-C, so only the
+/// peer's 1000 s could end it. The Cornell renders before it are 1 spp
+/// (< 1 s).
+#[cfg(unix)]
+#[test]
+fn ctrl_c_stops_a_bench_waiting_for_its_peer() {
+    let dir = fresh("hanging-peer");
+    let peer = dir.join("peer.sh");
+    std::fs::write(&peer, "#!/bin/sh\necho $$ > peer.pid\nexec sleep 1000\n").unwrap();
+    let chmod = Command::new("chmod").args(["+x"]).arg(&peer).status();
+    assert!(chmod.unwrap().success());
+    let args = [
+        "bench",
+        "--threads",
+        "1",
+        "--no-rays",
+        "--no-biased",
+        "--equal-time",
+        "0",
+        "--spp",
+        "1",
+        "--mitsuba",
+        peer.to_str().unwrap(),
+    ];
+    let mut child = start(&dir, &args, &[]);
+    let pid_file = dir.join("peer.pid");
+    wait_until(&mut child, &dir, || {
+        std::fs::read_to_string(&pid_file).is_ok_and(|p| p.ends_with('\n'))
+    });
+    let peer_pid = std::fs::read_to_string(&pid_file)
+        .unwrap()
+        .trim()
+        .to_string();
+    let (status, seconds) = signal_and_wait(&mut child, "-INT");
+    // The peer is gone (killed and reaped), whatever the outcome.
+    let alive = Path::new(&format!("/proc/{peer_pid}")).exists();
+    let _ = Command::new("kill").args(["-KILL", &peer_pid]).output();
+    let stderr = std::fs::read_to_string(dir.join("stderr.txt")).unwrap();
+    assert!(seconds < STOP_BOUND, "took {seconds:.2} s: {stderr}");
+    assert_eq!(status.and_then(|s| s.code()), Some(1), "{stderr}");
+    assert!(
+        stderr
+            .trim_end()
+            .ends_with("error: interrupted: the figures above are all that was measured"),
+        "{stderr}"
+    );
+    assert!(!alive, "the peer {peer_pid} still runs");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `exercises --watch` ends on Ctrl-C at once, with exit code 0 and its
+/// own word, not the renderer's "keeping the samples". Grading is a fake
+/// cargo (`CARGO`, which the watch runs) that answers at once, so the
+/// watch is under way within moments; it then polls for saves every
+/// 0.3 s. Before the fix it went on watching for ever.
+#[cfg(unix)]
+#[test]
+fn ctrl_c_ends_the_exercise_watch() {
+    let dir = fresh("watch");
+    let cargo = dir.join("cargo.sh");
+    std::fs::write(&cargo, "#!/bin/sh\necho 'Exercise 1 - a fake grade'\n").unwrap();
+    let chmod = Command::new("chmod").args(["+x"]).arg(&cargo).status();
+    assert!(chmod.unwrap().success());
+    let mut child = start(&dir, &["exercises", "--watch"], &[("CARGO", &cargo)]);
+    let stdout = dir.join("stdout.txt");
+    wait_until(&mut child, &dir, || {
+        std::fs::read_to_string(&stdout).is_ok_and(|o| o.contains("Watching exercises/src/"))
+    });
+    let (status, seconds) = signal_and_wait(&mut child, "-INT");
+    let stderr = std::fs::read_to_string(dir.join("stderr.txt")).unwrap();
+    assert!(seconds < STOP_BOUND, "took {seconds:.2} s: {stderr}");
+    assert_eq!(status.and_then(|s| s.code()), Some(0), "{stderr}");
+    assert_eq!(stderr.trim(), "stopped watching exercises/src/");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A second Ctrl-C while a render writes its files (ao at 1024×1024: two
+/// EXRs of ~12 MB and a PNG, written for ~0.2 s) quits at once, exit code
+/// 130, and leaves none of its hidden `.tmp` files. The first signal comes
+/// once the render has used 0.3 s of CPU; the second as soon as a
+/// temporary file appears (polled every 0.2 ms). Should the files be
+/// written before the poll sees one (the process then exits 1 on its own),
+/// the case is run again, up to 4 times: at least one second signal must
+/// strike while writing (two misses in a row would need this thread to wait
+/// ~0.2 s for a core twice). Before the fix the temporaries stayed.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_second_ctrl_c_while_writing_leaves_no_temporary_file() {
+    let mut struck = 0;
+    for attempt in 0..4 {
+        let dir = fresh(&format!("second-ctrl-c-{attempt}"));
+        let args = [
+            "render",
+            "--integrator",
+            "ao",
+            "--width",
+            "1024",
+            "--height",
+            "1024",
+            "--spp",
+            "1000000",
+            "--out",
+            "out",
+        ];
+        let mut child = start(&dir, &args, &[]);
+        let pid = child.id();
+        wait_until(&mut child, &dir, || {
+            terminal::cpu_seconds(pid).is_some_and(|c| c >= 0.3)
+        });
+        let kill = |signal: &str| {
+            Command::new("kill")
+                .args([signal, &pid.to_string()])
+                .status()
+                .unwrap()
+        };
+        assert!(kill("-INT").success());
+        let out = dir.join("out");
+        let sent = Instant::now();
+        let mut seen = false;
+        while child.try_wait().unwrap().is_none() && sent.elapsed().as_secs_f64() < STOP_BOUND {
+            if out.is_dir() && !temps_of(&out, pid).is_empty() {
+                seen = true;
+                break;
+            }
+            std::thread::sleep(Duration::from_micros(200));
+        }
+        if seen {
+            let (status, seconds) = signal_and_wait(&mut child, "-INT");
+            assert!(seconds < STOP_BOUND, "took {seconds:.2} s");
+            if status.and_then(|s| s.code()) == Some(130) {
+                struck += 1;
+                assert_eq!(temps_of(&out, pid), vec![], "temporary files left");
+            }
+        } else {
+            let _ = child.kill();
+        }
+        let _ = child.wait();
+        std::fs::remove_dir_all(&dir).ok();
+        if struck > 0 {
+            break;
+        }
+    }
+    assert!(
+        struck > 0,
+        "no second signal struck while the files were written"
+    );
 }
 
 /// An empty folder for one case (no earlier render in it).

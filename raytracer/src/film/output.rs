@@ -40,6 +40,11 @@
 //!   (which renames survive a power loss is then up to the file system: the
 //!   folder itself is not synced).
 //!
+//! A second Ctrl-C, which quits at once ([`crate::render`]), goes through
+//! [`exit_removing_staged_files`]: the temporaries of this process are
+//! removed first (every [`StagedFile`] not yet committed is listed while it
+//! exists), so only a kill -9 or a crash leaves them.
+//!
 //! Nothing finishes or removes the leftovers later. The set is not replaced
 //! atomically as a whole: no file system call renames several names at
 //! once, and the indirections that would (a folder or symlink per picture
@@ -55,6 +60,35 @@ use std::fs::{File, OpenOptions};
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Mutex, MutexGuard};
+
+/// The temporary files of the [`StagedFile`]s alive in this process.
+static STAGED: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn staged_list() -> MutexGuard<'static, Vec<PathBuf>> {
+    STAGED
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
+/// Removes `temp` from the list of live temporaries.
+fn unlist(list: &mut Vec<PathBuf>, temp: &Path) {
+    if let Some(i) = list.iter().position(|p| p == temp) {
+        list.swap_remove(i);
+    }
+}
+
+/// Removes the temporary files of every [`StagedFile`] not yet committed,
+/// then exits the process with `code`. The list stays locked until the
+/// exit, so no staged file is created or renamed in between: each name
+/// keeps its old file or its new one, and no `.tmp` file is left.
+pub fn exit_removing_staged_files(code: i32) -> ! {
+    let list = staged_list();
+    for temp in list.iter() {
+        let _ = std::fs::remove_file(temp);
+    }
+    std::process::exit(code)
+}
 
 /// The sRGB encoding `V(L)` of a linear value `L ∈ [0, 1]` (see the module doc).
 #[inline]
@@ -134,11 +168,17 @@ impl StagedFile {
             std::process::id(),
             COUNTER.fetch_add(1, Ordering::Relaxed)
         ));
-        let file = OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .open(&temp)
-            .map_err(|e| error(&target, "cannot create", &e, e.kind()))?;
+        // Listed before it exists (and under the lock): a quit in between
+        // removes it or finds none.
+        let file = {
+            let mut list = staged_list();
+            list.push(temp.clone());
+            let file = OpenOptions::new().write(true).create_new(true).open(&temp);
+            if file.is_err() {
+                unlist(&mut list, &temp);
+            }
+            file.map_err(|e| error(&target, "cannot create", &e, e.kind()))?
+        };
         // From here on, dropping `staged` removes the temporary file.
         let staged = StagedFile {
             temp,
@@ -168,8 +208,10 @@ impl StagedFile {
     /// Renames the temporary file over the destination (one step: readers see
     /// the old file or the new one).
     pub fn commit(mut self) -> io::Result<()> {
+        let mut list = staged_list();
         std::fs::rename(&self.temp, &self.target)
             .map_err(|e| error(&self.target, "cannot replace", &e, e.kind()))?;
+        unlist(&mut list, &self.temp);
         self.committed = true;
         Ok(())
     }
@@ -178,7 +220,9 @@ impl StagedFile {
 impl Drop for StagedFile {
     fn drop(&mut self) {
         if !self.committed {
+            let mut list = staged_list();
             let _ = std::fs::remove_file(&self.temp);
+            unlist(&mut list, &self.temp);
         }
     }
 }

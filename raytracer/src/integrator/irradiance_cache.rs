@@ -127,7 +127,7 @@ use super::dimensions::{IC_DIRECTION, IC_STRATUM};
 use super::grid::Grid;
 use super::roulette::russian_roulette;
 use super::visible_point::{VisiblePoint, follow_delta_chain, visible_point};
-use super::{Integrator, nee};
+use super::{Integrator, nee, stop};
 use crate::brdf::{Brdf, TransportMode};
 use crate::film::Splat;
 use crate::frame::Frame;
@@ -283,6 +283,10 @@ impl Strata {
         let (m, n) = (self.m as usize, self.n as usize);
         let mut cells = Vec::with_capacity(m * n);
         for j in 0..self.m {
+            // A stop request ends the record (its caller drops it).
+            if stop::stop_requested() {
+                return (Color::ZERO, 1.0, Gradients::default());
+            }
             for k in 0..self.n {
                 cells.push(trace(j, k));
             }
@@ -373,7 +377,9 @@ pub struct IrradianceCache {
 
 impl IrradianceCache {
     /// Fills the cache for `scene`'s camera (see the module doc), on rayon's
-    /// pool. `stop` ends the filling between levels.
+    /// pool. `stop` ends the filling at once: a record whose rays saw it is
+    /// dropped, the records made before it are kept (the cache is then
+    /// marked `interrupted`).
     pub fn build(
         scene: &Scene,
         settings: IrradianceCacheSettings,
@@ -412,9 +418,16 @@ impl IrradianceCache {
                         .map(move |x| UVec2::new(x, y))
                 })
                 .collect();
+            // A record of 2³² rays takes minutes: its rays watch `stop` too.
             let new: Vec<(Record, Option<Gradients>)> = pixels
                 .par_iter()
-                .filter_map(|&pixel| cache.record_for_pixel(scene, pixel))
+                .filter_map(|&pixel| {
+                    stop::watch(stop, || {
+                        let record = cache.record_for_pixel(scene, pixel);
+                        let abandoned = stop::take_abandoned();
+                        record.filter(|_| !abandoned)
+                    })
+                })
                 .collect();
             for (record, gradients) in new {
                 cache.records.push(record);
@@ -422,6 +435,7 @@ impl IrradianceCache {
             }
             cache.rebuild_grid();
         }
+        cache.interrupted |= stop.load(Ordering::Relaxed);
         cache.building = start.elapsed();
         Ok(cache)
     }
@@ -576,6 +590,10 @@ impl IrradianceCache {
         let n = self.settings.rays;
         let (mut sum, mut inv_dist) = (Color::ZERO, 0.0f32);
         for _ in 0..n {
+            // The caller drops a record cut short.
+            if stop::stop_requested() {
+                break;
+            }
             let w = frame.to_world(cosine_hemisphere(IC_DIRECTION.draw(sampler)));
             let ray = x.spawn_ray(w);
             let (l, t) = incoming_indirect(

@@ -209,6 +209,11 @@ impl NaiveRecursive {
         let n = self.branching_at(depth);
         let mut sum = Color::ZERO;
         for _ in 0..n {
+            // A branch that finds the stop request returns at once, but
+            // N = 2³² siblings would still be sampled one by one.
+            if stop_requested() {
+                return Color::ZERO;
+            }
             let Some(c) = sample_continuation(&it, brdf, TransportMode::Radiance, sampler) else {
                 continue;
             };

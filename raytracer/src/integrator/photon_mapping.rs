@@ -47,7 +47,7 @@ use super::continuation::sample_continuation;
 use super::photon::{Photon, PhotonTracing, trace_photons};
 use super::photon_map::{PhotonMap, Search, radius_for};
 use super::visible_point::{follow_delta_chain, visible_point};
-use super::{Integrator, nee};
+use super::{Integrator, nee, stop};
 use crate::brdf::TransportMode;
 use crate::film::Splat;
 use crate::math::{Color, UVec2};
@@ -263,6 +263,10 @@ impl Integrator for PhotonMapping {
         // global map gives the light leaving that point towards x.
         let mut gathered = Color::ZERO;
         for _ in 0..gathers {
+            // Millions of gather rays make one sample take seconds.
+            if stop::stop_requested() {
+                return Color::ZERO;
+            }
             let Some(c) = sample_continuation(&it, brdf, TransportMode::Radiance, sampler) else {
                 continue;
             };

@@ -39,7 +39,7 @@ use std::time::{Duration, Instant};
 
 use super::photon::{PhotonTracing, trace_light_vertices};
 use super::visible_point::visible_point;
-use super::{Integrator, nee};
+use super::{Integrator, nee, stop};
 use crate::film::Splat;
 use crate::geometry::Interaction;
 use crate::math::{Color, Ray, UVec2};
@@ -201,7 +201,11 @@ impl InstantRadiosity {
         let brdf = scene.brdf(x);
         let wo = x.frame.to_local(x.wo);
         let mut l = Color::ZERO;
-        for v in &self.vpls {
+        for (i, v) in self.vpls.iter().enumerate() {
+            // Millions of VPLs make one sample take seconds.
+            if i % 64 == 63 && stop::stop_requested() {
+                return Color::ZERO;
+            }
             if t.saturating_add(1 + v.segments) > d {
                 continue;
             }

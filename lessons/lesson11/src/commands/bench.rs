@@ -1,4 +1,8 @@
 //! `lesson11 bench`: the figures behind every speed claim of the README.
+//!
+//! Ctrl-C stops it within moments, in every part: a figure cut short is not
+//! printed (it would measure the stop, not the renderer), and the command
+//! ends with an error saying that the figures above are all it measured.
 
 mod biased;
 mod mitsuba;
@@ -9,8 +13,18 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use clap::Args;
 use raytracer::integrator::{Bdpt, Direct, DirectStrategy, Integrator, LightTracer, PathTracer};
-use raytracer::render::{Metropolis, RenderOptions, render, render_metropolis};
+use raytracer::render::{Metropolis, RenderOptions, interrupted, render, render_metropolis};
 use raytracer::scene::Scene;
+
+/// The error of an interrupted benchmark, once `cut_short` (a measurement
+/// that Ctrl-C ended early) or the interrupt flag says so: nothing after
+/// it is measured, and its figure is not printed.
+fn stop_if_interrupted(cut_short: bool) -> Result<()> {
+    if cut_short || interrupted() {
+        bail!("interrupted: the figures above are all that was measured");
+    }
+    Ok(())
+}
 
 /// Measure primary-ray throughput on large meshes, direct-lighting and path
 /// tracing samples per second on the Cornell box (256×256) with the ratio to
@@ -103,6 +117,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 ..RenderOptions::default()
             };
             let result = render(&scene, integrator, &options);
+            stop_if_interrupted(result.stats.interrupted)?;
             crate::console::say!(
                 "  {:>8} {:>10.3} {:>14.3}",
                 n,
@@ -114,10 +129,9 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         // The path tracer (the second case) against its peer.
         if k == 1 {
             let n = *threads.last().expect("at least one thread count");
-            crate::console::say!(
-                "{}",
-                mitsuba::compare(args.mitsuba.as_ref(), args.spp, last, n)
-            );
+            let line = mitsuba::compare(args.mitsuba.as_ref(), args.spp, last, n);
+            stop_if_interrupted(line.is_none())?;
+            crate::console::say!("{}", line.unwrap_or_default());
         }
     }
     door(16, &threads)?;
@@ -143,6 +157,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             };
             let (reference, max_depth) =
                 crate::reference::independent(Some(name), &scene, &base, 5, 512);
+            stop_if_interrupted(false)?;
             crate::console::say!(
                 "  {name}: max depth {max_depth}, reference {} (noise floor {:.5})",
                 reference.source,
@@ -159,6 +174,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                     metropolis: name == "door",
                 },
             );
+            stop_if_interrupted(false)?;
         }
     }
     Ok(())
@@ -213,6 +229,7 @@ fn door(spp: u32, threads: &[usize]) -> Result<()> {
         ];
         for (what, integrator) in cases {
             let stats = render(&scene, integrator, &options).stats;
+            stop_if_interrupted(stats.interrupted)?;
             crate::console::say!(
                 "  {:>8} {what:<34} {:>10.3} {:>14.1}",
                 n,
@@ -221,6 +238,7 @@ fn door(spp: u32, threads: &[usize]) -> Result<()> {
             );
         }
         let r = render_metropolis(&scene, &bdpt, &options, &Metropolis::default());
+        stop_if_interrupted(r.stats.interrupted)?;
         let chains = r.stats.elapsed.as_secs_f64() - r.bootstrap_seconds;
         crate::console::say!(
             "  {:>8} {:<34} {:>10.3} {:>14.1}   mutations/s; + {:.3} s bootstrap, acceptance {:.0} %",

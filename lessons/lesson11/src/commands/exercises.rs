@@ -47,7 +47,10 @@ fn exercise(number: usize) -> Result<Exercise> {
 
 pub fn run_exercises(args: &ExercisesArgs) -> Result<()> {
     if args.watch {
-        return grading::watch::run().context("watching exercises/src/");
+        // Ctrl-C is how a watch ends: no render, nothing to keep.
+        raytracer::render::on_interrupt_say("stopped watching exercises/src/");
+        return grading::watch::run(&raytracer::render::interrupted)
+            .context("watching exercises/src/");
     }
     let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
     let results = grading::grade_all(threads, grading::TIMEOUT);

@@ -22,6 +22,7 @@ use raytracer::film::output::write_file;
 pub use deck::Deck;
 
 use crate::options::create_dir;
+use crate::render_files::partial_note;
 use crate::tour::{Quality, TourArgs};
 
 /// Build the Lecture 11 slides (Bulgarian and English) into OUT/slides/LANG/index.html,
@@ -200,11 +201,16 @@ pub fn build(args: &SlidesArgs) -> Result<Vec<PathBuf>> {
     pictures.dedup();
 
     // Pictures the chapters do not make yet are shown as placeholders.
+    // A picture of an interrupted render counts as missing: it is rendered
+    // again rather than shown as finished.
     let needed = needed_pictures(&src)?;
     let missing = |out: &Path| -> Vec<String> {
         pictures
             .iter()
-            .filter(|p| !out.join(p).is_file() && !needed.contains(p))
+            .filter(|p| {
+                let file = out.join(p);
+                (!file.is_file() || partial_note(&file).exists()) && !needed.contains(p)
+            })
             .cloned()
             .collect()
     };
@@ -212,7 +218,8 @@ pub fn build(args: &SlidesArgs) -> Result<Vec<PathBuf>> {
     if args.render || !absent.is_empty() {
         if !absent.is_empty() {
             crate::console::say!(
-                "{} of the {} pictures are missing (e.g. {}): rendering the tour first",
+                "{} of the {} pictures are missing or from an interrupted render (e.g. {}): \
+                 rendering the tour first",
                 absent.len(),
                 pictures.len(),
                 absent[0]

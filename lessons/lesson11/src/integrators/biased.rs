@@ -21,7 +21,7 @@ use raytracer::integrator::{
 use raytracer::render::{RenderOptions, sppm::render_sppm};
 use raytracer::scene::Scene;
 
-use crate::options::{check_memory, create_dir};
+use crate::options::{check_memory, check_work, create_dir};
 use crate::render_files::write_png_and_exr;
 
 /// Options of the biased integrators.
@@ -376,6 +376,52 @@ pub fn sppm_plan(
 }
 
 impl BiasedPlan {
+    /// Keeps the build and a render of `spp` samples per pixel within the
+    /// work budget ([`check_work`]) unless `force`: the photon maps' light
+    /// paths and the final gather's rays, the VPLs' shadow rays (one per
+    /// VPL per sample, the VPLs estimated as for their memory), the cache's
+    /// rays (at most one record per pixel).
+    pub fn check_work(&self, scene: &Scene, spp: u32, force: bool) -> Result<()> {
+        let pixels = scene.camera.width as f64 * scene.camera.height as f64;
+        let samples = pixels * spp as f64;
+        match self {
+            BiasedPlan::Photon(s) => {
+                check_work(
+                    "photon mapping",
+                    s.photons as f64,
+                    "light paths",
+                    "--photons",
+                    force,
+                )?;
+                check_work(
+                    "photon mapping's final gather",
+                    s.final_gather as f64 * samples,
+                    "rays",
+                    "--final-gather, --spp or the image size",
+                    force,
+                )
+            }
+            BiasedPlan::Vpl(s) => {
+                let vpls =
+                    s.paths as f64 * expected_vertices_per_path(scene, s.max_depth, s.rr_depth);
+                check_work(
+                    "instant radiosity",
+                    vpls * samples,
+                    "shadow rays (one per VPL and sample)",
+                    "--vpl-paths, --spp or the image size",
+                    force,
+                )
+            }
+            BiasedPlan::IrradianceCache(s) => check_work(
+                "the irradiance cache",
+                s.rays as f64 * pixels,
+                "rays (--ic-rays for each of up to one record per pixel)",
+                "--ic-rays or the image size",
+                force,
+            ),
+        }
+    }
+
     /// What the build makes ("the photon maps"), for a line saying it is under way.
     pub fn what(&self) -> &'static str {
         match self {

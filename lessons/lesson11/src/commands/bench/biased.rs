@@ -2,9 +2,9 @@
 //! stored per second, the photon-map build of 1 M photons (target: under a
 //! second on two cores), SPPM seconds per pass on `cornell` 256², and VPL
 //! gathers per second — beside the path tracer's samples per second, each on
-//! the same thread counts.
+//! the same thread counts. Ctrl-C stops each part (photon tracing, SPPM,
+//! VPLs, renders) within moments; the row it cut short is not printed.
 
-use std::sync::atomic::AtomicBool;
 use std::time::Instant;
 
 use anyhow::Result;
@@ -13,8 +13,10 @@ use raytracer::integrator::photon_map::{PhotonMap, radius_for};
 use raytracer::integrator::sppm::SppmSettings;
 use raytracer::integrator::{InstantRadiosity, PathTracer, VplSettings};
 use raytracer::render::sppm::render_sppm_with_stop;
-use raytracer::render::{RenderOptions, render};
+use raytracer::render::{RenderOptions, interrupt_flag, render};
 use raytracer::scene::Scene;
+
+use super::stop_if_interrupted;
 
 /// Light paths traced for the photon figures.
 const PHOTON_PATHS: u64 = 400_000;
@@ -28,7 +30,7 @@ const VPL_PATHS: u64 = 64;
 /// Prints the figures, each on `threads` threads.
 pub fn run(threads: &[usize]) -> Result<()> {
     let scene = Scene::builtin("cornell")?;
-    let never = AtomicBool::new(false);
+    let stop = interrupt_flag();
     let sppm_settings = SppmSettings {
         max_depth: Some(65),
         rr_depth: 5,
@@ -59,13 +61,14 @@ pub fn run(threads: &[usize]) -> Result<()> {
         };
         let (secs, stored) = pool.install(|| {
             let t = Instant::now();
-            let traced = trace_photons(&scene, &tracing, &never);
+            let traced = trace_photons(&scene, &tracing, stop);
             let secs = t.elapsed().as_secs_f64();
             let mut all: Vec<Photon> = traced.direct;
             all.extend(traced.caustic);
             all.extend(traced.indirect);
             (secs, all)
         });
+        stop_if_interrupted(false)?;
         let photons_per_s = stored.len() as f64 / secs;
         let paths_per_s = PHOTON_PATHS as f64 / secs;
         // 1 M photons: the stored ones, repeated as needed; the cell size of
@@ -86,7 +89,8 @@ pub fn run(threads: &[usize]) -> Result<()> {
             progress: false,
             ..RenderOptions::default()
         };
-        let sppm = render_sppm_with_stop(&scene, &sppm_settings, &options(SPPM_PASSES), &never);
+        let sppm = render_sppm_with_stop(&scene, &sppm_settings, &options(SPPM_PASSES), stop);
+        stop_if_interrupted(sppm.stats.interrupted)?;
         let per_pass = sppm.stats.elapsed.as_secs_f64() / sppm.passes.max(1) as f64;
         let vpl = pool.install(|| {
             InstantRadiosity::build(
@@ -97,11 +101,13 @@ pub fn run(threads: &[usize]) -> Result<()> {
                     rr_depth: 5,
                     ..VplSettings::default()
                 },
-                &never,
+                stop,
             )
         });
         let vpl = vpl.map_err(anyhow::Error::msg)?;
+        stop_if_interrupted(vpl.interrupted)?;
         let r = render(&scene, &vpl, &options(1));
+        stop_if_interrupted(r.stats.interrupted)?;
         let gathers =
             r.stats.samples as f64 * vpl.vpls().len() as f64 / r.stats.elapsed.as_secs_f64();
         let path = render(
@@ -113,6 +119,7 @@ pub fn run(threads: &[usize]) -> Result<()> {
             },
             &options(16),
         );
+        stop_if_interrupted(path.stats.interrupted)?;
         crate::console::say!(
             "  {:>8} {:>12.1} {:>14.3} {:>12.3} {:>12.3} {:>13.3} {:>14.3}",
             n,

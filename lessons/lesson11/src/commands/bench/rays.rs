@@ -7,7 +7,9 @@
 //! rays through the pixel centres: for pixel (i, j), `s_k = (k + ½)/1000·2 − 1`
 //! and the direction is `normalize(s_i·tan 20°, −s_j·tan 20°, −1)`. Ray
 //! generation is not timed (as in the references); each figure is the best of
-//! a few repetitions.
+//! a few repetitions. Ctrl-C is seen between chunks of [`CHUNK`] rays
+//! (about a millisecond each): the repetitions left are skipped and no
+//! figure is printed.
 
 use std::sync::Arc;
 use std::time::Instant;
@@ -16,6 +18,9 @@ use anyhow::Context as _;
 use rayon::prelude::*;
 use raytracer::geometry::{Geometry, Hit, Mesh, Shape};
 use raytracer::math::{Ray, Vec3A};
+use raytracer::render::interrupted;
+
+use super::stop_if_interrupted;
 
 const RES: usize = 1000;
 const REPS: usize = 5;
@@ -73,7 +78,11 @@ fn best_of<R: Send>(
 ) -> (f64, Option<f64>, R) {
     let (mut wall, mut cpu) = (f64::INFINITY, f64::INFINITY);
     let mut out = None;
-    for _ in 0..REPS {
+    for rep in 0..REPS {
+        // After Ctrl-C the result is not printed: one run is enough.
+        if rep > 0 && interrupted() {
+            break;
+        }
         let (w, c, r) = pool.install(|| {
             let c0 = thread_cpu_time();
             let t = Instant::now();
@@ -99,7 +108,9 @@ fn throughput(
     let (wall, cpu, hits) = best_of(pool, || {
         rays.par_chunks(CHUNK)
             .map(|chunk| {
-                if any_hit {
+                if interrupted() {
+                    0
+                } else if any_hit {
                     chunk.iter().filter(|r| g.occluded(r)).count()
                 } else {
                     // Summing t keeps the hit record alive for the optimizer.
@@ -132,6 +143,9 @@ fn throughput_packets<const N: usize>(
         packets
             .par_chunks((CHUNK / N).max(1))
             .map(|chunk| {
+                if interrupted() {
+                    return 0;
+                }
                 let mut n = 0;
                 let mut sum = 0.0f32;
                 for p in chunk {
@@ -172,6 +186,7 @@ fn measure(name: &str, g: &Geometry, rays: &[Ray], threads: &[usize]) -> anyhow:
         let (any, any_cpu, hits_any) = throughput(&pool, g, rays, true);
         let (p4, p4_cpu, hits4) = throughput_packets(&pool, &packets4, |p| g.intersect4(p));
         let (p16, p16_cpu, hits16) = throughput_packets(&pool, &packets16, |p| g.intersect16(p));
+        stop_if_interrupted(false)?;
         anyhow::ensure!(
             hits == hits_any && hits == hits4 && hits == hits16,
             "single rays, any-hit and packets disagree: {hits}, {hits_any}, {hits4}, {hits16} hits"
@@ -230,6 +245,7 @@ pub fn run(threads: &[usize]) -> anyhow::Result<()> {
     let ico = Mesh::icosphere(6);
     let tris = ico.indices.len();
     let (build_s, g) = build(ico)?;
+    stop_if_interrupted(false)?;
     crate::console::say!(
         "(a) icosphere level 6: {tris} triangles, {} BVH nodes, build {} s",
         g.node_count(),
@@ -240,6 +256,7 @@ pub fn run(threads: &[usize]) -> anyhow::Result<()> {
 
     // (b) A large mesh through the OBJ loader: icosphere level 8.
     let big = Mesh::icosphere(8);
+    stop_if_interrupted(false)?;
     let tris = big.indices.len();
     let path = std::env::temp_dir().join(format!("lesson11_bench_ico8_{}.obj", std::process::id()));
     std::fs::write(&path, big.to_obj_string())
@@ -251,11 +268,13 @@ pub fn run(threads: &[usize]) -> anyhow::Result<()> {
     let size = std::fs::metadata(&path).map_or(0, |m| m.len());
     let _ = std::fs::remove_file(&path);
     let loaded = loaded?;
+    stop_if_interrupted(false)?;
     anyhow::ensure!(
         loaded.indices.len() == tris,
         "the OBJ round trip lost triangles"
     );
     let (build_s, g) = build(loaded)?;
+    stop_if_interrupted(false)?;
     crate::console::say!(
         "(b) icosphere level 8 via OBJ ({} MB): {tris} triangles, load {} s, {} BVH nodes, build {} s",
         sig3(size as f64 / 1e6),
