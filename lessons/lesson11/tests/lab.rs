@@ -300,23 +300,27 @@ fn bad_parameters_get_400_with_a_one_line_reason() {
         (
             "POST",
             "/api/render?page=x&spp=abc".into(),
-            "invalid value 'abc' for '--spp",
+            "“Target spp”: \"abc\" is not valid",
         ),
         (
             "POST",
             "/api/render?page=x&spp=0".into(),
-            "--spp must be at least 1",
+            "“Target spp” must be at least 1",
         ),
         (
             "POST",
             "/api/render?page=x&spp=70000".into(),
             "at most 65536",
         ),
-        ("POST", "/api/render?page=x&seed=-1".into(), "--seed"),
+        (
+            "POST",
+            "/api/render?page=x&seed=-1".into(),
+            "“Seed”: \"-1\" is not valid",
+        ),
         (
             "POST",
             "/api/render?page=x&integrator=magic".into(),
-            "'magic' for '--integrator",
+            "“Integrator”: \"magic\" is not valid",
         ),
         (
             "POST",
@@ -326,12 +330,12 @@ fn bad_parameters_get_400_with_a_one_line_reason() {
         (
             "POST",
             "/api/render?page=x&integrator=path&max-depth=0".into(),
-            "--max-depth must be -1",
+            "“Max depth D” must be -1",
         ),
         (
             "POST",
             "/api/render?page=x&integrator=path&branching=4".into(),
-            "--branching does not apply",
+            "“Branching N” does not apply",
         ),
         (
             "POST",
@@ -710,6 +714,7 @@ fn the_inspectors_paths_are_the_integrators_sample() {
         (0..3).all(|i| (a[i] - b[i]).abs() <= 1e-5 * a[i].abs().max(b[i].abs()) + 1e-9)
     };
     let pixels = [(8, 8), (3, 12), (12, 2), (15, 15), (0, 7)];
+    let mut blocked_connections = 0;
     for integrator in ["path", "direct", "bdpt", "naive", "light"] {
         // Direct lighting is D = 2 by definition: it takes no max depth.
         let depth = if integrator == "direct" {
@@ -747,6 +752,13 @@ fn the_inspectors_paths_are_the_integrators_sample() {
                     "({x}, {y}): the record is the picture's sample"
                 );
             }
+            if integrator == "bdpt" {
+                let segments = r["segments"].as_array().unwrap();
+                for s in segments.iter().filter(|s| s["occluded"] == true) {
+                    assert_eq!(s["contribution"], serde_json::json!([0.0, 0.0, 0.0]), "{s}");
+                    blocked_connections += 1;
+                }
+            }
             if integrator == "light" {
                 assert_eq!(e, [0.0; 3], "light tracing splats everything");
                 for s in r["segments"].as_array().unwrap() {
@@ -767,7 +779,43 @@ fn the_inspectors_paths_are_the_integrators_sample() {
             "{integrator}: the test can fail only if samples carry light ({lit})"
         );
     }
+    // Issue 27, bug 4: BDPT showed none of its blocked connections (0 of
+    // 70 segments over these 5 pixels) while the path tracer shows its
+    // blocked shadow rays.
+    assert!(
+        blocked_connections > 0,
+        "BDPT's blocked connections are shown"
+    );
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 27, bug 2: unlimited naive recursion was refused with advice to
+/// "add --roulette … (e.g. --branching 8,1)", but the page had no such
+/// control, and typing 8,1 gave the same error. The advice now names the
+/// page's fields, the page has them, and following it renders.
+#[test]
+fn the_advice_for_unlimited_naive_recursion_works_on_the_page() {
+    let lab = Lab::start(&[]);
+    let html = lab.get("/").text();
+    let naive =
+        "/api/render?page=n&integrator=naive&width=16&height=16&spp=1&max-depth=-1&branching=8,1";
+    let r = lab.post(naive);
+    assert_eq!(r.status, 400, "{}", r.text());
+    let reason = r.text();
+    assert!(!reason.contains("--"), "{reason}");
+    for (label, field) in [
+        ("Russian roulette", "name=\"roulette\""),
+        ("Branching N", "name=\"branching\""),
+    ] {
+        assert!(reason.contains(&format!("“{label}”")), "{reason}");
+        assert!(
+            html.contains(label) && html.contains(field),
+            "the page has {label}"
+        );
+    }
+    let r = lab.post(&format!("{naive}&roulette=1"));
+    assert_eq!(r.status, 200, "{}", r.text());
+    lab.wait_done("n", Duration::from_secs(60));
 }
 
 /// Both eyes render; every composite comes from the same pair, in the size

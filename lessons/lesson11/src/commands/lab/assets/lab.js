@@ -58,7 +58,7 @@ function renderParams() {
   delete params.exposure;
   const integrator = params.integrator;
   if (integrator === 'direct' || integrator === 'ao') delete params['max-depth'];
-  if (integrator !== 'naive') delete params.branching;
+  if (integrator !== 'naive') { delete params.branching; delete params.roulette; }
   return params;
 }
 
