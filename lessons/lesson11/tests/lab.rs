@@ -1011,6 +1011,90 @@ fn the_page_works_in_a_real_browser() {
     );
 }
 
+/// The page's `#layout` check in a window of `width`×`height`: where the
+/// picture, the status line, the inspector's drawing and tables are once a
+/// pixel was clicked (None, with a note, where no Chromium is installed).
+fn layout(width: u32, height: u32) -> Option<Value> {
+    let Some(chromium) = chromium::chromium() else {
+        eprintln!(
+            "skipped: no chromium on PATH or at /usr/bin/chromium, so the lab's layout was not \
+             checked (install Debian's `chromium` package to run this test)"
+        );
+        return None;
+    };
+    let lab = Lab::start(&[]);
+    let dom = chromium::run(
+        &chromium,
+        &format!("{}#layout", lab.url),
+        &[
+            format!("--window-size={width},{height}"),
+            "--virtual-time-budget=60000".into(),
+            "--dump-dom".into(),
+        ],
+        Duration::from_secs(240),
+    )
+    .unwrap();
+    let report = chromium::selftest_report(&dom).expect("the page has its #layout report");
+    let r: Value = serde_json::from_str(&report).unwrap_or_else(|e| panic!("{e}: {report}"));
+    assert_eq!(r["step"], "done", "{r}");
+    assert_eq!(r["errors"], serde_json::json!([]), "{r}");
+    assert_eq!(r["status"], 200, "{r}");
+    Some(r)
+}
+
+/// Issue 27, "in view": at 1280×720 the picture, the status line and the
+/// inspector's drawing and tables are all in view without scrolling, side
+/// by side, the tables scrolling on their own; path lines are drawn at
+/// least 2 px wide whatever the picture's size; BDPT's paths come with the
+/// explanation of why they need not pass through the pixel.
+#[test]
+fn at_1280_by_720_the_picture_and_the_inspector_are_side_by_side_in_view() {
+    let Some(r) = layout(1280, 720) else { return };
+    let (w, h) = (
+        r["window"]["width"].as_f64().unwrap(),
+        r["window"]["height"].as_f64().unwrap(),
+    );
+    let rect = |name: &str, side: &str| r["rects"][name][side].as_f64().unwrap();
+    for name in ["picture", "stats", "drawing", "inspector", "tables"] {
+        assert!(
+            rect(name, "top") >= 0.0 && rect(name, "bottom") <= h + 0.5,
+            "{name} is in view vertically: {r}"
+        );
+        assert!(
+            rect(name, "left") >= 0.0 && rect(name, "right") <= w + 0.5,
+            "{name} is in view horizontally: {r}"
+        );
+    }
+    assert!(rect("tables", "height") >= 100.0, "{r}");
+    assert!(
+        rect("picture", "right") <= rect("inspector", "left"),
+        "side by side: {r}"
+    );
+    assert!(rect("picture", "width") >= 300.0, "{r}");
+    assert_eq!(r["tables_overflow"], "auto", "{r}");
+    assert!(r["window"]["scrollWidth"].as_f64().unwrap() <= w, "{r}");
+    assert_eq!(r["line"]["vector_effect"], "non-scaling-stroke", "{r}");
+    assert!(r["line"]["width"].as_f64().unwrap() >= 2.0, "{r}");
+    assert_eq!(r["why"], true, "{r}");
+    assert_eq!(r["favicon"], true, "{r}");
+}
+
+/// Issue 27: at 800 px wide the picture comes before the controls' detail.
+#[test]
+fn at_800_px_the_picture_comes_before_the_controls() {
+    let Some(r) = layout(800, 900) else { return };
+    let rect = |name: &str, side: &str| r["rects"][name][side].as_f64().unwrap();
+    assert!(
+        rect("picture", "bottom") <= rect("controls", "top"),
+        "the picture first: {r}"
+    );
+    assert!(
+        rect("picture", "bottom") <= 900.0 && rect("picture", "width") >= 300.0,
+        "{r}"
+    );
+    assert!(r["window"]["scrollWidth"].as_f64().unwrap() <= 800.0, "{r}");
+}
+
 /// The README presents the lab, and its first screen still gives exactly
 /// the two set-up commands.
 #[test]

@@ -8,7 +8,7 @@
 //!
 //! | request | answer |
 //! |---|---|
-//! | `GET /`, `/lab.css`, `/lab.js` | the page |
+//! | `GET /`, `/lab.css`, `/lab.js`, `/favicon.svg` | the page |
 //! | `GET /api/scenes` | scenes, integrators, composites, limits |
 //! | `POST /api/render?page=P&scene=…&integrator=…&max-depth=…&spp=…&seed=…` | starts the page's render (options of `lesson11 render`) |
 //! | `POST /api/stereo?page=P&…&separation=…&convergence=…&toe-in=1` | starts both eyes |
@@ -47,6 +47,7 @@ const LONGEST_POLL: Duration = Duration::from_secs(2);
 const INDEX_HTML: &str = include_str!("assets/index.html");
 const LAB_CSS: &str = include_str!("assets/lab.css");
 const LAB_JS: &str = include_str!("assets/lab.js");
+const FAVICON: &str = include_str!("assets/favicon.svg");
 
 /// What the lab is started with.
 #[derive(Clone, Default)]
@@ -239,6 +240,7 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
         "/lab.js" => get(&[], &|_| {
             Ok(Reply::ok("text/javascript; charset=utf-8", LAB_JS))
         }),
+        "/favicon.svg" | "/favicon.ico" => get(&[], &|_| Ok(Reply::ok("image/svg+xml", FAVICON))),
         "/api/scenes" => get(&[], &|_| Ok(Reply::json(&catalogue(state)))),
         "/api/render" => post(&with(&[RENDER_PARAMS]), &|q| {
             let setup = render_setup(q, &state.folder, "cornell", "direct")?;
