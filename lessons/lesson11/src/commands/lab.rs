@@ -19,6 +19,8 @@
 //! - `lab/job.rs` and `lab/pages.rs`: the progressive render of one page,
 //!   its snapshots and its cancellation; one render at a time per page;
 //! - `lab/stereo.rs`, `lab/brdf.rs`: the Stereo and BRDF tabs;
+//! - `lab/student.rs`: the "Your code" tab (the student's integrator beside
+//!   the renderer's, and the tile z-map between them);
 //! - `lab/paths.rs`: the path inspector's data (a recorded pixel sample);
 //! - `lab/assets/`: the page.
 
@@ -30,6 +32,7 @@ mod query;
 mod server;
 mod settings;
 mod stereo;
+mod student;
 
 use std::net::{IpAddr, SocketAddr, ToSocketAddrs};
 use std::path::PathBuf;

@@ -37,6 +37,8 @@ use raytracer::render::{Metropolis, Progress, RenderOptions, render_pixels_watch
 use raytracer::scene::Scene;
 use serde::Serialize;
 
+use raytracer::math::{Color, UVec2};
+
 use super::settings::one_line;
 use crate::integrators::{BiasedPlan, IntegratorPlan};
 
@@ -75,7 +77,21 @@ pub struct JobSpec {
     /// Checked, not built: the job's thread builds what takes time.
     pub plan: IntegratorPlan,
     pub options: RenderOptions,
+    /// The "Your code" tab: the student's integrator (eye 0) beside the
+    /// renderer's of the same estimator (eye 1), instead of `plan`.
+    pub student: Option<StudentPair>,
 }
+
+/// The student's integrator and the renderer's beside it, made on the
+/// job's thread (the exercises' integrators are not `Send`).
+pub struct StudentPair {
+    /// The exercise (`ex13_mis`), named in messages.
+    pub exercise: &'static str,
+    pub make: Box<dyn FnOnce() -> IntegratorPair + Send>,
+}
+
+/// The student's integrator and the renderer's, in that order.
+pub type IntegratorPair = (Box<dyn Integrator>, Box<dyn Integrator>);
 
 /// The latest picture of one eye and how far it has come.
 #[derive(Clone, Default)]
@@ -90,6 +106,8 @@ pub struct Snapshot {
     pub elapsed: Duration,
     /// Samples dropped as NaN, infinite or negative.
     pub nonfinite: u64,
+    /// The variance of each pixel's mean (the "Your code" tab's z-map).
+    pub variance: Option<Arc<Image>>,
 }
 
 /// What a job is doing.
@@ -110,6 +128,8 @@ enum Work {
     Build(BiasedPlan),
     Sppm(SppmSettings),
     Metropolis(Bdpt, Metropolis),
+    /// The student's integrator beside the renderer's.
+    Student(StudentPair),
 }
 
 struct State {
@@ -153,6 +173,8 @@ pub struct Job {
     scenes: Vec<Arc<Scene>>,
     /// See [`JobSpec::build_for`].
     build_for: Option<Scene>,
+    /// The exercise of the "Your code" tab ([`JobSpec::student`]).
+    exercise: Option<&'static str>,
     started: Instant,
     stop: AtomicBool,
     state: Mutex<State>,
@@ -189,6 +211,8 @@ pub struct JobStatus {
     pub done: bool,
     pub interrupted: bool,
     pub nonfinite: u64,
+    /// The same, eye by eye (the student's integrator is eye 0 of its tab).
+    pub nonfinite_by_eye: Vec<u64>,
     pub version: u64,
     /// The phase the render was in when it was asked to stop.
     pub cancelled_in: Option<Phase>,
@@ -218,7 +242,14 @@ impl Job {
         let scenes: Vec<Arc<Scene>> = spec.eyes.into_iter().map(Arc::new).collect();
         let first = scenes.first().ok_or("a job without a picture")?;
         let integrator = OnceLock::new();
+        let exercise = spec.student.as_ref().map(|p| p.exercise);
         let (work, units, no_samples, building) = match spec.plan {
+            _ if spec.student.is_some() => (
+                Work::Student(spec.student.expect("checked")),
+                ("spp", "samples"),
+                None,
+                None,
+            ),
             IntegratorPlan::Ready(i) => {
                 let _ = integrator.set(Arc::from(i));
                 (Work::Samples, ("spp", "samples"), None, None)
@@ -259,6 +290,7 @@ impl Job {
             building,
             scenes: scenes.clone(),
             build_for: spec.build_for,
+            exercise,
             started: Instant::now(),
             stop: AtomicBool::new(false),
             state: Mutex::new(State {
@@ -312,6 +344,7 @@ impl Job {
             Work::Metropolis(bdpt, metropolis) => {
                 return Ok(self.render_metropolis(&bdpt, &metropolis, &options));
             }
+            Work::Student(pair) => return Ok(self.render_student(pair, &options)),
             Work::Samples => match self.integrator.get() {
                 Some(i) => i.clone(),
                 None => return Err("the render has no integrator".into()),
@@ -340,6 +373,51 @@ impl Job {
 
     fn stopped(&self) -> bool {
         self.stop.load(Ordering::Relaxed)
+    }
+
+    /// The student's integrator (eye 0) and the renderer's of the same
+    /// estimator (eye 1) at once, as `lesson11 render --student` renders
+    /// them: the renderer's with seed + 1 (the two may draw the same numbers
+    /// in the same order, and correlated pictures would hide a difference).
+    /// A panic in the student's code stops both with its message.
+    fn render_student(&self, pair: StudentPair, options: &RenderOptions) -> bool {
+        let (student, reference) = (pair.make)();
+        let other = RenderOptions {
+            seed: options.seed.wrapping_add(1),
+            ..options.clone()
+        };
+        let (mine, theirs) = (&self.scenes[0], &self.scenes[1]);
+        std::thread::scope(|s| {
+            let reference = s.spawn(|| self.render_eye(1, theirs, reference.as_ref(), &other));
+            let student = self.render_eye(0, mine, student.as_ref(), options);
+            student & reference.join().unwrap_or(false)
+        })
+    }
+
+    /// A panic in the student's integrator at `pixel`: the job stops and
+    /// the page says why (a `todo!()` is an exercise not started).
+    fn student_panicked(&self, pixel: UVec2, payload: &(dyn std::any::Any + Send)) {
+        let what = payload
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "a panic without a message".into());
+        let exercise = self.exercise.unwrap_or("the exercise");
+        let message = if what.contains("not yet implemented") {
+            format!(
+                "{exercise} is not started yet (todo!() in exercises/src/{exercise}.rs): fill it in, \
+                 then start the lab again (it renders the code it was built with)"
+            )
+        } else {
+            format!(
+                "your integrator ({exercise}) panicked at pixel ({}, {}): {what}",
+                pixel.x, pixel.y
+            )
+        };
+        self.update(|s| {
+            s.error.get_or_insert(message);
+        });
+        self.stop.store(true, Ordering::SeqCst);
     }
 
     /// Every eye at once, each on a thread (and a pool) of its own; true if
@@ -383,6 +461,10 @@ impl Job {
     ) -> bool {
         let (w, h) = (scene.camera.width, scene.camera.height);
         let mut throttle = Throttle::default();
+        // The "Your code" tab: eye 0 is the student's code, whose panic must
+        // not take the lab down; both eyes' variances make the z-map.
+        let student = self.exercise.is_some();
+        let catch = student && eye == 0;
         let mut watch = |p: &Progress| {
             if !throttle.due() {
                 return;
@@ -395,6 +477,7 @@ impl Job {
                     complete_spp: p.complete_spp,
                     elapsed: p.elapsed,
                     nonfinite: p.film.nonfinite_count(),
+                    variance: student.then(|| Arc::new(p.film.variance_image())),
                 },
                 None,
             );
@@ -404,7 +487,18 @@ impl Job {
             h,
             options,
             &self.stop,
-            |pixel, sampler, splats| integrator.sample(scene, pixel, sampler, splats),
+            |pixel, sampler, splats| {
+                if !catch {
+                    return integrator.sample(scene, pixel, sampler, splats);
+                }
+                let sample = || integrator.sample(scene, pixel, sampler, splats);
+                std::panic::catch_unwind(std::panic::AssertUnwindSafe(sample)).unwrap_or_else(
+                    |payload| {
+                        self.student_panicked(pixel, payload.as_ref());
+                        Color::ZERO
+                    },
+                )
+            },
             &mut watch,
         );
         let complete = if result.stats.interrupted {
@@ -420,6 +514,7 @@ impl Job {
                 complete_spp: complete,
                 elapsed: result.stats.elapsed,
                 nonfinite: result.stats.nonfinite,
+                variance: student.then(|| Arc::new(result.film.variance_image())),
             },
             None,
         );
@@ -450,6 +545,7 @@ impl Job {
                     complete_spp: p.passes,
                     elapsed: p.elapsed,
                     nonfinite: 0,
+                    variance: None,
                 },
                 Some(note(p.passes)),
             );
@@ -471,6 +567,7 @@ impl Job {
                     complete_spp: r.passes,
                     elapsed: r.stats.elapsed,
                     nonfinite: 0,
+                    variance: None,
                 },
                 Some(line),
             );
@@ -522,6 +619,7 @@ impl Job {
                     complete_spp: (p.mutations / pixels) as u32,
                     elapsed: p.elapsed,
                     nonfinite: 0,
+                    variance: None,
                 },
                 final_note.clone(),
             );
@@ -540,6 +638,7 @@ impl Job {
                     },
                     elapsed: r.stats.elapsed,
                     nonfinite: r.stats.nonfinite,
+                    variance: None,
                 },
                 final_note,
             );
@@ -629,6 +728,11 @@ impl Job {
         });
     }
 
+    /// The latest snapshot of every eye.
+    pub fn snapshots(&self) -> Vec<Snapshot> {
+        lock(&self.state).eyes.clone()
+    }
+
     /// The latest pictures, one per eye (`None` before the first snapshot).
     pub fn images(&self) -> Vec<Option<Arc<Image>>> {
         lock(&self.state)
@@ -685,6 +789,7 @@ impl Job {
             done: state.phase == Phase::Done,
             interrupted: state.interrupted,
             nonfinite: state.eyes.iter().map(|e| e.nonfinite).sum(),
+            nonfinite_by_eye: state.eyes.iter().map(|e| e.nonfinite).collect(),
             version: state.version,
             cancelled_in: state.cancelled_in,
             stopped_after_ms: state.stopped_after.map(|d| d.as_secs_f64() * 1e3),

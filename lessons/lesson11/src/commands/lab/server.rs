@@ -13,6 +13,8 @@
 //! | `POST /api/render?page=P&scene=…&integrator=…&max-depth=…&spp=…&seed=…` | starts the page's render (options of `lesson11 render`) |
 //! | `POST /api/stereo?page=P&…&separation=…&convergence=…&toe-in=1` | starts both eyes |
 //! | `POST /api/brdf-sphere?page=P&model=…&spp=…` | starts a ball of that BRDF |
+//! | `POST /api/student?page=P&integrator=…&…` | starts the student's integrator beside the renderer's (options of `lesson11 render --student`) |
+//! | `GET /api/zmap.png?page=P` | the tile z-map between them (headers: the verdict) |
 //! | `POST /api/stop?page=P` | stops the page's render |
 //! | `GET /api/status?page=P&after=V` | the render's phase (building, rendering, done) and progress, once a change newer than V is out (at most 2 s) |
 //! | `GET /api/image.png?page=P&exposure=E` / `image.exr?page=P&eye=0` | the picture so far |
@@ -36,6 +38,7 @@ use super::pages::{IDLE, Pages};
 use super::query::Query;
 use super::settings::{MAX_PIXELS, MAX_SPP, RENDER_PARAMS, SceneFolder, render_setup};
 use super::stereo::{self, COMPOSITE_PARAMS, RIG_PARAMS};
+use super::student::{self, ZMap};
 use crate::integrators::IntegratorKind;
 
 /// Threads that answer requests (a long poll holds one for up to 2 s).
@@ -254,12 +257,27 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
                 build_for: None,
                 plan: setup.plan,
                 options: setup.options,
+                student: None,
             };
             started(state.pages.start(q.page()?, spec)?)
         }),
         "/api/stereo" => post(&with(&[RENDER_PARAMS, RIG_PARAMS]), &|q| {
             let spec = stereo::stereo_job(q, &state.folder)?;
             started(state.pages.start(q.page()?, spec)?)
+        }),
+        "/api/student" => post(&with(&[RENDER_PARAMS]), &|q| {
+            let spec = student::student_job(q, &state.folder)?;
+            started(state.pages.start(q.page()?, spec)?)
+        }),
+        "/api/zmap.png" => get(&["page", "job", "v"], &|q| {
+            let job = page_job(state, q)?;
+            let map = ZMap::of(&job).ok_or(
+                "no z-map: the page's render is not of the \"Your code\" tab, or has no picture yet",
+            )?;
+            let image = map.image(job.width, job.height);
+            Ok(png(&image, 0.0, &job)?
+                .header("X-Lab-Verdict", map.verdict())
+                .header("X-Lab-Consistent", map.consistent()))
         }),
         "/api/brdf-sphere" => post(&with(&[BRDF_PARAMS, &["spp", "seed"]]), &|q| {
             let choice = brdf::choose(q)?;

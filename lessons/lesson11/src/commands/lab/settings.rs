@@ -21,7 +21,7 @@ use serde::Serialize;
 
 use super::query::Query;
 use crate::commands::render::RenderArgs;
-use crate::integrators::IntegratorPlan;
+use crate::integrators::{IntegratorArgs, IntegratorKind, IntegratorPlan};
 
 /// The most pixels of one picture (one eye of a stereo pair): 0.48
 /// megapixels, 800×600 (a film takes about 100 bytes a pixel).
@@ -71,6 +71,9 @@ pub const PAGE_LABELS: &[(&str, &str)] = &[
 /// command line that renders the same picture.
 pub struct RenderSetup {
     pub scene: Scene,
+    /// The integrator chosen and its options, as `lesson11 render` read them.
+    pub kind: IntegratorKind,
+    pub integrator_args: IntegratorArgs,
     pub plan: IntegratorPlan,
     pub options: RenderOptions,
     /// The options of `lesson11 render` (and of `lesson11 stereo`) that give
@@ -222,6 +225,8 @@ pub fn render_setup(
         .join(" ");
     Ok(RenderSetup {
         scene,
+        kind: args.integrator,
+        integrator_args: args.integrator_args,
         plan,
         options,
         options_line,

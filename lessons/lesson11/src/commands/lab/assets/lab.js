@@ -101,6 +101,21 @@ function brdfParams() {
   return params;
 }
 
+function showStudentControls() {
+  const integrator = $('y-integrator').value;
+  document.querySelectorAll('#student-form .y-depth').forEach((el) => { el.hidden = integrator === 'direct'; });
+  document.querySelectorAll('#student-form .y-naive').forEach((el) => { el.hidden = integrator !== 'naive'; });
+}
+
+function startStudent() {
+  const params = formParams($('student-form'));
+  if (params.integrator === 'direct') delete params['max-depth'];
+  if (params.integrator !== 'naive') delete params.branching;
+  for (const id of ['y-mine', 'y-theirs', 'y-zmap']) $(id).removeAttribute('src');
+  $('y-verdict').textContent = '';
+  return start('student', '/api/student', params, 'y-error');
+}
+
 function startSphere() {
   const params = brdfParams();
   delete params.theta;
@@ -147,7 +162,8 @@ function pictureUrl(job) {
   return `/api/image.png?${query({ job: id, exposure, v })}`;
 }
 
-const imageOf = { render: 'r-image', stereo: 's-image', brdf: 'b-image' };
+const imageOf = { render: 'r-image', stereo: 's-image', brdf: 'b-image', student: 'y-mine' };
+const TABS = ['render', 'stereo', 'brdf', 'student'];
 
 // Loads the newest snapshot into a hidden image and swaps it in when whole
 // (no flicker); one load at a time.
@@ -157,6 +173,13 @@ function loadPicture() {
   if (!job || job.version === 0 || !job.picture) return;
   if (state.loading) { state.again = true; return; }
   state.loading = true;
+  if (job.kind === 'student') {
+    loadStudent(job).finally(() => {
+      state.loading = false;
+      if (state.again) { state.again = false; loadPicture(); }
+    });
+    return;
+  }
   const img = new Image();
   const done = () => {
     state.loading = false;
@@ -175,6 +198,35 @@ function loadPicture() {
   };
   img.onerror = done;
   img.src = pictureUrl(job);
+}
+
+// The "Your code" tab: both pictures and the z-map between them, with its
+// verdict (in the z-map's headers).
+async function loadStudent(job) {
+  const v = job.version;
+  const blob = async (path, params) => {
+    const r = await fetch(`${path}?${query({ job: job.id, v, ...params })}`, { cache: 'no-store' });
+    return r.ok ? { url: URL.createObjectURL(await r.blob()), headers: r.headers } : null;
+  };
+  const [mine, theirs, zmap] = await Promise.all([
+    blob('/api/image.png', { eye: 0 }), blob('/api/image.png', { eye: 1 }), blob('/api/zmap.png', {}),
+  ]);
+  for (const [id, got] of [['y-mine', mine], ['y-theirs', theirs], ['y-zmap', zmap]]) {
+    if (!got) continue;
+    const img = $(id);
+    if (img.src.startsWith('blob:')) URL.revokeObjectURL(img.src);
+    img.src = got.url;
+  }
+  if (zmap) {
+    const verdict = $('y-verdict');
+    verdict.textContent = `Tile z-test: ${zmap.headers.get('X-Lab-Verdict')}`;
+    const consistent = zmap.headers.get('X-Lab-Consistent') === 'true';
+    verdict.className = `verdict ${consistent ? 'good' : 'bad'}`;
+    verdict.dataset.consistent = consistent;
+    verdict.dataset.version = v;
+  }
+  state.shown = v;
+  for (const hook of state.onImage) hook(job, $('y-mine'));
 }
 
 function fmt(x) {
@@ -196,7 +248,10 @@ function updateStats() {
   if (job.done) text += job.error ? ' · failed' : job.interrupted ? ' · stopped' : ' · done';
   if (job.nonfinite > 0) text += ` · ${job.nonfinite} NaN/negative samples dropped`;
   if (job.note) text += `<br><span class="note">${escapeHtml(job.note)}</span>`;
-  const ids = { render: ['r-stats', 'r-command', 'r-error'], stereo: ['s-stats', 's-command', 's-error'], brdf: ['b-stats', null, 'b-error'] };
+  const ids = { render: ['r-stats', 'r-command', 'r-error'], stereo: ['s-stats', 's-command', 's-error'], brdf: ['b-stats', null, 'b-error'], student: ['y-stats', 'y-command', 'y-error'] };
+  if (job.kind === 'student' && job.nonfinite_by_eye && job.nonfinite_by_eye[0] > 0) {
+    text += `<br><span class="bad">your integrator returned ${job.nonfinite_by_eye[0]} samples that are NaN, infinite or negative (dropped from its picture)</span>`;
+  }
   const [stats, command, error] = ids[job.kind];
   $(stats).innerHTML = text;
   if (job.error) showError(error, job.error);
@@ -499,7 +554,7 @@ function perFrame(f) {
 
 function selectTab(tab) {
   state.tab = tab;
-  for (const name of ['render', 'stereo', 'brdf']) {
+  for (const name of TABS) {
     $(`tab-${name}`).setAttribute('aria-selected', String(name === tab));
     $(`panel-${name}`).hidden = name !== tab;
   }
@@ -507,6 +562,7 @@ function selectTab(tab) {
   // One render at a time per page: the tab shown is the one rendering.
   if (tab === 'render') return startRender();
   if (tab === 'stereo') return startStereo();
+  if (tab === 'student') return startStudent();
   updateBrdf();
   return startSphere();
 }
@@ -538,6 +594,7 @@ async function setup() {
   const scenes = r.body.scenes.map((s) => [s.name, s.builtin ? s.name : `${s.name} (file)`]);
   fill($('r-scene'), scenes, 'cornell');
   fill($('s-scene'), scenes, 'stereo');
+  fill($('y-scene'), scenes, 'cornell');
   const integrators = r.body.integrators.map((i) => [i[0], i[0]]);
   fill($('r-integrator'), integrators, 'path');
   // SPPM and Metropolis render whole images, not the pixel samples of a stereo pair.
@@ -603,7 +660,18 @@ async function setup() {
   });
   $('brdf-form').addEventListener('submit', (e) => e.preventDefault());
 
-  for (const name of ['render', 'stereo', 'brdf']) {
+  const restartStudent = perFrame(startStudent);
+  $('student-form').addEventListener('input', (e) => {
+    if (e.target.name === 'integrator') showStudentControls();
+    if (e.target.type === 'number' || e.target.type === 'text') return; // on change
+    restartStudent();
+  });
+  $('student-form').addEventListener('change', (e) => { if (e.target.type === 'number' || e.target.type === 'text') restartStudent(); });
+  $('student-form').addEventListener('submit', (e) => { e.preventDefault(); restartStudent(); });
+  $('y-stop').addEventListener('click', () => call('POST', '/api/stop', {}));
+  showStudentControls();
+
+  for (const name of TABS) {
     $(`tab-${name}`).addEventListener('click', () => selectTab(name));
   }
   pollLoop();
@@ -611,7 +679,7 @@ async function setup() {
   const tab = location.hash.slice(1);
   if (tab === 'selftest') selftest();
   else if (tab === 'layout') layoutCheck();
-  else selectTab(['stereo', 'brdf'].includes(tab) ? tab : 'render');
+  else selectTab(TABS.includes(tab) ? tab : 'render');
 }
 
 // ---- the self-test (#selftest) ----
