@@ -870,6 +870,58 @@ fn your_code_renders_beside_the_renderers_with_the_z_map_between() {
     );
 }
 
+/// Issue 27, "the equal-time race": three integrators render the same
+/// scene at once, one thread each, for the same time; the status carries
+/// each one's RMSE against the reference at every snapshot (the page plots
+/// them on log–log axes), and each error falls as the picture converges.
+#[test]
+fn the_race_runs_three_integrators_and_measures_each_ones_rmse() {
+    let lab = Lab::start(&[]);
+    let r = lab.post(
+        "/api/race?page=r&scene=cornell&racers=path,path-brdf,bdpt&width=32&height=32&seconds=3",
+    );
+    assert_eq!(r.status, 200, "{}", r.text());
+    let s = lab.wait_done("r", Duration::from_secs(60));
+    assert_eq!(s["job"]["interrupted"], false, "{s}");
+    assert_eq!(s["job"]["error"], Value::Null, "{s}");
+    let lines = s["job"]["race"][0].as_array().unwrap();
+    let floor = s["job"]["race"][1].as_f64().unwrap();
+    assert!(floor > 0.0, "{s}");
+    let names: Vec<&str> = lines
+        .iter()
+        .map(|l| l["integrator"].as_str().unwrap())
+        .collect();
+    assert_eq!(names.len(), 3, "{names:?}");
+    for line in lines {
+        let points = line["points"].as_array().unwrap();
+        assert!(points.len() >= 3, "{line}");
+        let rmse: Vec<f64> = points.iter().map(|p| p[1].as_f64().unwrap()).collect();
+        let time: Vec<f64> = points.iter().map(|p| p[0].as_f64().unwrap()).collect();
+        assert!(rmse.iter().all(|e| e.is_finite() && *e > 0.0), "{line}");
+        assert!(time.windows(2).all(|w| w[1] >= w[0]), "{line}");
+        assert!(rmse.last() < rmse.first(), "the error falls: {line}");
+        assert!(*time.last().unwrap() <= 3.5, "equal time: {line}");
+    }
+    for eye in 0..3 {
+        let r = lab.get(&format!("/api/image.png?page=r&eye={eye}"));
+        assert_eq!(r.png_size(), (32, 32));
+    }
+    // Bad races get one line each.
+    for (query, reason) in [
+        ("racers=path", "2 or 3 integrators"),
+        ("racers=path,sppm", "integrators of pixel samples"),
+        ("scene=veach-mis&racers=path,bdpt", "stored reference"),
+        (
+            "scene=cornell&racers=path,bdpt&width=100&height=100",
+            "divides it",
+        ),
+    ] {
+        let r = lab.post(&format!("/api/race?page=r&{query}"));
+        assert_eq!(r.status, 400, "{query}");
+        assert!(r.text().contains(reason), "{query}: {}", r.text());
+    }
+}
+
 /// Both eyes render; every composite comes from the same pair, in the size
 /// its layout gives; the BRDF tab's verdict tells normalized from original Phong.
 #[test]

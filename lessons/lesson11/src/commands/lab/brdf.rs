@@ -264,6 +264,7 @@ pub fn sphere_job(q: &Query, choice: &BrdfChoice) -> Result<JobSpec, String> {
         plan: IntegratorPlan::Ready(Box::new(integrator)),
         options,
         student: None,
+        race: None,
     })
 }
 

@@ -80,6 +80,29 @@ pub struct JobSpec {
     /// The "Your code" tab: the student's integrator (eye 0) beside the
     /// renderer's of the same estimator (eye 1), instead of `plan`.
     pub student: Option<StudentPair>,
+    /// The Race tab: integrators that render the same scene at once, each
+    /// on a thread of its own, measured against a reference, instead of
+    /// `plan`.
+    pub race: Option<Racers>,
+}
+
+/// An equal-time race (`race.rs`).
+pub struct Racers {
+    pub integrators: Vec<Box<dyn Integrator + Send>>,
+    /// How long each renders.
+    pub seconds: f64,
+    /// The image each snapshot's RMSE is measured against.
+    pub reference: Arc<Image>,
+    /// The reference's own noise: no error measured with it goes below.
+    pub floor: f64,
+}
+
+/// One racer's line of the plot.
+#[derive(Clone, Serialize)]
+pub struct RaceLine {
+    pub integrator: &'static str,
+    /// (seconds, RMSE) at each snapshot.
+    pub points: Vec<[f64; 2]>,
 }
 
 /// The student's integrator and the renderer's beside it, made on the
@@ -130,6 +153,7 @@ enum Work {
     Metropolis(Bdpt, Metropolis),
     /// The student's integrator beside the renderer's.
     Student(StudentPair),
+    Race(Vec<Box<dyn Integrator + Send>>, f64),
 }
 
 struct State {
@@ -147,6 +171,8 @@ struct State {
     cancelled_at: Option<Instant>,
     /// The phase the stop request came in.
     cancelled_in: Option<Phase>,
+    /// The race's lines, one per eye.
+    race: Vec<RaceLine>,
     /// From the stop request to the end of the job's thread.
     stopped_after: Option<Duration>,
 }
@@ -175,6 +201,8 @@ pub struct Job {
     build_for: Option<Scene>,
     /// The exercise of the "Your code" tab ([`JobSpec::student`]).
     exercise: Option<&'static str>,
+    /// The race's reference and its noise floor ([`JobSpec::race`]).
+    race_reference: Option<(Arc<Image>, f64)>,
     started: Instant,
     stop: AtomicBool,
     state: Mutex<State>,
@@ -213,6 +241,8 @@ pub struct JobStatus {
     pub nonfinite: u64,
     /// The same, eye by eye (the student's integrator is eye 0 of its tab).
     pub nonfinite_by_eye: Vec<u64>,
+    /// The race's lines (RMSE against time), and the reference's noise floor.
+    pub race: Option<(Vec<RaceLine>, f64)>,
     pub version: u64,
     /// The phase the render was in when it was asked to stop.
     pub cancelled_in: Option<Phase>,
@@ -243,7 +273,26 @@ impl Job {
         let first = scenes.first().ok_or("a job without a picture")?;
         let integrator = OnceLock::new();
         let exercise = spec.student.as_ref().map(|p| p.exercise);
+        let race_reference = spec.race.as_ref().map(|r| (r.reference.clone(), r.floor));
+        let race_lines: Vec<RaceLine> = spec.race.as_ref().map_or(Vec::new(), |r| {
+            r.integrators
+                .iter()
+                .map(|i| RaceLine {
+                    integrator: i.name(),
+                    points: Vec::new(),
+                })
+                .collect()
+        });
         let (work, units, no_samples, building) = match spec.plan {
+            _ if spec.race.is_some() => {
+                let r = spec.race.expect("checked");
+                (
+                    Work::Race(r.integrators, r.seconds),
+                    ("spp", "samples"),
+                    None,
+                    None,
+                )
+            }
             _ if spec.student.is_some() => (
                 Work::Student(spec.student.expect("checked")),
                 ("spp", "samples"),
@@ -291,6 +340,7 @@ impl Job {
             scenes: scenes.clone(),
             build_for: spec.build_for,
             exercise,
+            race_reference,
             started: Instant::now(),
             stop: AtomicBool::new(false),
             state: Mutex::new(State {
@@ -308,6 +358,7 @@ impl Job {
                 cancelled_at: None,
                 cancelled_in: None,
                 stopped_after: None,
+                race: race_lines,
             }),
             changed: Condvar::new(),
         });
@@ -345,6 +396,7 @@ impl Job {
                 return Ok(self.render_metropolis(&bdpt, &metropolis, &options));
             }
             Work::Student(pair) => return Ok(self.render_student(pair, &options)),
+            Work::Race(racers, seconds) => return Ok(self.render_race(&racers, seconds, &options)),
             Work::Samples => match self.integrator.get() {
                 Some(i) => i.clone(),
                 None => return Err("the render has no integrator".into()),
@@ -392,6 +444,49 @@ impl Job {
             let student = self.render_eye(0, mine, student.as_ref(), options);
             student & reference.join().unwrap_or(false)
         })
+    }
+
+    /// Every racer at once, each on one thread of its own, until `seconds`
+    /// have passed (or all are done); true unless stopped by the page.
+    fn render_race(
+        &self,
+        racers: &[Box<dyn Integrator + Send>],
+        seconds: f64,
+        options: &RenderOptions,
+    ) -> bool {
+        let one = RenderOptions {
+            threads: Some(1),
+            ..options.clone()
+        };
+        let finished = AtomicBool::new(false);
+        let mut timed_out = false;
+        std::thread::scope(|s| {
+            let timer = s.spawn(|| {
+                let end = Instant::now() + Duration::from_secs_f64(seconds);
+                while Instant::now() < end {
+                    if finished.load(Ordering::Relaxed) || self.stopped() {
+                        return false;
+                    }
+                    std::thread::sleep(Duration::from_millis(20));
+                }
+                self.stop.store(true, Ordering::SeqCst);
+                true
+            });
+            let threads: Vec<_> = racers
+                .iter()
+                .enumerate()
+                .map(|(eye, racer)| {
+                    let (scene, one) = (&self.scenes[eye], &one);
+                    s.spawn(move || self.render_eye(eye, scene, racer.as_ref(), one))
+                })
+                .collect();
+            for t in threads {
+                let _ = t.join();
+            }
+            finished.store(true, Ordering::Relaxed);
+            timed_out = timer.join().unwrap_or(false);
+        });
+        timed_out || !self.stopped()
     }
 
     /// A panic in the student's integrator at `pixel`: the job stops and
@@ -671,7 +766,20 @@ impl Job {
     }
 
     fn publish(&self, eye: usize, snapshot: Snapshot, note: Option<String>) {
+        // A racer's error against the reference at this moment, once every
+        // pixel has a sample (a pixel without one is black, and in a dark
+        // scene black is close: the error of a partial first pass misleads).
+        let point = match (&self.race_reference, &snapshot.image) {
+            (Some((reference, _)), Some(image)) if snapshot.complete_spp > 0 => Some([
+                snapshot.elapsed.as_secs_f64(),
+                super::race::rmse(image, reference),
+            ]),
+            _ => None,
+        };
         self.update(|s| {
+            if let (Some(p), Some(line)) = (point, s.race.get_mut(eye)) {
+                line.points.push(p);
+            }
             s.eyes[eye] = snapshot;
             if note.is_some() {
                 s.note = note;
@@ -790,6 +898,10 @@ impl Job {
             interrupted: state.interrupted,
             nonfinite: state.eyes.iter().map(|e| e.nonfinite).sum(),
             nonfinite_by_eye: state.eyes.iter().map(|e| e.nonfinite).collect(),
+            race: self
+                .race_reference
+                .as_ref()
+                .map(|(_, floor)| (state.race.clone(), *floor)),
             version: state.version,
             cancelled_in: state.cancelled_in,
             stopped_after_ms: state.stopped_after.map(|d| d.as_secs_f64() * 1e3),

@@ -14,6 +14,7 @@
 //! | `POST /api/stereo?page=P&…&separation=…&convergence=…&toe-in=1` | starts both eyes |
 //! | `POST /api/brdf-sphere?page=P&model=…&spp=…` | starts a ball of that BRDF |
 //! | `POST /api/student?page=P&integrator=…&…` | starts the student's integrator beside the renderer's (options of `lesson11 render --student`) |
+//! | `POST /api/race?page=P&racers=path,light,bdpt&seconds=S&scene=…` | an equal-time race, RMSE against time in the status |
 //! | `GET /api/zmap.png?page=P` | the tile z-map between them (headers: the verdict) |
 //! | `POST /api/stop?page=P` | stops the page's render |
 //! | `GET /api/status?page=P&after=V` | the render's phase (building, rendering, done) and progress, once a change newer than V is out (at most 2 s) |
@@ -36,6 +37,7 @@ use super::brdf::{self, BRDF_PARAMS};
 use super::job::Job;
 use super::pages::{IDLE, Pages};
 use super::query::Query;
+use super::race::{self, RACE_PARAMS};
 use super::settings::{MAX_PIXELS, MAX_SPP, RENDER_PARAMS, SceneFolder, render_setup};
 use super::stereo::{self, COMPOSITE_PARAMS, RIG_PARAMS};
 use super::student::{self, ZMap};
@@ -258,11 +260,16 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
                 plan: setup.plan,
                 options: setup.options,
                 student: None,
+                race: None,
             };
             started(state.pages.start(q.page()?, spec)?)
         }),
         "/api/stereo" => post(&with(&[RENDER_PARAMS, RIG_PARAMS]), &|q| {
             let spec = stereo::stereo_job(q, &state.folder)?;
+            started(state.pages.start(q.page()?, spec)?)
+        }),
+        "/api/race" => post(&with(&[RENDER_PARAMS, RACE_PARAMS]), &|q| {
+            let spec = race::race_job(q, &state.folder)?;
             started(state.pages.start(q.page()?, spec)?)
         }),
         "/api/student" => post(&with(&[RENDER_PARAMS]), &|q| {

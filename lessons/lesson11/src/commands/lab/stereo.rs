@@ -66,6 +66,7 @@ pub fn stereo_job(q: &Query, folder: &SceneFolder) -> Result<JobSpec, String> {
         plan: setup.plan,
         options: setup.options,
         student: None,
+        race: None,
     })
 }
 

@@ -46,6 +46,7 @@ pub fn student_job(q: &Query, folder: &SceneFolder) -> Result<JobSpec, String> {
             exercise: which.exercise(),
             make: Box::new(move || (which.student(), which.reference())),
         }),
+        race: None,
     })
 }
 

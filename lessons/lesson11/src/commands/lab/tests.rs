@@ -219,6 +219,7 @@ fn student_job(
             exercise: "ex13_mis",
             make: Box::new(move || (student, Box::new(PathTracer::default()))),
         }),
+        race: None,
     };
     let job = lab.pages().start(page, spec).unwrap();
     let end = std::time::Instant::now() + Duration::from_secs(120);

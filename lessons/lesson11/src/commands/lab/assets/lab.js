@@ -101,6 +101,75 @@ function brdfParams() {
   return params;
 }
 
+function startRace() {
+  const params = formParams($('race-form'));
+  params.racers = [...document.querySelectorAll('#race-form .racer')].map((el) => el.value).filter((v) => v).join(',');
+  $('race-plot').replaceChildren();
+  $('race-images').replaceChildren();
+  return start('race', '/api/race', params, 'race-error');
+}
+
+// The racers' pictures, one per integrator.
+async function loadRace(job) {
+  const holder = $('race-images');
+  const lines = (job.race && job.race[0]) || [];
+  lines.forEach((line, eye) => {
+    let fig = holder.children[eye];
+    if (!fig) {
+      fig = document.createElement('figure');
+      fig.append(document.createElement('img'), document.createElement('figcaption'));
+      holder.appendChild(fig);
+    }
+    fig.querySelector('img').src = `/api/image.png?${query({ job: job.id, eye, v: job.version })}`;
+    fig.querySelector('figcaption').textContent = line.integrator;
+    fig.querySelector('figcaption').style.color = RACE_COLOURS[eye];
+  });
+  state.shown = job.version;
+}
+
+// RMSE against time on log–log axes, one line per racer, the reference's
+// noise floor dashed.
+function drawRace(job) {
+  const plot = $('race-plot');
+  const [lines, floor] = job.race || [[], 0];
+  const points = lines.flatMap((l) => l.points).filter(([t, e]) => t > 0 && e > 0);
+  plot.replaceChildren();
+  if (points.length === 0) return;
+  const log = Math.log10;
+  const ts = points.map((p) => log(p[0]));
+  const es = points.map((p) => log(p[1])).concat(floor > 0 ? [log(floor)] : []);
+  const t0 = Math.floor(Math.min(...ts)), t1 = Math.max(Math.ceil(Math.max(...ts)), t0 + 1);
+  const e0 = Math.floor(Math.min(...es)), e1 = Math.max(Math.ceil(Math.max(...es)), e0 + 1);
+  const [L, R, T, B] = [60, 580, 15, 300];
+  const X = (t) => L + (log(t) - t0) / (t1 - t0) * (R - L);
+  const Y = (e) => B - (log(e) - e0) / (e1 - e0) * (B - T);
+  const text = (x, y, s, anchor, fill = '#aaa') => {
+    const el = svg('text', { x, y, fill, 'font-size': 11, 'text-anchor': anchor }, plot);
+    el.textContent = s;
+    return el;
+  };
+  svg('rect', { x: L, y: T, width: R - L, height: B - T, fill: 'none', stroke: '#555' }, plot);
+  for (let k = t0; k <= t1; k++) {
+    const x = L + (k - t0) / (t1 - t0) * (R - L);
+    svg('line', { x1: x, y1: T, x2: x, y2: B, stroke: '#333' }, plot);
+    text(x, B + 15, `${Number((10 ** k).toPrecision(1))} s`, 'middle');
+  }
+  for (let k = e0; k <= e1; k++) {
+    const y = B - (k - e0) / (e1 - e0) * (B - T);
+    svg('line', { x1: L, y1: y, x2: R, y2: y, stroke: '#333' }, plot);
+    text(L - 5, y + 4, `1e${k}`, 'end');
+  }
+  text((L + R) / 2, B + 32, 'time (seconds, log scale)', 'middle');
+  const label = text(14, (T + B) / 2, 'RMSE against the reference (log scale)', 'middle');
+  label.setAttribute('transform', `rotate(-90 14 ${(T + B) / 2})`);
+  if (floor > 0) svg('line', { x1: L, y1: Y(floor), x2: R, y2: Y(floor), stroke: '#888', 'stroke-dasharray': '5 4', class: 'floor' }, plot);
+  lines.forEach((line, i) => {
+    const pts = line.points.filter(([t, e]) => t > 0 && e > 0).map(([t, e]) => `${X(t)},${Y(e)}`).join(' ');
+    if (pts) svg('polyline', { points: pts, fill: 'none', stroke: RACE_COLOURS[i], 'stroke-width': 2, class: 'race-line', 'data-integrator': line.integrator }, plot);
+    text(R - 5, T + 15 + 14 * i, line.integrator, 'end', RACE_COLOURS[i]);
+  });
+}
+
 function showStudentControls() {
   const integrator = $('y-integrator').value;
   document.querySelectorAll('#student-form .y-depth').forEach((el) => { el.hidden = integrator === 'direct'; });
@@ -163,7 +232,8 @@ function pictureUrl(job) {
 }
 
 const imageOf = { render: 'r-image', stereo: 's-image', brdf: 'b-image', student: 'y-mine' };
-const TABS = ['render', 'stereo', 'brdf', 'student'];
+const TABS = ['render', 'stereo', 'brdf', 'student', 'race'];
+const RACE_COLOURS = ['#ffcc33', '#66ccff', '#ff77aa'];
 
 // Loads the newest snapshot into a hidden image and swaps it in when whole
 // (no flicker); one load at a time.
@@ -173,8 +243,8 @@ function loadPicture() {
   if (!job || job.version === 0 || !job.picture) return;
   if (state.loading) { state.again = true; return; }
   state.loading = true;
-  if (job.kind === 'student') {
-    loadStudent(job).finally(() => {
+  if (job.kind === 'student' || job.kind === 'race') {
+    (job.kind === 'student' ? loadStudent(job) : loadRace(job)).finally(() => {
       state.loading = false;
       if (state.again) { state.again = false; loadPicture(); }
     });
@@ -248,7 +318,8 @@ function updateStats() {
   if (job.done) text += job.error ? ' · failed' : job.interrupted ? ' · stopped' : ' · done';
   if (job.nonfinite > 0) text += ` · ${job.nonfinite} NaN/negative samples dropped`;
   if (job.note) text += `<br><span class="note">${escapeHtml(job.note)}</span>`;
-  const ids = { render: ['r-stats', 'r-command', 'r-error'], stereo: ['s-stats', 's-command', 's-error'], brdf: ['b-stats', null, 'b-error'], student: ['y-stats', 'y-command', 'y-error'] };
+  if (job.kind === 'race') drawRace(job);
+  const ids = { race: ['race-stats', null, 'race-error'], render: ['r-stats', 'r-command', 'r-error'], stereo: ['s-stats', 's-command', 's-error'], brdf: ['b-stats', null, 'b-error'], student: ['y-stats', 'y-command', 'y-error'] };
   if (job.kind === 'student' && job.nonfinite_by_eye && job.nonfinite_by_eye[0] > 0) {
     text += `<br><span class="bad">your integrator returned ${job.nonfinite_by_eye[0]} samples that are NaN, infinite or negative (dropped from its picture)</span>`;
   }
@@ -563,6 +634,7 @@ function selectTab(tab) {
   if (tab === 'render') return startRender();
   if (tab === 'stereo') return startStereo();
   if (tab === 'student') return startStudent();
+  if (tab === 'race') return startRace();
   updateBrdf();
   return startSphere();
 }
@@ -660,6 +732,9 @@ async function setup() {
   });
   $('brdf-form').addEventListener('submit', (e) => e.preventDefault());
 
+  $('race-start').addEventListener('click', startRace);
+  $('race-stop').addEventListener('click', () => call('POST', '/api/stop', {}));
+  $('race-form').addEventListener('submit', (e) => { e.preventDefault(); startRace(); });
   const restartStudent = perFrame(startStudent);
   $('student-form').addEventListener('input', (e) => {
     if (e.target.name === 'integrator') showStudentControls();
