@@ -23,12 +23,14 @@
 //! - `lab/student.rs`: the "Your code" tab (the student's integrator beside
 //!   the renderer's, and the tile z-map between them);
 //! - `lab/paths.rs`: the path inspector's data (a recorded pixel sample);
+//! - `lab/preview.rs`: the coarse preview of an incomplete first pass;
 //! - `lab/assets/`: the page.
 
 mod brdf;
 mod job;
 mod pages;
 mod paths;
+mod preview;
 mod query;
 mod race;
 mod server;

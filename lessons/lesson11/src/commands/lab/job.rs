@@ -39,6 +39,7 @@ use serde::Serialize;
 
 use raytracer::math::{Color, UVec2};
 
+use super::preview::coarse_preview;
 use super::settings::one_line;
 use crate::integrators::{BiasedPlan, IntegratorPlan};
 
@@ -131,6 +132,9 @@ pub struct Snapshot {
     pub nonfinite: u64,
     /// The variance of each pixel's mean (the "Your code" tab's z-map).
     pub variance: Option<Arc<Image>>,
+    /// What the page shows while the first pass is incomplete
+    /// ([`super::preview::coarse_preview`]); `None`: `image` itself.
+    pub preview: Option<Arc<Image>>,
 }
 
 /// What a job is doing.
@@ -564,10 +568,13 @@ impl Job {
             if !throttle.due() {
                 return;
             }
+            let image = p.film.image();
+            let preview = coarse_preview(p.film, &image).map(Arc::new);
             self.publish(
                 eye,
                 Snapshot {
-                    image: Some(Arc::new(p.film.image())),
+                    preview,
+                    image: Some(Arc::new(image)),
                     samples: p.film.total_samples(),
                     complete_spp: p.complete_spp,
                     elapsed: p.elapsed,
@@ -610,6 +617,7 @@ impl Job {
                 elapsed: result.stats.elapsed,
                 nonfinite: result.stats.nonfinite,
                 variance: student.then(|| Arc::new(result.film.variance_image())),
+                preview: None,
             },
             None,
         );
@@ -641,6 +649,7 @@ impl Job {
                     elapsed: p.elapsed,
                     nonfinite: 0,
                     variance: None,
+                    preview: None,
                 },
                 Some(note(p.passes)),
             );
@@ -663,6 +672,7 @@ impl Job {
                     elapsed: r.stats.elapsed,
                     nonfinite: 0,
                     variance: None,
+                    preview: None,
                 },
                 Some(line),
             );
@@ -715,6 +725,7 @@ impl Job {
                     elapsed: p.elapsed,
                     nonfinite: 0,
                     variance: None,
+                    preview: None,
                 },
                 final_note.clone(),
             );
@@ -734,6 +745,7 @@ impl Job {
                     elapsed: r.stats.elapsed,
                     nonfinite: r.stats.nonfinite,
                     variance: None,
+                    preview: None,
                 },
                 final_note,
             );
@@ -839,6 +851,16 @@ impl Job {
     /// The latest snapshot of every eye.
     pub fn snapshots(&self) -> Vec<Snapshot> {
         lock(&self.state).eyes.clone()
+    }
+
+    /// The pictures the page shows, one per eye: the coarse preview while
+    /// the first pass is incomplete, else the picture.
+    pub fn shown_images(&self) -> Vec<Option<Arc<Image>>> {
+        lock(&self.state)
+            .eyes
+            .iter()
+            .map(|e| e.preview.clone().or_else(|| e.image.clone()))
+            .collect()
     }
 
     /// The latest pictures, one per eye (`None` before the first snapshot).

@@ -315,11 +315,11 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
         }),
         "/api/image.png" => get(&["page", "job", "exposure", "eye", "v"], &|q| {
             let exposure = q.in_range("exposure", 0.0, -64.0..=64.0)?;
-            let (job, image) = eye_image(state, q)?;
+            let (job, image) = eye_image(state, q, Job::shown_images)?;
             png(&image, exposure, &job)
         }),
         "/api/image.exr" => get(&["page", "job", "eye", "v"], &|q| {
-            let (job, image) = eye_image(state, q)?;
+            let (job, image) = eye_image(state, q, Job::images)?;
             let bytes = image.exr_bytes().map_err(|e| e.to_string())?;
             Ok(with_progress(Reply::ok("image/x-exr", bytes), &job))
         }),
@@ -328,7 +328,7 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
             &|q| {
                 let exposure = q.in_range("exposure", 0.0, -64.0..=64.0)?;
                 let job = page_job(state, q)?;
-                let images = job.images();
+                let images = job.shown_images();
                 let (Some(Some(left)), Some(Some(right))) = (images.first(), images.get(1)) else {
                     return Err(
                     "the page's render is not a stereo pair (start one with /api/stereo), or has no picture yet"
@@ -372,11 +372,16 @@ fn page_job(state: &State, q: &Query) -> Result<Arc<Job>, String> {
     }
 }
 
-/// One eye's latest picture (`eye`, 0 unless given).
-fn eye_image(state: &State, q: &Query) -> Result<(Arc<Job>, Arc<raytracer::film::Image>), String> {
+/// One eye's latest picture (`eye`, 0 unless given) of those `which` gives
+/// (the film's, or what the page shows).
+fn eye_image(
+    state: &State,
+    q: &Query,
+    which: fn(&Job) -> Vec<Option<Arc<raytracer::film::Image>>>,
+) -> Result<(Arc<Job>, Arc<raytracer::film::Image>), String> {
     let job = page_job(state, q)?;
     let eye: usize = q.number("eye", 0)?;
-    let images = job.images();
+    let images = which(&job);
     let image = images
         .get(eye)
         .ok_or_else(|| format!("`eye` must be below {}, got {eye}", images.len()))?
