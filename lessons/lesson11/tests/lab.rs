@@ -1199,6 +1199,43 @@ fn at_800_px_the_picture_comes_before_the_controls() {
     assert!(r["window"]["scrollWidth"].as_f64().unwrap() <= 800.0, "{r}");
 }
 
+/// Issue 27 (and 30): the page switches between English and Bulgarian on
+/// the page; `?lang=bg` opens it in Bulgarian, with the lecture's terms.
+#[test]
+fn the_page_speaks_bulgarian_when_asked() {
+    let Some(chromium) = chromium::chromium() else {
+        eprintln!("skipped: no chromium, so the page's Bulgarian was not checked");
+        return;
+    };
+    let lab = Lab::start(&[]);
+    let dom = chromium::run(
+        &chromium,
+        &format!("{}?lang=bg", lab.url),
+        &[
+            "--window-size=1280,720".into(),
+            "--virtual-time-budget=3000".into(),
+            "--dump-dom".into(),
+        ],
+        Duration::from_secs(120),
+    )
+    .unwrap();
+    assert!(dom.contains("<html lang=\"bg\""), "{}", &dom[..200]);
+    for bg in [
+        "Рендер",
+        "Максимална дълбочина D",
+        "Руска рулетка",
+        "Инспектор на пътища",
+        "Легенда",
+    ] {
+        assert!(dom.contains(bg), "{bg} on the page");
+    }
+    assert!(
+        !dom.contains(">Path inspector<"),
+        "the English heading is replaced"
+    );
+    assert!(dom.contains(">EN<"), "the switch offers English back");
+}
+
 /// The README presents the lab, and its first screen still gives exactly
 /// the two set-up commands.
 #[test]

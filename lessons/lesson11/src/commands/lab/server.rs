@@ -8,7 +8,7 @@
 //!
 //! | request | answer |
 //! |---|---|
-//! | `GET /`, `/lab.css`, `/lab.js`, `/favicon.svg` | the page |
+//! | `GET /` (`?lang=bg`: in Bulgarian), `/lab.css`, `/lab.js`, `/i18n.js`, `/favicon.svg` | the page |
 //! | `GET /api/scenes` | scenes, integrators, composites, limits |
 //! | `POST /api/render?page=P&scene=…&integrator=…&max-depth=…&spp=…&seed=…` | starts the page's render (options of `lesson11 render`) |
 //! | `POST /api/stereo?page=P&…&separation=…&convergence=…&toe-in=1` | starts both eyes |
@@ -53,6 +53,7 @@ const INDEX_HTML: &str = include_str!("assets/index.html");
 const LAB_CSS: &str = include_str!("assets/lab.css");
 const LAB_JS: &str = include_str!("assets/lab.js");
 const FAVICON: &str = include_str!("assets/favicon.svg");
+const I18N_JS: &str = include_str!("assets/i18n.js");
 
 /// What the lab is started with.
 #[derive(Clone, Default)]
@@ -238,12 +239,16 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
             .unwrap_or_else(Reply::bad)
     };
     match path {
-        "/" | "/index.html" => get(&[], &|_| {
+        // `?lang=bg` opens the page in Bulgarian.
+        "/" | "/index.html" => get(&["lang"], &|_| {
             Ok(Reply::ok("text/html; charset=utf-8", INDEX_HTML))
         }),
         "/lab.css" => get(&[], &|_| Ok(Reply::ok("text/css; charset=utf-8", LAB_CSS))),
         "/lab.js" => get(&[], &|_| {
             Ok(Reply::ok("text/javascript; charset=utf-8", LAB_JS))
+        }),
+        "/i18n.js" => get(&[], &|_| {
+            Ok(Reply::ok("text/javascript; charset=utf-8", I18N_JS))
         }),
         "/favicon.svg" | "/favicon.ico" => get(&[], &|_| Ok(Reply::ok("image/svg+xml", FAVICON))),
         "/api/scenes" => get(&[], &|_| Ok(Reply::json(&catalogue(state)))),

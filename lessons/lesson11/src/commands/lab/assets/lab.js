@@ -411,7 +411,7 @@ async function inspectPixel(x, y) {
     const hidden = drawPaths(r.body);
     note.textContent = `pixel (${x}, ${y}), sample ${r.body.sample}: estimate ${rgb(r.body.estimate)}` +
       (r.body.truncated ? ` (${r.body.truncated})` : '') + hidden;
-    const why = WHY[r.body.integrator];
+    const why = WHY[r.body.integrator] && tr(`why.${r.body.integrator}`, WHY[r.body.integrator]);
     $('inspector-why').textContent = why || '';
     $('inspector-why').hidden = !why;
   } else {
@@ -656,11 +656,24 @@ const MODE_HELP = {
   right: 'The right eye’s picture alone.',
 };
 
-function showModeHelp() { $('s-mode-help').textContent = MODE_HELP[$('s-mode').value] || ''; }
+function showModeHelp() {
+  const mode = $('s-mode').value;
+  $('s-mode-help').textContent = tr(`mode.${mode}`, MODE_HELP[mode] || '');
+}
 
 function echo(id, text) { $(`${id}-out`).textContent = text; }
 
+// The other language, and what the script wrote again in it.
+function switchLanguage() {
+  applyLanguage(lang === 'bg' ? 'en' : 'bg', () => {
+    showModeHelp();
+    if (state.clicked) inspectPixel(...state.clicked);
+  });
+}
+
 async function setup() {
+  applyLanguage(initialLanguage());
+  $('lang').addEventListener('click', switchLanguage);
   const r = await call('GET', '/api/scenes', {}, false);
   window.catalogue = r.body;
   const scenes = r.body.scenes.map((s) => [s.name, s.builtin ? s.name : `${s.name} (file)`]);
