@@ -1181,6 +1181,12 @@ fn at_1280_by_720_the_picture_and_the_inspector_are_side_by_side_in_view() {
     assert!(r["line"]["width"].as_f64().unwrap() >= 2.0, "{r}");
     assert_eq!(r["why"], true, "{r}");
     assert_eq!(r["favicon"], true, "{r}");
+    assert!(
+        r["resampled"]
+            .as_str()
+            .is_some_and(|t| t.contains("sample 1:")),
+        "changing sample k redraws: {r}"
+    );
 }
 
 /// Issue 27: at 800 px wide the picture comes before the controls' detail.

@@ -902,6 +902,10 @@ async function layoutCheck() {
     out.rows = $('inspector-table').rows.length;
     out.why = !$('inspector-why').hidden;
     out.favicon = !!document.querySelector('link[rel="icon"]');
+    // A new sample k redraws the pixel clicked.
+    $('i-sample').value = '1';
+    $('i-sample').dispatchEvent(new Event('change'));
+    out.resampled = await until(() => $('inspector-note').textContent.includes('sample 1:') && $('inspector-note').textContent, 20000);
     await call('POST', '/api/stop', {});
   } catch (e) {
     out.errors.push(String(e && e.stack || e));
