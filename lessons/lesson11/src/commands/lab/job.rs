@@ -784,7 +784,7 @@ impl Job {
         let point = match (&self.race_reference, &snapshot.image) {
             (Some((reference, _)), Some(image)) if snapshot.complete_spp > 0 => Some([
                 snapshot.elapsed.as_secs_f64(),
-                super::race::rmse(image, reference),
+                raytracer::metrics::rmse(image, reference) as f64,
             ]),
             _ => None,
         };

@@ -12,8 +12,6 @@
 //! size that divides theirs; every racer renders at the reference's max
 //! depth.
 
-use raytracer::film::Image;
-
 use super::job::{JobSpec, Racers};
 use super::query::Query;
 use super::settings::{RENDER_PARAMS, SceneFolder, render_setup};
@@ -121,9 +119,4 @@ pub fn race_job(q: &Query, folder: &SceneFolder) -> Result<JobSpec, String> {
             floor,
         }),
     })
-}
-
-/// The RMSE of `image` against the reference, over pixels and channels.
-pub fn rmse(image: &Image, reference: &Image) -> f64 {
-    raytracer::metrics::rmse(image, reference) as f64
 }
