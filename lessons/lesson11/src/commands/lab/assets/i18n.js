@@ -66,7 +66,26 @@ const BG = {
   "mode.cross-eyed": "Картината на дясното око вляво: кривогледайте, докато двете се слеят в трета по средата.",
   "mode.over-under": "Картината на лявото око над тази на дясното: за огледални визьори (побира се по височината на прозореца).",
   "mode.left": "Само картината на лявото око.",
-  "mode.right": "Само картината на дясното око."
+  "mode.right": "Само картината на дясното око.",
+  "s.separation": "Разстояние между очите",
+  "s.h.separation": "Разстоянието между очите по rightDir на камерата (на човек: 0,065 m).",
+  "s.focus": "конвергенция на фокусното разстояние",
+  "s.convergence": "Конвергенция",
+  "s.h.convergence": "Каквото е на това разстояние, се вижда в равнината на екрана (нулев паралакс).",
+  "s.toein": "toe-in (с недостатък: вертикален паралакс)",
+  "s.mode": "Показване като",
+  "s.desaturate": "Обезцветяване",
+  "s.h.desaturate": "Обезцветяването помага на очите да слеят наситените цветове през филтрите.",
+  "s.exposure": "Експозиция",
+  "s.stops": "стопа",
+  "s.size": "Размер на всяко око (пиксели)",
+  "b.albedo": "Албедо ρ",
+  "b.exponent": "Степен n",
+  "b.ior": "Коефициент на пречупване η",
+  "b.theta": "Светлина от θ",
+  "b.albedoplot": "Насочено албедо ∫ f<sub>r</sub> cos θ<sub>i</sub> dω<sub>i</sub> спрямо θ<sub>o</sub>; пунктирът е 1.",
+  "ph.scene": "на сцената",
+  "ph.scene2": "на сцената"
 };
 
 // The page's English text, read once from the page itself.
@@ -87,6 +106,11 @@ function applyLanguage(to, then) {
     const key = el.dataset.i18n;
     if (!(key in EN)) EN[key] = el.innerHTML;
     el.innerHTML = (lang === 'bg' && BG[key]) || EN[key];
+  }
+  for (const el of document.querySelectorAll('[data-i18n-placeholder]')) {
+    const key = el.dataset.i18nPlaceholder;
+    if (!(key in EN)) EN[key] = el.placeholder;
+    el.placeholder = (lang === 'bg' && BG[key]) || EN[key];
   }
   const button = document.getElementById('lang');
   if (button) button.textContent = lang === 'bg' ? 'EN' : 'БГ';
