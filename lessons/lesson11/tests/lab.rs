@@ -1187,6 +1187,13 @@ fn at_1280_by_720_the_picture_and_the_inspector_are_side_by_side_in_view() {
             .is_some_and(|t| t.contains("sample 1:")),
         "changing sample k redraws: {r}"
     );
+    // Naive recursion's tree, 585 rays: drawn and listed to depth 2 only,
+    // saying how much is hidden, and the page keeps its length.
+    let naive = &r["naive"];
+    assert_eq!(naive["depth_control"], true, "{r}");
+    assert!(naive["note"].as_str().unwrap().contains("not shown"), "{r}");
+    assert!(naive["rows"].as_u64().unwrap() <= 1 + 8 + 8, "{r}");
+    assert!(naive["page_height"].as_f64().unwrap() <= h * 1.25, "{r}");
 }
 
 /// Issue 27: at 800 px wide the picture comes before the controls' detail.

@@ -906,6 +906,23 @@ async function layoutCheck() {
     $('i-sample').value = '1';
     $('i-sample').dispatchEvent(new Event('change'));
     out.resampled = await until(() => $('inspector-note').textContent.includes('sample 1:') && $('inspector-note').textContent, 20000);
+    // Naive recursion's tree (8 rays a hit, D = 4: 585 rays) is shown to
+    // the depth chosen, with a count of what is hidden; the page keeps its length.
+    form.elements.integrator.value = 'naive';
+    showFor('naive');
+    form.elements['max-depth'].value = '4';
+    form.elements.spp.value = '1';
+    shown = false;
+    await startRender();
+    await until(() => shown, 60000);
+    $('i-sample').value = '0';
+    await inspect({ clientX: box.left + box.width / 2, clientY: box.top + box.height * 0.8 });
+    out.naive = {
+      note: $('inspector-note').textContent,
+      rows: $('inspector-table').rows.length - 1,
+      page_height: document.documentElement.scrollHeight,
+      depth_control: !$('i-depth-label').hidden,
+    };
     await call('POST', '/api/stop', {});
   } catch (e) {
     out.errors.push(String(e && e.stack || e));
