@@ -156,21 +156,82 @@ fn bdpts_record_is_its_weighted_strategies() {
         ..Bdpt::default()
     };
     let mut strategies = std::collections::BTreeSet::new();
+    let mut occluded = 0;
     let n = check(&bdpt, |r| {
         for s in &r.segments {
             let [s_, t] = s.strategy.unwrap();
             strategies.insert((s_, t));
+            if s.occluded {
+                // Blocked: recorded, adds nothing, has no weight.
+                assert_eq!((s.mis_weight, s.contribution), (None, [0.0; 3]));
+                occluded += 1;
+                continue;
+            }
             let w = s.mis_weight.unwrap();
             assert!((0.0..=1.0).contains(&w), "MIS weight {w}");
         }
     });
     assert!(n > 400, "{n}");
+    // Issue 27, bug 4: BDPT showed no blocked connection (0 of 70 segments
+    // over 5 pixels) where the path tracer shows its blocked shadow rays.
+    assert!(occluded > 50, "{occluded} blocked connections recorded");
     for st in [(1, 2), (2, 2), (1, 3), (2, 1), (3, 1)] {
         assert!(
             strategies.contains(&st),
             "strategy {st:?} recorded: {strategies:?}"
         );
     }
+}
+
+/// Issue 27, bug 5: BDPT's subpaths labelled every density "per area": the
+/// pinhole's lens point and vertices behind glass as "0 per area", a point
+/// light's position as "1 per area". They are discrete, as the path tracer
+/// says: probability 1 on the lens, the light's choice probability, the
+/// delta lobe's probability (Fresnel's share for glass).
+#[test]
+fn bdpts_densities_have_the_measure_of_how_the_vertex_was_chosen() {
+    use raytracer::integrator::record::Measure;
+    let mut scene = Scene::builtin("caustic").unwrap();
+    scene.set_resolution(32, 32);
+    let bdpt = Bdpt {
+        max_depth: Some(6),
+        ..Bdpt::default()
+    };
+    let (mut behind_delta, mut point_lights) = (0, 0);
+    for y in 0..32 {
+        for x in 0..32 {
+            let (r, _) = record_sample(&bdpt, &scene, UVec2::new(x, y), 3, 0);
+            for path in &r.paths {
+                for (i, v) in path.vertices.iter().enumerate() {
+                    // The escaped ray's end is no sampled vertex.
+                    let Some(pdf) = v.pdf else { continue };
+                    match (path.role, i, v.kind) {
+                        (PathRole::Camera, 0, _) => {
+                            assert_eq!((pdf.value, pdf.measure), (1.0, Measure::Discrete))
+                        }
+                        (PathRole::Light, 0, _) => {
+                            assert_eq!(pdf.measure, Measure::Discrete, "the point light");
+                            assert!(pdf.value > 0.0 && pdf.value <= 1.0, "{pdf:?}");
+                            point_lights += 1;
+                        }
+                        _ if pdf.measure == Measure::Discrete => {
+                            assert!(pdf.value > 0.0 && pdf.value <= 1.0, "{pdf:?}");
+                            behind_delta += 1;
+                        }
+                        _ => assert!(
+                            pdf.measure == Measure::Area && pdf.value > 0.0,
+                            "{:?} vertex {i}: {pdf:?}",
+                            path.role
+                        ),
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        point_lights > 100 && behind_delta > 100,
+        "{point_lights} {behind_delta}"
+    );
 }
 
 #[test]

@@ -44,7 +44,7 @@ pub enum IntegratorKind {
     PathBrdf,
     /// Path tracing with light sampling only, no MIS (a teaching baseline).
     PathNee,
-    /// Naive recursive Monte Carlo: N rays at every hit (see --branching), N^D rays per sample.
+    /// Naive recursive Monte Carlo: N rays at every hit (see --branching), up to 1 + N + … + N^(D−1) rays per sample.
     Naive,
     /// Light tracing: paths start on the lights and every vertex is connected to the camera.
     Light,

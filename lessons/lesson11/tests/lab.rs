@@ -300,23 +300,27 @@ fn bad_parameters_get_400_with_a_one_line_reason() {
         (
             "POST",
             "/api/render?page=x&spp=abc".into(),
-            "invalid value 'abc' for '--spp",
+            "“Target spp”: \"abc\" is not valid",
         ),
         (
             "POST",
             "/api/render?page=x&spp=0".into(),
-            "--spp must be at least 1",
+            "“Target spp” must be at least 1",
         ),
         (
             "POST",
             "/api/render?page=x&spp=70000".into(),
             "at most 65536",
         ),
-        ("POST", "/api/render?page=x&seed=-1".into(), "--seed"),
+        (
+            "POST",
+            "/api/render?page=x&seed=-1".into(),
+            "“Seed”: \"-1\" is not valid",
+        ),
         (
             "POST",
             "/api/render?page=x&integrator=magic".into(),
-            "'magic' for '--integrator",
+            "“Integrator”: \"magic\" is not valid",
         ),
         (
             "POST",
@@ -326,12 +330,12 @@ fn bad_parameters_get_400_with_a_one_line_reason() {
         (
             "POST",
             "/api/render?page=x&integrator=path&max-depth=0".into(),
-            "--max-depth must be -1",
+            "“Max depth D” must be -1",
         ),
         (
             "POST",
             "/api/render?page=x&integrator=path&branching=4".into(),
-            "--branching does not apply",
+            "“Branching N” does not apply",
         ),
         (
             "POST",
@@ -710,6 +714,7 @@ fn the_inspectors_paths_are_the_integrators_sample() {
         (0..3).all(|i| (a[i] - b[i]).abs() <= 1e-5 * a[i].abs().max(b[i].abs()) + 1e-9)
     };
     let pixels = [(8, 8), (3, 12), (12, 2), (15, 15), (0, 7)];
+    let mut blocked_connections = 0;
     for integrator in ["path", "direct", "bdpt", "naive", "light"] {
         // Direct lighting is D = 2 by definition: it takes no max depth.
         let depth = if integrator == "direct" {
@@ -747,6 +752,13 @@ fn the_inspectors_paths_are_the_integrators_sample() {
                     "({x}, {y}): the record is the picture's sample"
                 );
             }
+            if integrator == "bdpt" {
+                let segments = r["segments"].as_array().unwrap();
+                for s in segments.iter().filter(|s| s["occluded"] == true) {
+                    assert_eq!(s["contribution"], serde_json::json!([0.0, 0.0, 0.0]), "{s}");
+                    blocked_connections += 1;
+                }
+            }
             if integrator == "light" {
                 assert_eq!(e, [0.0; 3], "light tracing splats everything");
                 for s in r["segments"].as_array().unwrap() {
@@ -767,7 +779,147 @@ fn the_inspectors_paths_are_the_integrators_sample() {
             "{integrator}: the test can fail only if samples carry light ({lit})"
         );
     }
+    // Issue 27, bug 4: BDPT showed none of its blocked connections (0 of
+    // 70 segments over these 5 pixels) while the path tracer shows its
+    // blocked shadow rays.
+    assert!(
+        blocked_connections > 0,
+        "BDPT's blocked connections are shown"
+    );
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 27, bug 2: unlimited naive recursion was refused with advice to
+/// "add --roulette … (e.g. --branching 8,1)", but the page had no such
+/// control, and typing 8,1 gave the same error. The advice now names the
+/// page's fields, the page has them, and following it renders.
+#[test]
+fn the_advice_for_unlimited_naive_recursion_works_on_the_page() {
+    let lab = Lab::start(&[]);
+    let html = lab.get("/").text();
+    let naive =
+        "/api/render?page=n&integrator=naive&width=16&height=16&spp=1&max-depth=-1&branching=8,1";
+    let r = lab.post(naive);
+    assert_eq!(r.status, 400, "{}", r.text());
+    let reason = r.text();
+    assert!(!reason.contains("--"), "{reason}");
+    for (label, field) in [
+        ("Russian roulette", "name=\"roulette\""),
+        ("Branching N", "name=\"branching\""),
+    ] {
+        assert!(reason.contains(&format!("“{label}”")), "{reason}");
+        assert!(
+            html.contains(label) && html.contains(field),
+            "the page has {label}"
+        );
+    }
+    let r = lab.post(&format!("{naive}&roulette=1"));
+    assert_eq!(r.status, 200, "{}", r.text());
+    lab.wait_done("n", Duration::from_secs(60));
+}
+
+/// Issue 27, "your integrator, live": the "Your code" tab renders the
+/// student's path tracer (exercise 13, the plug of `render --student`)
+/// beside the renderer's. With the pristine stubs the page says the
+/// exercise is not started; with the reference solutions (`cargo test
+/// --features grading/solutions`) the two agree tile by tile. (A
+/// deliberately wrong integrator is tested in process, `lab/tests.rs`.)
+#[test]
+fn your_code_renders_beside_the_renderers_with_the_z_map_between() {
+    let lab = Lab::start(&[]);
+    let r = lab.post("/api/student?page=y&integrator=path&width=32&height=32&spp=64&max-depth=5");
+    assert_eq!(r.status, 200, "{}", r.text());
+    let s = lab.wait_done("y", Duration::from_secs(120));
+    let command = s["job"]["command"].as_str().unwrap();
+    assert!(
+        command.contains("-- render --student --scene cornell --integrator path"),
+        "{s}"
+    );
+    if let Some(e) = s["job"]["error"].as_str() {
+        assert!(
+            e.contains("ex13_mis is not started yet") && e.contains("exercises/src/ex13_mis.rs"),
+            "{e}"
+        );
+        eprintln!(
+            "note: exercise 13 is a stub here; run with --features grading/solutions to render it"
+        );
+        let r = lab.get("/api/scenes");
+        assert_eq!(r.status, 200, "the lab goes on");
+        return;
+    }
+    let z = lab.get("/api/zmap.png?page=y");
+    assert_eq!(z.status, 200, "{}", z.text());
+    assert_eq!(z.png_size(), (32, 32));
+    assert_eq!(
+        z.header("X-Lab-Consistent"),
+        Some("true"),
+        "{:?}",
+        z.header("X-Lab-Verdict")
+    );
+    for eye in [0, 1] {
+        let r = lab.get(&format!("/api/image.png?page=y&eye={eye}"));
+        assert_eq!(r.png_size(), (32, 32));
+    }
+    // Exercise 16's chains are no pixel samples: refused in the page's words.
+    let r = lab.post("/api/student?page=y&integrator=mlt");
+    assert_eq!(r.status, 400);
+    assert!(
+        r.text().contains("lesson11 render --student"),
+        "{}",
+        r.text()
+    );
+}
+
+/// Issue 27, "the equal-time race": three integrators render the same
+/// scene at once, one thread each, for the same time; the status carries
+/// each one's RMSE against the reference at every snapshot (the page plots
+/// them on log–log axes), and each error falls as the picture converges.
+#[test]
+fn the_race_runs_three_integrators_and_measures_each_ones_rmse() {
+    let lab = Lab::start(&[]);
+    let r = lab.post(
+        "/api/race?page=r&scene=cornell&racers=path,path-brdf,bdpt&width=32&height=32&seconds=3",
+    );
+    assert_eq!(r.status, 200, "{}", r.text());
+    let s = lab.wait_done("r", Duration::from_secs(60));
+    assert_eq!(s["job"]["interrupted"], false, "{s}");
+    assert_eq!(s["job"]["error"], Value::Null, "{s}");
+    let lines = s["job"]["race"][0].as_array().unwrap();
+    let floor = s["job"]["race"][1].as_f64().unwrap();
+    assert!(floor > 0.0, "{s}");
+    let names: Vec<&str> = lines
+        .iter()
+        .map(|l| l["integrator"].as_str().unwrap())
+        .collect();
+    assert_eq!(names.len(), 3, "{names:?}");
+    for line in lines {
+        let points = line["points"].as_array().unwrap();
+        assert!(points.len() >= 3, "{line}");
+        let rmse: Vec<f64> = points.iter().map(|p| p[1].as_f64().unwrap()).collect();
+        let time: Vec<f64> = points.iter().map(|p| p[0].as_f64().unwrap()).collect();
+        assert!(rmse.iter().all(|e| e.is_finite() && *e > 0.0), "{line}");
+        assert!(time.windows(2).all(|w| w[1] >= w[0]), "{line}");
+        assert!(rmse.last() < rmse.first(), "the error falls: {line}");
+        assert!(*time.last().unwrap() <= 3.5, "equal time: {line}");
+    }
+    for eye in 0..3 {
+        let r = lab.get(&format!("/api/image.png?page=r&eye={eye}"));
+        assert_eq!(r.png_size(), (32, 32));
+    }
+    // Bad races get one line each.
+    for (query, reason) in [
+        ("racers=path", "2 or 3 integrators"),
+        ("racers=path,sppm", "integrators of pixel samples"),
+        ("scene=veach-mis&racers=path,bdpt", "stored reference"),
+        (
+            "scene=cornell&racers=path,bdpt&width=100&height=100",
+            "divides it",
+        ),
+    ] {
+        let r = lab.post(&format!("/api/race?page=r&{query}"));
+        assert_eq!(r.status, 400, "{query}");
+        assert!(r.text().contains(reason), "{query}: {}", r.text());
+    }
 }
 
 /// Both eyes render; every composite comes from the same pair, in the size
@@ -961,6 +1113,140 @@ fn the_page_works_in_a_real_browser() {
         r["brdf"]["verdict"].as_str().unwrap().contains("violates"),
         "{r}"
     );
+}
+
+/// The page's `#layout` check in a window of `width`×`height`: where the
+/// picture, the status line, the inspector's drawing and tables are once a
+/// pixel was clicked (None, with a note, where no Chromium is installed).
+fn layout(width: u32, height: u32) -> Option<Value> {
+    let Some(chromium) = chromium::chromium() else {
+        eprintln!(
+            "skipped: no chromium on PATH or at /usr/bin/chromium, so the lab's layout was not \
+             checked (install Debian's `chromium` package to run this test)"
+        );
+        return None;
+    };
+    let lab = Lab::start(&[]);
+    let dom = chromium::run(
+        &chromium,
+        &format!("{}#layout", lab.url),
+        &[
+            format!("--window-size={width},{height}"),
+            "--virtual-time-budget=60000".into(),
+            "--dump-dom".into(),
+        ],
+        Duration::from_secs(240),
+    )
+    .unwrap();
+    let report = chromium::selftest_report(&dom).expect("the page has its #layout report");
+    let r: Value = serde_json::from_str(&report).unwrap_or_else(|e| panic!("{e}: {report}"));
+    assert_eq!(r["step"], "done", "{r}");
+    assert_eq!(r["errors"], serde_json::json!([]), "{r}");
+    assert_eq!(r["status"], 200, "{r}");
+    Some(r)
+}
+
+/// Issue 27, "in view": at 1280×720 the picture, the status line and the
+/// inspector's drawing and tables are all in view without scrolling, side
+/// by side, the tables scrolling on their own; path lines are drawn at
+/// least 2 px wide whatever the picture's size; BDPT's paths come with the
+/// explanation of why they need not pass through the pixel.
+#[test]
+fn at_1280_by_720_the_picture_and_the_inspector_are_side_by_side_in_view() {
+    let Some(r) = layout(1280, 720) else { return };
+    let (w, h) = (
+        r["window"]["width"].as_f64().unwrap(),
+        r["window"]["height"].as_f64().unwrap(),
+    );
+    let rect = |name: &str, side: &str| r["rects"][name][side].as_f64().unwrap();
+    for name in ["picture", "stats", "drawing", "inspector", "tables"] {
+        assert!(
+            rect(name, "top") >= 0.0 && rect(name, "bottom") <= h + 0.5,
+            "{name} is in view vertically: {r}"
+        );
+        assert!(
+            rect(name, "left") >= 0.0 && rect(name, "right") <= w + 0.5,
+            "{name} is in view horizontally: {r}"
+        );
+    }
+    assert!(rect("tables", "height") >= 100.0, "{r}");
+    assert!(
+        rect("picture", "right") <= rect("inspector", "left"),
+        "side by side: {r}"
+    );
+    assert!(rect("picture", "width") >= 300.0, "{r}");
+    assert_eq!(r["tables_overflow"], "auto", "{r}");
+    assert!(r["window"]["scrollWidth"].as_f64().unwrap() <= w, "{r}");
+    assert_eq!(r["line"]["vector_effect"], "non-scaling-stroke", "{r}");
+    assert!(r["line"]["width"].as_f64().unwrap() >= 2.0, "{r}");
+    assert_eq!(r["why"], true, "{r}");
+    assert_eq!(r["favicon"], true, "{r}");
+    assert!(
+        r["resampled"]
+            .as_str()
+            .is_some_and(|t| t.contains("sample 1:")),
+        "changing sample k redraws: {r}"
+    );
+    // Naive recursion's tree, 585 rays: drawn and listed to depth 2 only,
+    // saying how much is hidden, and the page keeps its length.
+    let naive = &r["naive"];
+    assert_eq!(naive["depth_control"], true, "{r}");
+    assert!(naive["note"].as_str().unwrap().contains("not shown"), "{r}");
+    assert!(naive["rows"].as_u64().unwrap() <= 1 + 8 + 8, "{r}");
+    assert!(naive["page_height"].as_f64().unwrap() <= h * 1.25, "{r}");
+}
+
+/// Issue 27: at 800 px wide the picture comes before the controls' detail.
+#[test]
+fn at_800_px_the_picture_comes_before_the_controls() {
+    let Some(r) = layout(800, 900) else { return };
+    let rect = |name: &str, side: &str| r["rects"][name][side].as_f64().unwrap();
+    assert!(
+        rect("picture", "bottom") <= rect("controls", "top"),
+        "the picture first: {r}"
+    );
+    assert!(
+        rect("picture", "bottom") <= 900.0 && rect("picture", "width") >= 300.0,
+        "{r}"
+    );
+    assert!(r["window"]["scrollWidth"].as_f64().unwrap() <= 800.0, "{r}");
+}
+
+/// Issue 27 (and 30): the page switches between English and Bulgarian on
+/// the page; `?lang=bg` opens it in Bulgarian, with the lecture's terms.
+#[test]
+fn the_page_speaks_bulgarian_when_asked() {
+    let Some(chromium) = chromium::chromium() else {
+        eprintln!("skipped: no chromium, so the page's Bulgarian was not checked");
+        return;
+    };
+    let lab = Lab::start(&[]);
+    let dom = chromium::run(
+        &chromium,
+        &format!("{}?lang=bg", lab.url),
+        &[
+            "--window-size=1280,720".into(),
+            "--virtual-time-budget=3000".into(),
+            "--dump-dom".into(),
+        ],
+        Duration::from_secs(120),
+    )
+    .unwrap();
+    assert!(dom.contains("<html lang=\"bg\""), "{}", &dom[..200]);
+    for bg in [
+        "Рендер",
+        "Максимална дълбочина D",
+        "Руска рулетка",
+        "Инспектор на пътища",
+        "Легенда",
+    ] {
+        assert!(dom.contains(bg), "{bg} on the page");
+    }
+    assert!(
+        !dom.contains(">Path inspector<"),
+        "the English heading is replaced"
+    );
+    assert!(dom.contains(">EN<"), "the switch offers English back");
 }
 
 /// The README presents the lab, and its first screen still gives exactly

@@ -82,13 +82,17 @@ impl Default for Bdpt {
 /// The value of one connection: its unweighted contribution, where it lands
 /// (`Some` raster position for `t = 1`, which is splatted) and the resampled
 /// vertex that replaces `y_0` (`s = 1`) or `z_0` (`t = 1`) in the MIS weight.
+/// An `occluded` connection adds nothing: it is returned only to be recorded
+/// (the inspector shows blocked connections as it shows blocked shadow rays).
 struct Connection {
     value: Color,
     raster: Option<Vec2>,
     sampled: Option<Vertex>,
+    occluded: bool,
 }
 
-/// The unweighted contribution of strategy `(s, t)`; `None` if it is zero.
+/// The unweighted contribution of strategy `(s, t)`; `None` if it is zero
+/// without a shadow ray, `occluded` if the shadow ray is blocked.
 fn connect(
     scene: &Scene,
     light: &[Vertex],
@@ -105,6 +109,7 @@ fn connect(
             value,
             raster: None,
             sampled: None,
+            occluded: false,
         });
     }
     if t == 1 {
@@ -114,6 +119,7 @@ fn connect(
             value: c.value,
             raster: Some(c.camera.raster),
             sampled: Some(Vertex::camera(c.camera.p_lens, Color::ZERO)),
+            occluded: false,
         });
     }
     if !pt.is_connectible(scene) {
@@ -138,13 +144,11 @@ fn connect(
         // had (a sphere's cone), so its weight is right by construction.
         let mut y = Vertex::light(choice.index, ls.p, ls.n, Color::ZERO, 0.0);
         y.pdf_fwd_a = y.pdf_light_origin_a(scene);
-        if !visible(scene, pt, &y) {
-            return None;
-        }
         return Some(Connection {
             value,
             raster: None,
             sampled: Some(y),
+            occluded: !visible(scene, pt, &y),
         });
     }
     // General connection: both ends' scattering and the edge's geometry term.
@@ -161,13 +165,14 @@ fn connect(
     let g = qs.abs_cos(w) * pt.abs_cos(w) / d2;
     // The light side scatters with the adjoint BRDF (shading normals).
     let value = qs.beta * qs.f_importance(scene, w) * pt.f(scene, -w) * pt.beta * g;
-    if value == Color::ZERO || !visible(scene, qs, pt) {
+    if value == Color::ZERO {
         return None;
     }
     Some(Connection {
         value,
         raster: None,
         sampled: None,
+        occluded: !visible(scene, qs, pt),
     })
 }
 
@@ -251,6 +256,12 @@ impl Bdpt {
                 let Some(c) = connect(scene, light, camera, s, t, sampler) else {
                     continue;
                 };
+                if c.occluded {
+                    if let Some(r) = rec.record() {
+                        record_connection(r, (z, y), &c, [s, t], None, Color::ZERO);
+                    }
+                    continue;
+                }
                 let w = if !weighted {
                     1.0
                 } else if s == 1 && t >= 2 {
@@ -266,7 +277,7 @@ impl Bdpt {
                     None => l += value,
                 }
                 if let Some(r) = rec.record() {
-                    record_connection(r, (z, y), &c, [s, t], w, value);
+                    record_connection(r, (z, y), &c, [s, t], Some(w), value);
                 }
             }
         }
@@ -274,16 +285,16 @@ impl Bdpt {
     }
 }
 
-/// Records strategy `(s, t)`'s weighted contribution `value` (weight `w`)
-/// between the recorded subpaths `(z, y)`: at the camera vertex that hit a
-/// light (`s = 0`), or as a connection from `z_{t−1}` (from `y_{s−1}` to the
-/// lens for `t = 1`).
+/// Records strategy `(s, t)`'s weighted contribution `value` (weight `w`,
+/// `None` for a blocked connection, which adds nothing) between the recorded
+/// subpaths `(z, y)`: at the camera vertex that hit a light (`s = 0`), or as
+/// a connection from `z_{t−1}` (from `y_{s−1}` to the lens for `t = 1`).
 fn record_connection(
     r: &mut PathRecord,
     (z, y): (Option<usize>, Option<usize>),
     c: &Connection,
     [s, t]: [usize; 2],
-    w: f32,
+    w: Option<f32>,
     value: Color,
 ) {
     let z_at = z.map(|path| VertexRef {
@@ -295,22 +306,23 @@ fn record_connection(
         vertex: s.max(1) - 1,
     });
     let sampled = c.sampled.map(|v| SegmentEnd::point(v.p()));
+    let segment = |from, to, splat| Segment {
+        occluded: c.occluded,
+        ..Segment::connection(from, to, [s, t], w, value, splat)
+    };
     match (s, t) {
-        (0, _) => r.contribute(z_at, value, Some(w)),
+        (0, _) => r.contribute(z_at, value, w),
         (_, 1) => r.push_segment(y_at, |from| {
             let lens = sampled.expect("t = 1 samples a lens point");
-            Segment::connection(from, lens, [s, t], Some(w), value, c.raster)
+            segment(from, lens, c.raster)
         }),
         (1, _) => r.push_segment(z_at, |from| {
             let light = sampled.expect("s = 1 resamples the light point");
-            Segment::connection(from, light, [s, t], Some(w), value, None)
+            segment(from, light, None)
         }),
         _ => {
             if let Some(to) = y_at {
-                r.push_segment(z_at, |from| {
-                    let to = SegmentEnd::Vertex(to);
-                    Segment::connection(from, to, [s, t], Some(w), value, None)
-                });
+                r.push_segment(z_at, |from| segment(from, SegmentEnd::Vertex(to), None));
             }
         }
     }

@@ -26,8 +26,9 @@
 //! connections are segments, with their MIS weight and weighted
 //! contribution; a contribution that lands on another pixel (light
 //! tracing, `t = 1`) names the raster position it was splatted to. Shadow
-//! rays are recorded blocked or not; a bidirectional connection is recorded
-//! when it contributed (blocked ones are not told apart from zero ones).
+//! rays and bidirectional connections between two vertices are recorded
+//! blocked or not (one that would carry nothing unblocked is not); a
+//! connection to the lens (`t = 1`) only when it contributed.
 //!
 //! The sum of a record's contributions is the estimate: the vertices' and
 //! unsplatted segments' contributions add up to what `sample` returned, and
@@ -44,6 +45,7 @@ use serde::Serialize;
 use super::Integrator;
 use super::camera_connection::CameraConnection;
 use super::vertex::{Vertex, VertexKind as SubpathVertexKind};
+use crate::brdf::TransportMode;
 use crate::camera::Camera;
 use crate::film::Splat;
 use crate::geometry::Interaction;
@@ -330,7 +332,8 @@ impl PathVertex {
     }
 
     /// A vertex of a camera or light subpath (bidirectional machinery), with
-    /// its forward area density.
+    /// its forward area density (see [`subpath_pdf`] for the measures a
+    /// whole subpath's vertices are labelled with).
     pub fn subpath(scene: &Scene, v: &Vertex) -> PathVertex {
         let kind = match v.kind {
             SubpathVertexKind::Camera => VertexKind::Camera,
@@ -348,6 +351,60 @@ impl PathVertex {
         });
         r
     }
+}
+
+/// The density of subpath vertex `i`, in the measure the path tracer's
+/// record uses for the same kind of vertex. Most vertices are sampled per
+/// unit area (`pdf_fwd_a`). Three are not, and the MIS machinery's area
+/// densities would mislabel them: a pinhole's lens point and a point
+/// light's position are fixed (discrete: probability 1, times the light's
+/// choice probability), and a vertex reached through a delta lobe (mirror,
+/// glass) was chosen with the lobe's probability (discrete; the machinery
+/// stores 0 there, pbrt's convention for MIS). A thin lens's point is
+/// uniform on the lens, `1/A_lens` per unit area.
+fn subpath_pdf(scene: &Scene, path: &[Vertex], i: usize) -> Pdf {
+    let v = &path[i];
+    let per_area = |value| Pdf {
+        value,
+        measure: Measure::Area,
+    };
+    let discrete = |value| Pdf {
+        value,
+        measure: Measure::Discrete,
+    };
+    match v.kind {
+        SubpathVertexKind::Camera => {
+            let r = scene.camera.params.aperture_radius;
+            if r > 0.0 {
+                per_area(1.0 / (std::f32::consts::PI * r * r))
+            } else {
+                discrete(1.0)
+            }
+        }
+        SubpathVertexKind::Light if v.is_delta_light(scene) => discrete(v.pdf_fwd_a),
+        _ if i > 0 && path[i - 1].delta => discrete(delta_lobe_probability(scene, &path[i - 1], v)),
+        _ => per_area(v.pdf_fwd_a),
+    }
+}
+
+/// The probability with which the delta lobe at `at` that leads to `next`
+/// was chosen: 1 for a mirror, Fresnel's `F` or `1 − F` for glass's
+/// reflection or refraction (the BRDF's own sampling, asked for that lobe).
+fn delta_lobe_probability(scene: &Scene, at: &Vertex, next: &Vertex) -> f32 {
+    let it = &at.it;
+    let wo = it.frame.to_local(it.wo);
+    let wi = it.frame.to_local((next.p() - at.p()).normalize_or_zero());
+    // Glass reflects when u_lobe < F: 0 asks for reflection, the largest
+    // number below 1 for refraction.
+    let u_lobe = if wo.z * wi.z > 0.0 {
+        0.0
+    } else {
+        1.0 - f32::EPSILON / 2.0
+    };
+    scene
+        .brdf(it)
+        .sample(wo, it.uv, u_lobe, Vec2::ZERO, TransportMode::Radiance)
+        .map_or(0.0, |s| s.pdf_w)
 }
 
 /// The scene's name of the material at `it`.
@@ -408,10 +465,16 @@ impl PathRecord {
         role: PathRole,
         path: &[Vertex],
     ) -> Option<usize> {
-        let (first, rest) = path.split_first()?;
-        let mut at = self.start_path(role, None, PathVertex::subpath(scene, first));
-        for v in rest {
-            at = self.push_vertex(at, PathVertex::subpath(scene, v));
+        let vertex = |i: usize| PathVertex {
+            pdf: Some(subpath_pdf(scene, path, i)),
+            ..PathVertex::subpath(scene, &path[i])
+        };
+        if path.is_empty() {
+            return None;
+        }
+        let mut at = self.start_path(role, None, vertex(0));
+        for i in 1..path.len() {
+            at = self.push_vertex(at, vertex(i));
         }
         at.map(|r| r.path)
     }

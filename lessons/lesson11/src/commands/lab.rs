@@ -19,17 +19,24 @@
 //! - `lab/job.rs` and `lab/pages.rs`: the progressive render of one page,
 //!   its snapshots and its cancellation; one render at a time per page;
 //! - `lab/stereo.rs`, `lab/brdf.rs`: the Stereo and BRDF tabs;
+//! - `lab/race.rs`: the Race tab (an equal-time race, RMSE against time);
+//! - `lab/student.rs`: the "Your code" tab (the student's integrator beside
+//!   the renderer's, and the tile z-map between them);
 //! - `lab/paths.rs`: the path inspector's data (a recorded pixel sample);
+//! - `lab/preview.rs`: the coarse preview of an incomplete first pass;
 //! - `lab/assets/`: the page.
 
 mod brdf;
 mod job;
 mod pages;
 mod paths;
+mod preview;
 mod query;
+mod race;
 mod server;
 mod settings;
 mod stereo;
+mod student;
 
 use std::net::{IpAddr, SocketAddr, ToSocketAddrs};
 use std::path::PathBuf;

@@ -1,6 +1,6 @@
 //! `lesson11 render`: one scene, one integrator, PNG and EXR out.
 
-mod student;
+pub(crate) mod student;
 
 use anyhow::Result;
 use clap::Args;

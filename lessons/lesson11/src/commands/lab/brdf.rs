@@ -263,6 +263,8 @@ pub fn sphere_job(q: &Query, choice: &BrdfChoice) -> Result<JobSpec, String> {
         build_for: None,
         plan: IntegratorPlan::Ready(Box::new(integrator)),
         options,
+        student: None,
+        race: None,
     })
 }
 

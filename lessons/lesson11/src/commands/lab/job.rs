@@ -37,6 +37,9 @@ use raytracer::render::{Metropolis, Progress, RenderOptions, render_pixels_watch
 use raytracer::scene::Scene;
 use serde::Serialize;
 
+use raytracer::math::{Color, UVec2};
+
+use super::preview::coarse_preview;
 use super::settings::one_line;
 use crate::integrators::{BiasedPlan, IntegratorPlan};
 
@@ -75,7 +78,44 @@ pub struct JobSpec {
     /// Checked, not built: the job's thread builds what takes time.
     pub plan: IntegratorPlan,
     pub options: RenderOptions,
+    /// The "Your code" tab: the student's integrator (eye 0) beside the
+    /// renderer's of the same estimator (eye 1), instead of `plan`.
+    pub student: Option<StudentPair>,
+    /// The Race tab: integrators that render the same scene at once, each
+    /// on a thread of its own, measured against a reference, instead of
+    /// `plan`.
+    pub race: Option<Racers>,
 }
+
+/// An equal-time race (`race.rs`).
+pub struct Racers {
+    pub integrators: Vec<Box<dyn Integrator + Send>>,
+    /// How long each renders.
+    pub seconds: f64,
+    /// The image each snapshot's RMSE is measured against.
+    pub reference: Arc<Image>,
+    /// The reference's own noise: no error measured with it goes below.
+    pub floor: f64,
+}
+
+/// One racer's line of the plot.
+#[derive(Clone, Serialize)]
+pub struct RaceLine {
+    pub integrator: &'static str,
+    /// (seconds, RMSE) at each snapshot.
+    pub points: Vec<[f64; 2]>,
+}
+
+/// The student's integrator and the renderer's beside it, made on the
+/// job's thread (the exercises' integrators are not `Send`).
+pub struct StudentPair {
+    /// The exercise (`ex13_mis`), named in messages.
+    pub exercise: &'static str,
+    pub make: Box<dyn FnOnce() -> IntegratorPair + Send>,
+}
+
+/// The student's integrator and the renderer's, in that order.
+pub type IntegratorPair = (Box<dyn Integrator>, Box<dyn Integrator>);
 
 /// The latest picture of one eye and how far it has come.
 #[derive(Clone, Default)]
@@ -90,6 +130,11 @@ pub struct Snapshot {
     pub elapsed: Duration,
     /// Samples dropped as NaN, infinite or negative.
     pub nonfinite: u64,
+    /// The variance of each pixel's mean (the "Your code" tab's z-map).
+    pub variance: Option<Arc<Image>>,
+    /// What the page shows while the first pass is incomplete
+    /// ([`super::preview::coarse_preview`]); `None`: `image` itself.
+    pub preview: Option<Arc<Image>>,
 }
 
 /// What a job is doing.
@@ -110,6 +155,9 @@ enum Work {
     Build(BiasedPlan),
     Sppm(SppmSettings),
     Metropolis(Bdpt, Metropolis),
+    /// The student's integrator beside the renderer's.
+    Student(StudentPair),
+    Race(Vec<Box<dyn Integrator + Send>>, f64),
 }
 
 struct State {
@@ -127,6 +175,8 @@ struct State {
     cancelled_at: Option<Instant>,
     /// The phase the stop request came in.
     cancelled_in: Option<Phase>,
+    /// The race's lines, one per eye.
+    race: Vec<RaceLine>,
     /// From the stop request to the end of the job's thread.
     stopped_after: Option<Duration>,
 }
@@ -153,6 +203,10 @@ pub struct Job {
     scenes: Vec<Arc<Scene>>,
     /// See [`JobSpec::build_for`].
     build_for: Option<Scene>,
+    /// The exercise of the "Your code" tab ([`JobSpec::student`]).
+    exercise: Option<&'static str>,
+    /// The race's reference and its noise floor ([`JobSpec::race`]).
+    race_reference: Option<(Arc<Image>, f64)>,
     started: Instant,
     stop: AtomicBool,
     state: Mutex<State>,
@@ -189,6 +243,10 @@ pub struct JobStatus {
     pub done: bool,
     pub interrupted: bool,
     pub nonfinite: u64,
+    /// The same, eye by eye (the student's integrator is eye 0 of its tab).
+    pub nonfinite_by_eye: Vec<u64>,
+    /// The race's lines (RMSE against time), and the reference's noise floor.
+    pub race: Option<(Vec<RaceLine>, f64)>,
     pub version: u64,
     /// The phase the render was in when it was asked to stop.
     pub cancelled_in: Option<Phase>,
@@ -218,7 +276,33 @@ impl Job {
         let scenes: Vec<Arc<Scene>> = spec.eyes.into_iter().map(Arc::new).collect();
         let first = scenes.first().ok_or("a job without a picture")?;
         let integrator = OnceLock::new();
+        let exercise = spec.student.as_ref().map(|p| p.exercise);
+        let race_reference = spec.race.as_ref().map(|r| (r.reference.clone(), r.floor));
+        let race_lines: Vec<RaceLine> = spec.race.as_ref().map_or(Vec::new(), |r| {
+            r.integrators
+                .iter()
+                .map(|i| RaceLine {
+                    integrator: i.name(),
+                    points: Vec::new(),
+                })
+                .collect()
+        });
         let (work, units, no_samples, building) = match spec.plan {
+            _ if spec.race.is_some() => {
+                let r = spec.race.expect("checked");
+                (
+                    Work::Race(r.integrators, r.seconds),
+                    ("spp", "samples"),
+                    None,
+                    None,
+                )
+            }
+            _ if spec.student.is_some() => (
+                Work::Student(spec.student.expect("checked")),
+                ("spp", "samples"),
+                None,
+                None,
+            ),
             IntegratorPlan::Ready(i) => {
                 let _ = integrator.set(Arc::from(i));
                 (Work::Samples, ("spp", "samples"), None, None)
@@ -259,6 +343,8 @@ impl Job {
             building,
             scenes: scenes.clone(),
             build_for: spec.build_for,
+            exercise,
+            race_reference,
             started: Instant::now(),
             stop: AtomicBool::new(false),
             state: Mutex::new(State {
@@ -276,6 +362,7 @@ impl Job {
                 cancelled_at: None,
                 cancelled_in: None,
                 stopped_after: None,
+                race: race_lines,
             }),
             changed: Condvar::new(),
         });
@@ -312,6 +399,8 @@ impl Job {
             Work::Metropolis(bdpt, metropolis) => {
                 return Ok(self.render_metropolis(&bdpt, &metropolis, &options));
             }
+            Work::Student(pair) => return Ok(self.render_student(pair, &options)),
+            Work::Race(racers, seconds) => return Ok(self.render_race(&racers, seconds, &options)),
             Work::Samples => match self.integrator.get() {
                 Some(i) => i.clone(),
                 None => return Err("the render has no integrator".into()),
@@ -340,6 +429,94 @@ impl Job {
 
     fn stopped(&self) -> bool {
         self.stop.load(Ordering::Relaxed)
+    }
+
+    /// The student's integrator (eye 0) and the renderer's of the same
+    /// estimator (eye 1) at once, as `lesson11 render --student` renders
+    /// them: the renderer's with seed + 1 (the two may draw the same numbers
+    /// in the same order, and correlated pictures would hide a difference).
+    /// A panic in the student's code stops both with its message.
+    fn render_student(&self, pair: StudentPair, options: &RenderOptions) -> bool {
+        let (student, reference) = (pair.make)();
+        let other = RenderOptions {
+            seed: options.seed.wrapping_add(1),
+            ..options.clone()
+        };
+        let (mine, theirs) = (&self.scenes[0], &self.scenes[1]);
+        std::thread::scope(|s| {
+            let reference = s.spawn(|| self.render_eye(1, theirs, reference.as_ref(), &other));
+            let student = self.render_eye(0, mine, student.as_ref(), options);
+            student & reference.join().unwrap_or(false)
+        })
+    }
+
+    /// Every racer at once, each on one thread of its own, until `seconds`
+    /// have passed (or all are done); true unless stopped by the page.
+    fn render_race(
+        &self,
+        racers: &[Box<dyn Integrator + Send>],
+        seconds: f64,
+        options: &RenderOptions,
+    ) -> bool {
+        let one = RenderOptions {
+            threads: Some(1),
+            ..options.clone()
+        };
+        let finished = AtomicBool::new(false);
+        let mut timed_out = false;
+        std::thread::scope(|s| {
+            let timer = s.spawn(|| {
+                let end = Instant::now() + Duration::from_secs_f64(seconds);
+                while Instant::now() < end {
+                    if finished.load(Ordering::Relaxed) || self.stopped() {
+                        return false;
+                    }
+                    std::thread::sleep(Duration::from_millis(20));
+                }
+                self.stop.store(true, Ordering::SeqCst);
+                true
+            });
+            let threads: Vec<_> = racers
+                .iter()
+                .enumerate()
+                .map(|(eye, racer)| {
+                    let (scene, one) = (&self.scenes[eye], &one);
+                    s.spawn(move || self.render_eye(eye, scene, racer.as_ref(), one))
+                })
+                .collect();
+            for t in threads {
+                let _ = t.join();
+            }
+            finished.store(true, Ordering::Relaxed);
+            timed_out = timer.join().unwrap_or(false);
+        });
+        timed_out || !self.stopped()
+    }
+
+    /// A panic in the student's integrator at `pixel`: the job stops and
+    /// the page says why (a `todo!()` is an exercise not started).
+    fn student_panicked(&self, pixel: UVec2, payload: &(dyn std::any::Any + Send)) {
+        let what = payload
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "a panic without a message".into());
+        let exercise = self.exercise.unwrap_or("the exercise");
+        let message = if what.contains("not yet implemented") {
+            format!(
+                "{exercise} is not started yet (todo!() in exercises/src/{exercise}.rs): fill it in, \
+                 then start the lab again (it renders the code it was built with)"
+            )
+        } else {
+            format!(
+                "your integrator ({exercise}) panicked at pixel ({}, {}): {what}",
+                pixel.x, pixel.y
+            )
+        };
+        self.update(|s| {
+            s.error.get_or_insert(message);
+        });
+        self.stop.store(true, Ordering::SeqCst);
     }
 
     /// Every eye at once, each on a thread (and a pool) of its own; true if
@@ -383,18 +560,26 @@ impl Job {
     ) -> bool {
         let (w, h) = (scene.camera.width, scene.camera.height);
         let mut throttle = Throttle::default();
+        // The "Your code" tab: eye 0 is the student's code, whose panic must
+        // not take the lab down; both eyes' variances make the z-map.
+        let student = self.exercise.is_some();
+        let catch = student && eye == 0;
         let mut watch = |p: &Progress| {
             if !throttle.due() {
                 return;
             }
+            let image = p.film.image();
+            let preview = coarse_preview(p.film, &image).map(Arc::new);
             self.publish(
                 eye,
                 Snapshot {
-                    image: Some(Arc::new(p.film.image())),
+                    preview,
+                    image: Some(Arc::new(image)),
                     samples: p.film.total_samples(),
                     complete_spp: p.complete_spp,
                     elapsed: p.elapsed,
                     nonfinite: p.film.nonfinite_count(),
+                    variance: student.then(|| Arc::new(p.film.variance_image())),
                 },
                 None,
             );
@@ -404,7 +589,18 @@ impl Job {
             h,
             options,
             &self.stop,
-            |pixel, sampler, splats| integrator.sample(scene, pixel, sampler, splats),
+            |pixel, sampler, splats| {
+                if !catch {
+                    return integrator.sample(scene, pixel, sampler, splats);
+                }
+                let sample = || integrator.sample(scene, pixel, sampler, splats);
+                std::panic::catch_unwind(std::panic::AssertUnwindSafe(sample)).unwrap_or_else(
+                    |payload| {
+                        self.student_panicked(pixel, payload.as_ref());
+                        Color::ZERO
+                    },
+                )
+            },
             &mut watch,
         );
         let complete = if result.stats.interrupted {
@@ -420,6 +616,8 @@ impl Job {
                 complete_spp: complete,
                 elapsed: result.stats.elapsed,
                 nonfinite: result.stats.nonfinite,
+                variance: student.then(|| Arc::new(result.film.variance_image())),
+                preview: None,
             },
             None,
         );
@@ -450,6 +648,8 @@ impl Job {
                     complete_spp: p.passes,
                     elapsed: p.elapsed,
                     nonfinite: 0,
+                    variance: None,
+                    preview: None,
                 },
                 Some(note(p.passes)),
             );
@@ -471,6 +671,8 @@ impl Job {
                     complete_spp: r.passes,
                     elapsed: r.stats.elapsed,
                     nonfinite: 0,
+                    variance: None,
+                    preview: None,
                 },
                 Some(line),
             );
@@ -522,6 +724,8 @@ impl Job {
                     complete_spp: (p.mutations / pixels) as u32,
                     elapsed: p.elapsed,
                     nonfinite: 0,
+                    variance: None,
+                    preview: None,
                 },
                 final_note.clone(),
             );
@@ -540,6 +744,8 @@ impl Job {
                     },
                     elapsed: r.stats.elapsed,
                     nonfinite: r.stats.nonfinite,
+                    variance: None,
+                    preview: None,
                 },
                 final_note,
             );
@@ -572,7 +778,20 @@ impl Job {
     }
 
     fn publish(&self, eye: usize, snapshot: Snapshot, note: Option<String>) {
+        // A racer's error against the reference at this moment, once every
+        // pixel has a sample (a pixel without one is black, and in a dark
+        // scene black is close: the error of a partial first pass misleads).
+        let point = match (&self.race_reference, &snapshot.image) {
+            (Some((reference, _)), Some(image)) if snapshot.complete_spp > 0 => Some([
+                snapshot.elapsed.as_secs_f64(),
+                raytracer::metrics::rmse(image, reference) as f64,
+            ]),
+            _ => None,
+        };
         self.update(|s| {
+            if let (Some(p), Some(line)) = (point, s.race.get_mut(eye)) {
+                line.points.push(p);
+            }
             s.eyes[eye] = snapshot;
             if note.is_some() {
                 s.note = note;
@@ -627,6 +846,21 @@ impl Job {
         let _ = self.changed.wait_timeout_while(state, timeout, |s| {
             s.version <= version && s.phase != Phase::Done
         });
+    }
+
+    /// The latest snapshot of every eye.
+    pub fn snapshots(&self) -> Vec<Snapshot> {
+        lock(&self.state).eyes.clone()
+    }
+
+    /// The pictures the page shows, one per eye: the coarse preview while
+    /// the first pass is incomplete, else the picture.
+    pub fn shown_images(&self) -> Vec<Option<Arc<Image>>> {
+        lock(&self.state)
+            .eyes
+            .iter()
+            .map(|e| e.preview.clone().or_else(|| e.image.clone()))
+            .collect()
     }
 
     /// The latest pictures, one per eye (`None` before the first snapshot).
@@ -685,6 +919,11 @@ impl Job {
             done: state.phase == Phase::Done,
             interrupted: state.interrupted,
             nonfinite: state.eyes.iter().map(|e| e.nonfinite).sum(),
+            nonfinite_by_eye: state.eyes.iter().map(|e| e.nonfinite).collect(),
+            race: self
+                .race_reference
+                .as_ref()
+                .map(|(_, floor)| (state.race.clone(), *floor)),
             version: state.version,
             cancelled_in: state.cancelled_in,
             stopped_after_ms: state.stopped_after.map(|d| d.as_secs_f64() * 1e3),

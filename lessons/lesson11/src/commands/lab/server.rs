@@ -8,11 +8,14 @@
 //!
 //! | request | answer |
 //! |---|---|
-//! | `GET /`, `/lab.css`, `/lab.js` | the page |
+//! | `GET /` (`?lang=bg`: in Bulgarian), `/lab.css`, `/lab.js`, `/i18n.js`, `/favicon.svg` | the page |
 //! | `GET /api/scenes` | scenes, integrators, composites, limits |
 //! | `POST /api/render?page=P&scene=…&integrator=…&max-depth=…&spp=…&seed=…` | starts the page's render (options of `lesson11 render`) |
 //! | `POST /api/stereo?page=P&…&separation=…&convergence=…&toe-in=1` | starts both eyes |
 //! | `POST /api/brdf-sphere?page=P&model=…&spp=…` | starts a ball of that BRDF |
+//! | `POST /api/student?page=P&integrator=…&…` | starts the student's integrator beside the renderer's (options of `lesson11 render --student`) |
+//! | `POST /api/race?page=P&racers=path,light,bdpt&seconds=S&scene=…` | an equal-time race, RMSE against time in the status |
+//! | `GET /api/zmap.png?page=P` | the tile z-map between them (headers: the verdict) |
 //! | `POST /api/stop?page=P` | stops the page's render |
 //! | `GET /api/status?page=P&after=V` | the render's phase (building, rendering, done) and progress, once a change newer than V is out (at most 2 s) |
 //! | `GET /api/image.png?page=P&exposure=E` / `image.exr?page=P&eye=0` | the picture so far |
@@ -34,8 +37,10 @@ use super::brdf::{self, BRDF_PARAMS};
 use super::job::Job;
 use super::pages::{IDLE, Pages};
 use super::query::Query;
+use super::race::{self, RACE_PARAMS};
 use super::settings::{MAX_PIXELS, MAX_SPP, RENDER_PARAMS, SceneFolder, render_setup};
 use super::stereo::{self, COMPOSITE_PARAMS, RIG_PARAMS};
+use super::student::{self, ZMap};
 use crate::integrators::IntegratorKind;
 
 /// Threads that answer requests (a long poll holds one for up to 2 s).
@@ -47,6 +52,8 @@ const LONGEST_POLL: Duration = Duration::from_secs(2);
 const INDEX_HTML: &str = include_str!("assets/index.html");
 const LAB_CSS: &str = include_str!("assets/lab.css");
 const LAB_JS: &str = include_str!("assets/lab.js");
+const FAVICON: &str = include_str!("assets/favicon.svg");
+const I18N_JS: &str = include_str!("assets/i18n.js");
 
 /// What the lab is started with.
 #[derive(Clone, Default)]
@@ -232,13 +239,18 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
             .unwrap_or_else(Reply::bad)
     };
     match path {
-        "/" | "/index.html" => get(&[], &|_| {
+        // `?lang=bg` opens the page in Bulgarian.
+        "/" | "/index.html" => get(&["lang"], &|_| {
             Ok(Reply::ok("text/html; charset=utf-8", INDEX_HTML))
         }),
         "/lab.css" => get(&[], &|_| Ok(Reply::ok("text/css; charset=utf-8", LAB_CSS))),
         "/lab.js" => get(&[], &|_| {
             Ok(Reply::ok("text/javascript; charset=utf-8", LAB_JS))
         }),
+        "/i18n.js" => get(&[], &|_| {
+            Ok(Reply::ok("text/javascript; charset=utf-8", I18N_JS))
+        }),
+        "/favicon.svg" | "/favicon.ico" => get(&[], &|_| Ok(Reply::ok("image/svg+xml", FAVICON))),
         "/api/scenes" => get(&[], &|_| Ok(Reply::json(&catalogue(state)))),
         "/api/render" => post(&with(&[RENDER_PARAMS]), &|q| {
             let setup = render_setup(q, &state.folder, "cornell", "direct")?;
@@ -252,12 +264,32 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
                 build_for: None,
                 plan: setup.plan,
                 options: setup.options,
+                student: None,
+                race: None,
             };
             started(state.pages.start(q.page()?, spec)?)
         }),
         "/api/stereo" => post(&with(&[RENDER_PARAMS, RIG_PARAMS]), &|q| {
             let spec = stereo::stereo_job(q, &state.folder)?;
             started(state.pages.start(q.page()?, spec)?)
+        }),
+        "/api/race" => post(&with(&[RENDER_PARAMS, RACE_PARAMS]), &|q| {
+            let spec = race::race_job(q, &state.folder)?;
+            started(state.pages.start(q.page()?, spec)?)
+        }),
+        "/api/student" => post(&with(&[RENDER_PARAMS]), &|q| {
+            let spec = student::student_job(q, &state.folder)?;
+            started(state.pages.start(q.page()?, spec)?)
+        }),
+        "/api/zmap.png" => get(&["page", "job", "v"], &|q| {
+            let job = page_job(state, q)?;
+            let map = ZMap::of(&job).ok_or(
+                "no z-map: the page's render is not of the \"Your code\" tab, or has no picture yet",
+            )?;
+            let image = map.image(job.width, job.height);
+            Ok(png(&image, 0.0, &job)?
+                .header("X-Lab-Verdict", map.verdict())
+                .header("X-Lab-Consistent", map.consistent()))
         }),
         "/api/brdf-sphere" => post(&with(&[BRDF_PARAMS, &["spp", "seed"]]), &|q| {
             let choice = brdf::choose(q)?;
@@ -288,11 +320,11 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
         }),
         "/api/image.png" => get(&["page", "job", "exposure", "eye", "v"], &|q| {
             let exposure = q.in_range("exposure", 0.0, -64.0..=64.0)?;
-            let (job, image) = eye_image(state, q)?;
+            let (job, image) = eye_image(state, q, Job::shown_images)?;
             png(&image, exposure, &job)
         }),
         "/api/image.exr" => get(&["page", "job", "eye", "v"], &|q| {
-            let (job, image) = eye_image(state, q)?;
+            let (job, image) = eye_image(state, q, Job::images)?;
             let bytes = image.exr_bytes().map_err(|e| e.to_string())?;
             Ok(with_progress(Reply::ok("image/x-exr", bytes), &job))
         }),
@@ -301,7 +333,7 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
             &|q| {
                 let exposure = q.in_range("exposure", 0.0, -64.0..=64.0)?;
                 let job = page_job(state, q)?;
-                let images = job.images();
+                let images = job.shown_images();
                 let (Some(Some(left)), Some(Some(right))) = (images.first(), images.get(1)) else {
                     return Err(
                     "the page's render is not a stereo pair (start one with /api/stereo), or has no picture yet"
@@ -345,11 +377,16 @@ fn page_job(state: &State, q: &Query) -> Result<Arc<Job>, String> {
     }
 }
 
-/// One eye's latest picture (`eye`, 0 unless given).
-fn eye_image(state: &State, q: &Query) -> Result<(Arc<Job>, Arc<raytracer::film::Image>), String> {
+/// One eye's latest picture (`eye`, 0 unless given) of those `which` gives
+/// (the film's, or what the page shows).
+fn eye_image(
+    state: &State,
+    q: &Query,
+    which: fn(&Job) -> Vec<Option<Arc<raytracer::film::Image>>>,
+) -> Result<(Arc<Job>, Arc<raytracer::film::Image>), String> {
     let job = page_job(state, q)?;
     let eye: usize = q.number("eye", 0)?;
-    let images = job.images();
+    let images = which(&job);
     let image = images
         .get(eye)
         .ok_or_else(|| format!("`eye` must be below {}, got {eye}", images.len()))?

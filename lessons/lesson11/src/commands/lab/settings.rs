@@ -21,7 +21,7 @@ use serde::Serialize;
 
 use super::query::Query;
 use crate::commands::render::RenderArgs;
-use crate::integrators::IntegratorPlan;
+use crate::integrators::{IntegratorArgs, IntegratorKind, IntegratorPlan};
 
 /// The most pixels of one picture (one eye of a stereo pair): 0.48
 /// megapixels, 800×600 (a film takes about 100 bytes a pixel).
@@ -46,10 +46,34 @@ pub const RENDER_PARAMS: &[&str] = &[
     "ao-distance",
 ];
 
+/// What the page calls each option (its label), so that an error of
+/// `lesson11 render` reads in the page's words: "“Seed”: …" where the
+/// command line says "'--seed <SEED>'".
+pub const PAGE_LABELS: &[(&str, &str)] = &[
+    ("scene", "Scene"),
+    ("integrator", "Integrator"),
+    ("width", "Size (width)"),
+    ("height", "Size (height)"),
+    ("spp", "Target spp"),
+    ("seed", "Seed"),
+    ("max-depth", "Max depth D"),
+    ("rr-depth", "Roulette from bounce"),
+    ("branching", "Branching N"),
+    ("roulette", "Russian roulette"),
+    ("cutoff", "cutoff"),
+    ("ao-distance", "AO distance"),
+    ("separation", "Separation"),
+    ("convergence", "Convergence"),
+    ("toe-in", "toe-in"),
+];
+
 /// A checked render: what to render, how (checked, not built yet), and the
 /// command line that renders the same picture.
 pub struct RenderSetup {
     pub scene: Scene,
+    /// The integrator chosen and its options, as `lesson11 render` read them.
+    pub kind: IntegratorKind,
+    pub integrator_args: IntegratorArgs,
     pub plan: IntegratorPlan,
     pub options: RenderOptions,
     /// The options of `lesson11 render` (and of `lesson11 stereo`) that give
@@ -163,9 +187,12 @@ pub fn render_setup(
     let command = RenderArgs::augment_args(clap::Command::new("render").no_binary_name(true));
     let matches = command
         .try_get_matches_from(&words)
-        .map_err(|e| clap_reason(&e))?;
-    let args = RenderArgs::from_arg_matches(&matches).map_err(|e| clap_reason(&e))?;
-    let (scene, mut options) = args.scene.load("cornell").map_err(|e| one_line(&e))?;
+        .map_err(|e| on_the_page(&clap_reason(&e)))?;
+    let args = RenderArgs::from_arg_matches(&matches).map_err(|e| on_the_page(&clap_reason(&e)))?;
+    let (scene, mut options) = args
+        .scene
+        .load("cornell")
+        .map_err(|e| on_the_page(&one_line(&e)))?;
     let (w, h) = (scene.camera.width, scene.camera.height);
     if w as u64 * h as u64 > MAX_PIXELS {
         return Err(format!(
@@ -175,7 +202,7 @@ pub fn render_setup(
     }
     if options.spp > MAX_SPP {
         return Err(format!(
-            "spp must be at most {MAX_SPP} in the lab, got {}",
+            "“Target spp” must be at most {MAX_SPP} in the lab, got {}",
             options.spp
         ));
     }
@@ -187,7 +214,7 @@ pub fn render_setup(
     let plan = args
         .integrator
         .plan(&args.integrator_args, &scene, &options, false)
-        .map_err(|e| one_line(&e))?;
+        .map_err(|e| on_the_page(&one_line(&e)))?;
     let options_line = words
         .iter()
         .map(|w| match w.split_once('=') {
@@ -198,6 +225,8 @@ pub fn render_setup(
         .join(" ");
     Ok(RenderSetup {
         scene,
+        kind: args.integrator,
+        integrator_args: args.integrator_args,
         plan,
         options,
         options_line,
@@ -216,11 +245,47 @@ fn shell_word(s: &str) -> String {
     }
 }
 
-/// A clap error in one line, without its `error:` and its advice to try `--help`.
+/// A clap error in one line, without its `error:` and its advice to try
+/// `--help`; "invalid value 'V' for '--seed <SEED>': why" becomes
+/// "--seed: 'V' is not valid (why)", which [`on_the_page`] then names.
 fn clap_reason(e: &clap::Error) -> String {
     let text = e.render().to_string();
     let first = text.lines().next().unwrap_or("invalid parameters");
-    first.trim_start_matches("error: ").to_string()
+    let first = first.trim_start_matches("error: ");
+    let parsed = first.strip_prefix("invalid value '").and_then(|rest| {
+        let (value, rest) = rest.split_once("' for '")?;
+        let (arg, why) = rest.split_once('\'').unwrap_or((rest, ""));
+        let flag = arg.split_whitespace().next()?.trim_start_matches("--");
+        let why = why.trim_start_matches(':').trim();
+        Some(if why.is_empty() {
+            format!("--{flag}: {value:?} is not valid")
+        } else {
+            format!("--{flag}: {value:?} is not valid ({why})")
+        })
+    });
+    parsed.unwrap_or_else(|| first.to_string())
+}
+
+/// A message of `lesson11 render` in the page's words: every `--option`
+/// it names becomes the label of its field (`--max-depth` → “Max depth D”),
+/// so its advice can be followed on the page.
+pub fn on_the_page(message: &str) -> String {
+    let mut out = String::with_capacity(message.len());
+    let mut rest = message;
+    while let Some(at) = rest.find("--") {
+        out.push_str(&rest[..at]);
+        let after = &rest[at + 2..];
+        let end = after
+            .find(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
+            .unwrap_or(after.len());
+        match PAGE_LABELS.iter().find(|(flag, _)| *flag == &after[..end]) {
+            Some((_, label)) => out.push_str(&format!("“{label}”")),
+            None => out.push_str(&rest[at..at + 2 + end]),
+        }
+        rest = &after[end..];
+    }
+    out.push_str(rest);
+    out
 }
 
 /// An error and its causes in one line.
@@ -307,15 +372,16 @@ mod tests {
     #[test]
     fn bad_settings_get_the_commands_reasons_in_one_line() {
         for (query, reason) in [
-            ("spp=abc", "invalid value 'abc' for '--spp"),
-            ("spp=0", "--spp must be at least 1"),
-            ("spp=100000", "at most 65536"),
             (
-                "integrator=magic",
-                "invalid value 'magic' for '--integrator",
+                "spp=abc",
+                "“Target spp”: \"abc\" is not valid (invalid digit",
             ),
+            ("seed=-1", "“Seed”: \"-1\" is not valid"),
+            ("spp=0", "“Target spp” must be at least 1"),
+            ("spp=100000", "at most 65536"),
+            ("integrator=magic", "“Integrator”: \"magic\" is not valid"),
             ("integrator=direct&max-depth=5", "D = 2 by definition"),
-            ("max-depth=0", "--max-depth must be -1"),
+            ("max-depth=0", "“Max depth D” must be -1"),
             ("width=1000&height=1000", "more than the lab's"),
             ("width=100000&height=100000", "more than the cap"),
             ("scene=../../etc/passwd", "unknown scene"),
@@ -328,6 +394,22 @@ mod tests {
             assert!(e.contains(reason), "{query}: {e}");
             assert!(!e.contains('\n'), "{query}: {e}");
         }
+    }
+
+    /// Issue 27, bug 2: the advice for unlimited naive recursion named
+    /// `--roulette`, which the page did not have. Its words are now the
+    /// page's fields, and following it renders.
+    #[test]
+    fn the_advice_for_unlimited_naive_recursion_can_be_followed_on_the_page() {
+        let base = "integrator=naive&width=16&height=16&spp=1&max-depth=-1";
+        let Err(e) = setup(&format!("{base}&branching=8,1")) else {
+            panic!("accepted")
+        };
+        assert!(
+            e.contains("“Russian roulette”") && e.contains("“Branching N”") && !e.contains("--"),
+            "{e}"
+        );
+        assert!(setup(&format!("{base}&branching=8,1&roulette=1")).is_ok());
     }
 
     #[test]

@@ -65,6 +65,8 @@ pub fn stereo_job(q: &Query, folder: &SceneFolder) -> Result<JobSpec, String> {
         build_for,
         plan: setup.plan,
         options: setup.options,
+        student: None,
+        race: None,
     })
 }
 

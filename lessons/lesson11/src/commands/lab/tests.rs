@@ -27,8 +27,9 @@ fn request(lab: &Lab, method: &str, path: &str) -> (u16, String) {
         "{method} {path} HTTP/1.1\r\nHost: {address}\r\nConnection: close\r\n\r\n"
     )
     .unwrap();
-    let mut text = String::new();
-    s.read_to_string(&mut text).unwrap();
+    let mut bytes = Vec::new();
+    s.read_to_end(&mut bytes).unwrap();
+    let text = String::from_utf8_lossy(&bytes).into_owned();
     let status = text.split_whitespace().nth(1).unwrap().parse().unwrap();
     let body = text.split_once("\r\n\r\n").unwrap().1.to_string();
     (status, body)
@@ -151,5 +152,149 @@ fn a_biased_integrator_is_built_on_the_jobs_thread() {
         "{r}"
     );
     assert!(super::job::SPPM_NO_SAMPLES.contains("photon mapping does not record"));
+    lab.stop();
+}
+
+/// A "student" integrator for the tests of the "Your code" tab: the path
+/// tracer, but wrong in a way chosen by `fault`.
+struct Faulty {
+    fault: Fault,
+}
+
+#[derive(Clone, Copy)]
+enum Fault {
+    /// Half the light on the left half of the picture (x < 32).
+    HalfOnTheLeft,
+    /// A panic at pixel (5, 5).
+    Panics,
+    /// NaN at every pixel of row 0.
+    NanOnRowZero,
+}
+
+impl raytracer::integrator::Integrator for Faulty {
+    fn name(&self) -> &'static str {
+        "faulty"
+    }
+
+    fn sample(
+        &self,
+        scene: &raytracer::scene::Scene,
+        pixel: raytracer::math::UVec2,
+        sampler: &mut raytracer::sampling::Sampler,
+        splats: &mut Vec<raytracer::film::Splat>,
+    ) -> raytracer::math::Color {
+        let c = raytracer::integrator::PathTracer::default().sample(scene, pixel, sampler, splats);
+        match self.fault {
+            Fault::HalfOnTheLeft if pixel.x < 32 => c * 0.5,
+            Fault::Panics if pixel.x == 5 && pixel.y == 5 => panic!("index out of bounds"),
+            Fault::NanOnRowZero if pixel.y == 0 => raytracer::math::Color::splat(f32::NAN),
+            _ => c,
+        }
+    }
+}
+
+/// The "Your code" tab's job with `student` as the student's integrator,
+/// beside the path tracer, on a 64×64 Cornell box; waits until it ends.
+fn student_job(
+    lab: &Lab,
+    page: &str,
+    student: Box<dyn raytracer::integrator::Integrator + Send>,
+    spp: u32,
+) -> std::sync::Arc<super::job::Job> {
+    use raytracer::integrator::PathTracer;
+    let mut scene = raytracer::scene::Scene::builtin("cornell").unwrap();
+    scene.set_resolution(64, 64);
+    let spec = super::job::JobSpec {
+        kind: "student",
+        command: String::new(),
+        eyes: vec![scene.clone(), scene],
+        build_for: None,
+        plan: crate::integrators::IntegratorPlan::Ready(Box::new(PathTracer::default())),
+        options: raytracer::render::RenderOptions {
+            spp,
+            progress: false,
+            ..Default::default()
+        },
+        student: Some(super::job::StudentPair {
+            exercise: "ex13_mis",
+            make: Box::new(move || (student, Box::new(PathTracer::default()))),
+        }),
+        race: None,
+    };
+    let job = lab.pages().start(page, spec).unwrap();
+    let end = std::time::Instant::now() + Duration::from_secs(120);
+    while !job.status().done {
+        assert!(std::time::Instant::now() < end, "not done");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    job
+}
+
+fn faulty_job(lab: &Lab, page: &str, fault: Fault, spp: u32) -> std::sync::Arc<super::job::Job> {
+    student_job(lab, page, Box::new(Faulty { fault }), spp)
+}
+
+/// Issue 27, "your integrator, live": a deliberately wrong integrator (half
+/// the light on the left half) is shown by the z-map where it is wrong: red
+/// tiles on the left, none on the right; over HTTP, the map and its verdict.
+#[test]
+fn the_z_map_shows_where_a_wrong_integrator_differs() {
+    let lab = start();
+    let job = faulty_job(&lab, "z", Fault::HalfOnTheLeft, 64);
+    assert_eq!(job.status().error, None);
+    let map = super::student::ZMap::of(&job).expect("both pictures");
+    assert!(!map.consistent(), "{}", map.verdict());
+    let grid = map.test.grid;
+    assert_eq!((grid.x, grid.y), (4, 4));
+    let red = |tx: u32, ty: u32| {
+        map.test.z[(ty * grid.x + tx) as usize].abs().max_element() as f64 > map.threshold
+    };
+    let left = (0..4).flat_map(|ty| (0..2).map(move |tx| (tx, ty)));
+    let right = (0..4).flat_map(|ty| (2..4).map(move |tx| (tx, ty)));
+    assert!(
+        left.filter(|&(x, y)| red(x, y)).count() >= 4,
+        "{}",
+        map.verdict()
+    );
+    assert_eq!(
+        right.filter(|&(x, y)| red(x, y)).count(),
+        0,
+        "{}",
+        map.verdict()
+    );
+    let (status, _) = request(&lab, "GET", "/api/zmap.png?page=z");
+    assert_eq!(status, 200);
+    lab.stop();
+}
+
+/// The same integrator that is right everywhere gives no red tile.
+#[test]
+fn the_z_map_of_a_right_integrator_is_consistent() {
+    let lab = start();
+    let right = Box::new(raytracer::integrator::PathTracer::default());
+    let job = student_job(&lab, "ok", right, 64);
+    let map = super::student::ZMap::of(&job).unwrap();
+    assert!(map.consistent(), "{}", map.verdict());
+    lab.stop();
+}
+
+/// A student's panic is a message on the page, and the lab goes on; a
+/// student's NaN samples are counted as the student's.
+#[test]
+fn a_students_panic_or_nan_is_a_message_not_a_crash() {
+    let lab = start();
+    let job = faulty_job(&lab, "p", Fault::Panics, 4);
+    let s = job.status();
+    let e = s.error.expect("the panic is reported");
+    assert!(
+        e.contains("panicked at pixel (5, 5)") && e.contains("index out of bounds"),
+        "{e}"
+    );
+    let (status, _) = request(&lab, "GET", "/api/scenes");
+    assert_eq!(status, 200, "the lab goes on");
+    let job = faulty_job(&lab, "n", Fault::NanOnRowZero, 2);
+    let s = job.status();
+    assert_eq!(s.error, None);
+    assert_eq!(s.nonfinite_by_eye, vec![64 * 2, 0]);
     lab.stop();
 }

@@ -34,70 +34,7 @@ pub fn run(
     // The checks of the options (naive recursion's ray budget among them)
     // apply to the student's integrator as to the renderer's.
     integrator.build(ia, &scene, &options, scene_args.force)?;
-    let max_depth = ia.max_depth(integrator, &scene)?;
-    let rr_depth = ia.rr_depth(&scene);
-    let which = match integrator {
-        IntegratorKind::PathBrdf => StudentRender::Path {
-            max_depth,
-            rr_depth,
-        },
-        IntegratorKind::PathNee => StudentRender::PathNee {
-            max_depth,
-            rr_depth,
-        },
-        IntegratorKind::Path => StudentRender::PathMis {
-            max_depth,
-            rr_depth,
-        },
-        IntegratorKind::Naive => StudentRender::Naive {
-            max_depth: max_depth.unwrap_or(crate::integrators::NAIVE_DEFAULT_DEPTH),
-            branching: ia.branching()[0],
-        },
-        IntegratorKind::Direct => StudentRender::Direct,
-        IntegratorKind::Light => StudentRender::Light {
-            max_depth,
-            rr_depth,
-        },
-        IntegratorKind::Bdpt => StudentRender::Bdpt {
-            max_depth,
-            rr_depth,
-        },
-        IntegratorKind::Mlt => unreachable!("handled by run_metropolis"),
-        IntegratorKind::Photon => {
-            // Exercise 17 has no depth limit and no final gathering.
-            // (A scene's own max_depth is not a request: it is ignored here.)
-            if (ia.max_depth.is_some() && max_depth.is_some())
-                || ia.biased.final_gather.is_some_and(|g| g > 0)
-            {
-                bail!(
-                    "--student -i photon (exercise 17) traces photons with no depth limit and reads the maps directly: drop --max-depth and --final-gather"
-                );
-            }
-            let s = ia.biased.photon(None, rr_depth, options.seed)?;
-            StudentRender::Photon {
-                photons: s.photons,
-                k: s.k,
-                radius_bits: s.radius.map(f32::to_bits),
-                rr_depth,
-                seed: options.seed,
-            }
-        }
-        IntegratorKind::Vpl => {
-            let s = ia.biased.vpl(max_depth, rr_depth, options.seed)?;
-            StudentRender::Vpl {
-                paths: u32::try_from(s.paths).unwrap_or(u32::MAX),
-                clamp: (s.clamp > 0.0).then_some(s.clamp),
-                max_depth,
-                rr_depth,
-                seed: s.seed,
-            }
-        }
-        IntegratorKind::Ao | IntegratorKind::Sppm | IntegratorKind::IrradianceCache => bail!(
-            "--student renders the exercises that are whole integrators: use --integrator naive (exercise 10), \
-             path-brdf (11), direct or path-nee (12), path (13), light (14), bdpt (15), mlt (16), \
-             photon (17) or vpl (18); ambient occlusion, SPPM and irradiance caching are the renderer's only"
-        ),
-    };
+    let which = student_render(integrator, ia, &scene, &options)?;
     announce(&which)?;
     let (student, reference) = (which.student(), which.reference());
     let out = &scene_args.out;
@@ -136,6 +73,84 @@ pub fn run(
     };
     say_tile_z_test(&read(&a)?, &read(&b)?);
     Ok(())
+}
+
+/// The exercise that `--integrator` names, with the options it takes
+/// (checked), and the renderer's integrator of the same estimator beside it:
+/// what `lesson11 render --student` and the lab's "Your code" tab render.
+/// Exercise 16 (Metropolis) is refused: its chains are not pixel samples.
+pub fn student_render(
+    integrator: IntegratorKind,
+    ia: &IntegratorArgs,
+    scene: &raytracer::scene::Scene,
+    options: &raytracer::render::RenderOptions,
+) -> Result<StudentRender> {
+    let max_depth = ia.max_depth(integrator, scene)?;
+    let rr_depth = ia.rr_depth(scene);
+    Ok(match integrator {
+        IntegratorKind::PathBrdf => StudentRender::Path {
+            max_depth,
+            rr_depth,
+        },
+        IntegratorKind::PathNee => StudentRender::PathNee {
+            max_depth,
+            rr_depth,
+        },
+        IntegratorKind::Path => StudentRender::PathMis {
+            max_depth,
+            rr_depth,
+        },
+        IntegratorKind::Naive => StudentRender::Naive {
+            max_depth: max_depth.unwrap_or(crate::integrators::NAIVE_DEFAULT_DEPTH),
+            branching: ia.branching()[0],
+        },
+        IntegratorKind::Direct => StudentRender::Direct,
+        IntegratorKind::Light => StudentRender::Light {
+            max_depth,
+            rr_depth,
+        },
+        IntegratorKind::Bdpt => StudentRender::Bdpt {
+            max_depth,
+            rr_depth,
+        },
+        IntegratorKind::Mlt => bail!(
+            "--student -i mlt (exercise 16) runs Markov chains, not pixel samples: lesson11 render --student -i mlt renders it"
+        ),
+        IntegratorKind::Photon => {
+            // Exercise 17 has no depth limit and no final gathering.
+            // (A scene's own max_depth is not a request: it is ignored here.)
+            if (ia.max_depth.is_some() && max_depth.is_some())
+                || ia.biased.final_gather.is_some_and(|g| g > 0)
+            {
+                bail!(
+                    "--student -i photon (exercise 17) traces photons with no depth limit and reads the maps directly: drop --max-depth and --final-gather"
+                );
+            }
+            let s = ia.biased.photon(None, rr_depth, options.seed)?;
+            StudentRender::Photon {
+                photons: s.photons,
+                k: s.k,
+                radius_bits: s.radius.map(f32::to_bits),
+                rr_depth,
+                seed: options.seed,
+            }
+        }
+        IntegratorKind::Vpl => {
+            let s = ia.biased.vpl(max_depth, rr_depth, options.seed)?;
+            StudentRender::Vpl {
+                paths: u32::try_from(s.paths).unwrap_or(u32::MAX),
+                clamp: (s.clamp > 0.0).then_some(s.clamp),
+                max_depth,
+                rr_depth,
+                seed: s.seed,
+            }
+        }
+        IntegratorKind::Ao | IntegratorKind::Sppm | IntegratorKind::IrradianceCache => bail!(
+            "--student renders the exercises that are whole integrators: use --integrator naive (exercise 10), \
+             path-brdf (11), direct or path-nee (12), path (13), light (14), bdpt (15), mlt (16), \
+             photon (17) or vpl (18); ambient occlusion, SPPM and irradiance caching are the renderer's only"
+        ),
+    })
 }
 
 /// Says which exercise renders and what stands beside it; refuses one that

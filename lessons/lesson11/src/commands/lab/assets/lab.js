@@ -58,7 +58,7 @@ function renderParams() {
   delete params.exposure;
   const integrator = params.integrator;
   if (integrator === 'direct' || integrator === 'ao') delete params['max-depth'];
-  if (integrator !== 'naive') delete params.branching;
+  if (integrator !== 'naive') { delete params.branching; delete params.roulette; }
   return params;
 }
 
@@ -78,6 +78,7 @@ async function start(kind, path, params, errorId) {
 
 function startRender() {
   clearInspector();
+  state.clicked = null;
   return start('render', '/api/render', renderParams(), 'r-error');
 }
 
@@ -98,6 +99,90 @@ function brdfParams() {
   else delete params.phong;
   if (model !== 'glass') delete params.ior;
   return params;
+}
+
+function startRace() {
+  const params = formParams($('race-form'));
+  params.racers = [...document.querySelectorAll('#race-form .racer')].map((el) => el.value).filter((v) => v).join(',');
+  $('race-plot').replaceChildren();
+  $('race-images').replaceChildren();
+  return start('race', '/api/race', params, 'race-error');
+}
+
+// The racers' pictures, one per integrator.
+async function loadRace(job) {
+  const holder = $('race-images');
+  const lines = (job.race && job.race[0]) || [];
+  lines.forEach((line, eye) => {
+    let fig = holder.children[eye];
+    if (!fig) {
+      fig = document.createElement('figure');
+      fig.append(document.createElement('img'), document.createElement('figcaption'));
+      holder.appendChild(fig);
+    }
+    fig.querySelector('img').src = `/api/image.png?${query({ job: job.id, eye, v: job.version })}`;
+    fig.querySelector('figcaption').textContent = line.integrator;
+    fig.querySelector('figcaption').style.color = RACE_COLOURS[eye];
+  });
+  state.shown = job.version;
+}
+
+// RMSE against time on log–log axes, one line per racer, the reference's
+// noise floor dashed.
+function drawRace(job) {
+  const plot = $('race-plot');
+  const [lines, floor] = job.race || [[], 0];
+  const points = lines.flatMap((l) => l.points).filter(([t, e]) => t > 0 && e > 0);
+  plot.replaceChildren();
+  if (points.length === 0) return;
+  const log = Math.log10;
+  const ts = points.map((p) => log(p[0]));
+  const es = points.map((p) => log(p[1])).concat(floor > 0 ? [log(floor)] : []);
+  const t0 = Math.floor(Math.min(...ts)), t1 = Math.max(Math.ceil(Math.max(...ts)), t0 + 1);
+  const e0 = Math.floor(Math.min(...es)), e1 = Math.max(Math.ceil(Math.max(...es)), e0 + 1);
+  const [L, R, T, B] = [60, 580, 15, 300];
+  const X = (t) => L + (log(t) - t0) / (t1 - t0) * (R - L);
+  const Y = (e) => B - (log(e) - e0) / (e1 - e0) * (B - T);
+  const text = (x, y, s, anchor, fill = '#aaa') => {
+    const el = svg('text', { x, y, fill, 'font-size': 11, 'text-anchor': anchor }, plot);
+    el.textContent = s;
+    return el;
+  };
+  svg('rect', { x: L, y: T, width: R - L, height: B - T, fill: 'none', stroke: '#555' }, plot);
+  for (let k = t0; k <= t1; k++) {
+    const x = L + (k - t0) / (t1 - t0) * (R - L);
+    svg('line', { x1: x, y1: T, x2: x, y2: B, stroke: '#333' }, plot);
+    text(x, B + 15, `${Number((10 ** k).toPrecision(1))} s`, 'middle');
+  }
+  for (let k = e0; k <= e1; k++) {
+    const y = B - (k - e0) / (e1 - e0) * (B - T);
+    svg('line', { x1: L, y1: y, x2: R, y2: y, stroke: '#333' }, plot);
+    text(L - 5, y + 4, `1e${k}`, 'end');
+  }
+  text((L + R) / 2, B + 32, 'time (seconds, log scale)', 'middle');
+  const label = text(14, (T + B) / 2, 'RMSE against the reference (log scale)', 'middle');
+  label.setAttribute('transform', `rotate(-90 14 ${(T + B) / 2})`);
+  if (floor > 0) svg('line', { x1: L, y1: Y(floor), x2: R, y2: Y(floor), stroke: '#888', 'stroke-dasharray': '5 4', class: 'floor' }, plot);
+  lines.forEach((line, i) => {
+    const pts = line.points.filter(([t, e]) => t > 0 && e > 0).map(([t, e]) => `${X(t)},${Y(e)}`).join(' ');
+    if (pts) svg('polyline', { points: pts, fill: 'none', stroke: RACE_COLOURS[i], 'stroke-width': 2, class: 'race-line', 'data-integrator': line.integrator }, plot);
+    text(R - 5, T + 15 + 14 * i, line.integrator, 'end', RACE_COLOURS[i]);
+  });
+}
+
+function showStudentControls() {
+  const integrator = $('y-integrator').value;
+  document.querySelectorAll('#student-form .y-depth').forEach((el) => { el.hidden = integrator === 'direct'; });
+  document.querySelectorAll('#student-form .y-naive').forEach((el) => { el.hidden = integrator !== 'naive'; });
+}
+
+function startStudent() {
+  const params = formParams($('student-form'));
+  if (params.integrator === 'direct') delete params['max-depth'];
+  if (params.integrator !== 'naive') delete params.branching;
+  for (const id of ['y-mine', 'y-theirs', 'y-zmap']) $(id).removeAttribute('src');
+  $('y-verdict').textContent = '';
+  return start('student', '/api/student', params, 'y-error');
 }
 
 function startSphere() {
@@ -146,7 +231,9 @@ function pictureUrl(job) {
   return `/api/image.png?${query({ job: id, exposure, v })}`;
 }
 
-const imageOf = { render: 'r-image', stereo: 's-image', brdf: 'b-image' };
+const imageOf = { render: 'r-image', stereo: 's-image', brdf: 'b-image', student: 'y-mine' };
+const TABS = ['render', 'stereo', 'brdf', 'student', 'race'];
+const RACE_COLOURS = ['#ffcc33', '#66ccff', '#ff77aa'];
 
 // Loads the newest snapshot into a hidden image and swaps it in when whole
 // (no flicker); one load at a time.
@@ -156,6 +243,13 @@ function loadPicture() {
   if (!job || job.version === 0 || !job.picture) return;
   if (state.loading) { state.again = true; return; }
   state.loading = true;
+  if (job.kind === 'student' || job.kind === 'race') {
+    (job.kind === 'student' ? loadStudent(job) : loadRace(job)).finally(() => {
+      state.loading = false;
+      if (state.again) { state.again = false; loadPicture(); }
+    });
+    return;
+  }
   const img = new Image();
   const done = () => {
     state.loading = false;
@@ -164,6 +258,8 @@ function loadPicture() {
   img.onload = () => {
     const target = $(imageOf[job.kind]);
     target.src = img.src;
+    // The picture is as large as the window allows at its own aspect ratio.
+    target.parentElement.style.setProperty('--aspect', img.naturalWidth / img.naturalHeight);
     target.dataset.version = job.version;
     state.shown = job.version;
     sizeOverlay(job);
@@ -172,6 +268,35 @@ function loadPicture() {
   };
   img.onerror = done;
   img.src = pictureUrl(job);
+}
+
+// The "Your code" tab: both pictures and the z-map between them, with its
+// verdict (in the z-map's headers).
+async function loadStudent(job) {
+  const v = job.version;
+  const blob = async (path, params) => {
+    const r = await fetch(`${path}?${query({ job: job.id, v, ...params })}`, { cache: 'no-store' });
+    return r.ok ? { url: URL.createObjectURL(await r.blob()), headers: r.headers } : null;
+  };
+  const [mine, theirs, zmap] = await Promise.all([
+    blob('/api/image.png', { eye: 0 }), blob('/api/image.png', { eye: 1 }), blob('/api/zmap.png', {}),
+  ]);
+  for (const [id, got] of [['y-mine', mine], ['y-theirs', theirs], ['y-zmap', zmap]]) {
+    if (!got) continue;
+    const img = $(id);
+    if (img.src.startsWith('blob:')) URL.revokeObjectURL(img.src);
+    img.src = got.url;
+  }
+  if (zmap) {
+    const verdict = $('y-verdict');
+    verdict.textContent = `Tile z-test: ${zmap.headers.get('X-Lab-Verdict')}`;
+    const consistent = zmap.headers.get('X-Lab-Consistent') === 'true';
+    verdict.className = `verdict ${consistent ? 'good' : 'bad'}`;
+    verdict.dataset.consistent = consistent;
+    verdict.dataset.version = v;
+  }
+  state.shown = v;
+  for (const hook of state.onImage) hook(job, $('y-mine'));
 }
 
 function fmt(x) {
@@ -193,7 +318,11 @@ function updateStats() {
   if (job.done) text += job.error ? ' · failed' : job.interrupted ? ' · stopped' : ' · done';
   if (job.nonfinite > 0) text += ` · ${job.nonfinite} NaN/negative samples dropped`;
   if (job.note) text += `<br><span class="note">${escapeHtml(job.note)}</span>`;
-  const ids = { render: ['r-stats', 'r-command', 'r-error'], stereo: ['s-stats', 's-command', 's-error'], brdf: ['b-stats', null, 'b-error'] };
+  if (job.kind === 'race') drawRace(job);
+  const ids = { race: ['race-stats', null, 'race-error'], render: ['r-stats', 'r-command', 'r-error'], stereo: ['s-stats', 's-command', 's-error'], brdf: ['b-stats', null, 'b-error'], student: ['y-stats', 'y-command', 'y-error'] };
+  if (job.kind === 'student' && job.nonfinite_by_eye && job.nonfinite_by_eye[0] > 0) {
+    text += `<br><span class="bad">your integrator returned ${job.nonfinite_by_eye[0]} samples that are NaN, infinite or negative (dropped from its picture)</span>`;
+  }
   const [stats, command, error] = ids[job.kind];
   $(stats).innerHTML = text;
   if (job.error) showError(error, job.error);
@@ -201,9 +330,29 @@ function updateStats() {
     let line = job.command;
     if (job.kind === 'render' && Number($('r-exposure').value) !== 0) line += ` --exposure ${$('r-exposure').value}`;
     if (job.kind === 'stereo') line += ` --mode ${$('s-mode').value} --desaturate ${$('s-desaturate').value}`;
-    $(command).textContent = line;
+    showCommand($(command), line);
   }
   if (job.kind === 'render') $('r-exr').href = `/api/image.exr?${query({ job: job.id, v: job.version })}`;
+}
+
+// A command line that wraps between its arguments, never inside one: each
+// `--option value` (and `-p lesson11`) is one unbreakable piece.
+function showCommand(el, line) {
+  const pieces = [];
+  for (const word of line.split(' ')) {
+    const last = pieces[pieces.length - 1];
+    const option = last && last.startsWith('-') && last !== '--' && !last.includes(' ');
+    if (option && !word.startsWith('-')) pieces[pieces.length - 1] = `${last} ${word}`;
+    else pieces.push(word);
+  }
+  el.replaceChildren();
+  pieces.forEach((piece, i) => {
+    if (i > 0) el.append(' ');
+    const span = document.createElement('span');
+    span.className = 'arg';
+    span.textContent = piece;
+    el.append(span);
+  });
 }
 
 // ---- the path inspector ----
@@ -216,7 +365,10 @@ function sizeOverlay(job) {
 function clearInspector() {
   $('r-overlay').replaceChildren();
   $('inspector-table').hidden = true;
+  $('inspector-segments').hidden = true;
   $('inspector-note').textContent = '';
+  $('inspector-why').hidden = true;
+  $('i-depth-label').hidden = true;
 }
 
 const SVG = 'http://www.w3.org/2000/svg';
@@ -227,7 +379,7 @@ function svg(name, attrs, parent) {
   return el;
 }
 
-async function inspect(event) {
+function inspect(event) {
   const job = state.job;
   if (!job || job.kind !== 'render') return;
   const img = $('r-image');
@@ -235,17 +387,33 @@ async function inspect(event) {
   const x = Math.floor(((event.clientX - box.left) / box.width) * job.width);
   const y = Math.floor(((event.clientY - box.top) / box.height) * job.height);
   if (x < 0 || y < 0 || x >= job.width || y >= job.height) return;
+  state.clicked = [x, y];
+  return inspectPixel(x, y);
+}
+
+// What the drawing cannot say: why light tracing's and BDPT's paths need
+// not pass through the pixel, and why a strategy's share can be small.
+const WHY = {
+  light: 'Light tracing starts its paths on the lights, not at this pixel: the path shown is the light path numbered like this pixel sample. Each of its vertices is joined to the lens, and what it brings is added where that vertex is seen (the rings), usually on other pixels; this pixel\'s value comes from the rings of all the other light paths that land on it.',
+  bdpt: 'Bidirectional tracing builds a camera path through this pixel and a light path from a light, and joins their vertices in every way: (s, t) takes s light and t camera vertices. Each (s, t) is a different estimator of the same pixel; multiple importance sampling (the power heuristic) gives each the weight w = p_st² / Σ p_ij² over the strategies that could have made the same path, and the weights of one path add up to 1. A strategy whose density is small for a path keeps little of it, so its weighted contribution can be small where the path tracer (always its own strategy) adds a lot. Connections with t = 1 land on other pixels (rings).',
+  naive: 'Naive recursion traces N rays at every hit, a tree of up to 1 + N + … + N^(D−1) rays; the drawing and the tables show its first levels (tree depth shown).',
+};
+
+async function inspectPixel(x, y) {
   clearInspector();
   const overlay = $('r-overlay');
-  svg('rect', { x, y, width: 1, height: 1, class: 'clicked', fill: 'none', stroke: '#fff', 'stroke-width': 0.5 }, overlay);
+  svg('rect', { x, y, width: 1, height: 1, class: 'clicked', fill: 'none', stroke: '#fff', 'stroke-width': 2 }, overlay);
   const r = await call('GET', '/api/paths', { x, y, sample: $('i-sample').value });
   const note = $('inspector-note');
   note.className = 'note';
   state.record = r.status === 200 ? r.body : null;
   if (r.status === 200) {
-    drawPaths(r.body);
+    const hidden = drawPaths(r.body);
     note.textContent = `pixel (${x}, ${y}), sample ${r.body.sample}: estimate ${rgb(r.body.estimate)}` +
-      (r.body.truncated ? ` (${r.body.truncated})` : '');
+      (r.body.truncated ? ` (${r.body.truncated})` : '') + hidden;
+    const why = WHY[r.body.integrator] && tr(`why.${r.body.integrator}`, WHY[r.body.integrator]);
+    $('inspector-why').textContent = why || '';
+    $('inspector-why').hidden = !why;
   } else {
     note.textContent = `pixel (${x}, ${y}): ${r.body}`;
   }
@@ -256,58 +424,104 @@ const ROLE_COLOUR = { camera: '#ffcc33', light: '#66ccff', branch: '#cc88ff' };
 
 function rgb(c) { return c ? `(${c.map((v) => Number(v).toPrecision(3)).join(', ')})` : '—'; }
 
-// Draws a path record (see paths.rs for its shape) over the picture and
-// lists its vertices and segments.
-function drawPaths(record) {
-  const overlay = $('r-overlay');
-  const centre = [record.pixel[0] + 0.5, record.pixel[1] + 0.5];
-  const at = (v, i) => v.raster || (v.kind === 'camera' || i === 0 ? centre : null);
-  const vertexAt = (ref) => record.paths[ref.path] && record.paths[ref.path].vertices[ref.vertex];
-  const point = (ref) => { const v = vertexAt(ref); return v ? at(v, ref.vertex) : null; };
-  record.paths.forEach((path, p) => {
-    const pts = [];
-    if (path.parent) { const q = point(path.parent); if (q) pts.push(q); }
-    path.vertices.forEach((v, i) => { const q = at(v, i); if (q) pts.push(q); });
-    const colour = ROLE_COLOUR[path.role] || '#fff';
-    svg('polyline', { points: pts.map((q) => q.join(',')).join(' '), fill: 'none', stroke: colour, 'stroke-width': 0.6, class: `path ${path.role}`, 'data-path': p }, overlay);
-    for (const q of pts) svg('circle', { cx: q[0], cy: q[1], r: 0.9, fill: colour, class: 'vertex' }, overlay);
-  });
-  for (const s of record.segments) {
-    const a = point(s.from);
-    const b = s.to.vertex ? point(s.to.vertex) : s.to.point && s.to.point.raster;
-    if (!a || !b) continue;
-    const colour = s.occluded ? '#f66' : s.kind === 'shadow-ray' ? '#6f6' : '#6ff';
-    svg('line', { x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: colour, 'stroke-width': 0.4, 'stroke-dasharray': '1.5 1', class: `segment ${s.kind}` }, overlay);
-  }
-  // Connections to the lens (t = 1) land on other pixels: a ring where each was splatted.
-  for (const s of record.segments) {
-    if (s.splat) svg('circle', { cx: s.splat[0], cy: s.splat[1], r: 1.4, fill: 'none', stroke: '#6ff', 'stroke-width': 0.4, class: 'splat' }, overlay);
-  }
-  const table = $('inspector-table');
-  const head = ['path', 'vertex', 'kind', 'position', 'BRDF', 'pdf', 'throughput', 'MIS weight', 'contribution'];
-  const rows = [head];
-  record.paths.forEach((path, p) => path.vertices.forEach((v, i) => rows.push([
-    `${p} (${path.role})`, i, v.kind, rgb(v.position), v.brdf || '—',
-    v.pdf ? `${Number(v.pdf.value).toPrecision(4)} per ${v.pdf.measure}` : '—',
-    rgb(v.throughput), v.mis_weight == null ? '—' : Number(v.mis_weight).toFixed(3), rgb(v.contribution),
-  ])));
-  record.segments.forEach((s) => rows.push([
-    s.kind, `${s.from.path}.${s.from.vertex} → ${s.to.vertex ? `${s.to.vertex.path}.${s.to.vertex.vertex}` : rgb(s.to.point.position)}`,
-    s.occluded ? 'occluded' : 'visible',
-    s.strategy ? `s=${s.strategy[0]}, t=${s.strategy[1]}` : '', s.splat ? `splat at ${rgb(s.splat)}` : '', '', '',
-    s.mis_weight == null ? '—' : Number(s.mis_weight).toFixed(3), rgb(s.contribution),
-  ]));
+// A density with its measure: per steradian, per square metre, or a probability.
+function pdfText(pdf) {
+  if (!pdf) return '—';
+  const v = Number(pdf.value).toPrecision(4);
+  if (pdf.measure === 'discrete') return `P = ${v}`;
+  return `${v} ${pdf.measure === 'area' ? '/m²' : '/sr'}`;
+}
+
+const ref = (r) => `p${r.path} v${r.vertex}`;
+
+// Each path's depth in naive recursion's tree (0 for a path without a parent).
+function depths(record) {
+  const d = [];
+  record.paths.forEach((path, p) => { d[p] = path.parent ? (d[path.parent.path] || 0) + 1 : 0; });
+  return d;
+}
+
+function fillTable(table, rows) {
   table.replaceChildren(...rows.map((row, r) => {
     const tr = document.createElement('tr');
-    for (const cell of row) {
+    if (row.blocked) tr.className = 'blocked';
+    for (const cell of row.cells || row) {
       const td = document.createElement(r === 0 ? 'th' : 'td');
       td.textContent = cell;
       tr.appendChild(td);
     }
     return tr;
   }));
-  table.hidden = false;
+  table.hidden = rows.length < 2;
 }
+
+// Draws a path record (see paths.rs for its shape) over the picture and
+// lists its vertices and segments; naive recursion's tree only to the depth
+// chosen. Returns what it left out, as a sentence for the note.
+function drawPaths(record) {
+  const overlay = $('r-overlay');
+  // Lines 2.5 px wide on screen whatever the picture's size (non-scaling
+  // strokes); marks sized in screen pixels too.
+  const box = $('r-image').getBoundingClientRect();
+  const unit = box.width > 0 ? jobWidth() / box.width : 1;
+  const centre = [record.pixel[0] + 0.5, record.pixel[1] + 0.5];
+  const at = (v, i) => v.raster || (v.kind === 'camera' || i === 0 ? centre : null);
+  const vertexAt = (r) => record.paths[r.path] && record.paths[r.path].vertices[r.vertex];
+  const point = (r) => { const v = vertexAt(r); return v ? at(v, r.vertex) : null; };
+  const naive = record.integrator === 'naive';
+  $('i-depth-label').hidden = !naive;
+  const limit = naive ? Math.max(1, Number($('i-depth').value) || 1) : Infinity;
+  const depth = depths(record);
+  const shown = (p) => depth[p] < limit;
+  let hiddenPaths = 0, hiddenVertices = 0;
+  record.paths.forEach((path, p) => {
+    if (!shown(p)) { hiddenPaths += 1; hiddenVertices += path.vertices.length; return; }
+    const pts = [];
+    if (path.parent) { const q = point(path.parent); if (q) pts.push(q); }
+    path.vertices.forEach((v, i) => { const q = at(v, i); if (q) pts.push(q); });
+    const colour = ROLE_COLOUR[path.role] || '#fff';
+    svg('polyline', { points: pts.map((q) => q.join(',')).join(' '), fill: 'none', stroke: colour, 'stroke-width': 2.5, 'stroke-linejoin': 'round', class: `path ${path.role}`, 'data-path': p }, overlay);
+    for (const q of pts) svg('circle', { cx: q[0], cy: q[1], r: 3 * unit, fill: colour, class: 'vertex' }, overlay);
+  });
+  const segments = record.segments.filter((s) => shown(s.from.path));
+  for (const s of segments) {
+    const a = point(s.from);
+    const b = s.to.vertex ? point(s.to.vertex) : s.to.point && s.to.point.raster;
+    if (!a || !b) continue;
+    const colour = s.occluded ? '#f66' : s.kind === 'shadow-ray' ? '#6f6' : '#6ff';
+    svg('line', { x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: colour, 'stroke-width': 2, 'stroke-dasharray': '6 4', class: `segment ${s.kind}${s.occluded ? ' blocked' : ''}` }, overlay);
+  }
+  // Connections to the lens (t = 1) land on other pixels: a ring where each was splatted.
+  for (const s of segments) {
+    if (s.splat) svg('circle', { cx: s.splat[0], cy: s.splat[1], r: 5 * unit, fill: 'none', stroke: '#6ff', 'stroke-width': 2, class: 'splat' }, overlay);
+  }
+  const vertexRows = [['vertex', 'path', 'kind', 'position', 'BRDF', 'pdf', 'β (throughput)', 'MIS weight', 'contribution']];
+  record.paths.forEach((path, p) => {
+    if (!shown(p)) return;
+    path.vertices.forEach((v, i) => vertexRows.push([
+      ref({ path: p, vertex: i }), naive ? `${path.role}, depth ${depth[p]}` : path.role, v.kind, rgb(v.position), v.brdf || '—',
+      pdfText(v.pdf), rgb(v.throughput), v.mis_weight == null ? '—' : Number(v.mis_weight).toFixed(3), rgb(v.contribution),
+    ]));
+  });
+  fillTable($('inspector-table'), vertexRows);
+  const segmentRows = [['segment', 'from → to', 'strategy (s, t)', 'visible?', 'added at', 'MIS weight', 'contribution']];
+  for (const s of segments) {
+    segmentRows.push({
+      blocked: s.occluded,
+      cells: [
+        s.kind, `${ref(s.from)} → ${s.to.vertex ? ref(s.to.vertex) : `point ${rgb(s.to.point.position)}`}`,
+        s.strategy ? `(${s.strategy[0]}, ${s.strategy[1]})` : '—', s.occluded ? 'blocked' : 'visible',
+        s.splat ? `pixel (${Math.floor(s.splat[0])}, ${Math.floor(s.splat[1])})` : 'this pixel',
+        s.mis_weight == null ? '—' : Number(s.mis_weight).toFixed(3), rgb(s.contribution),
+      ],
+    });
+  }
+  fillTable($('inspector-segments'), segmentRows);
+  if (hiddenPaths === 0) return '';
+  return ` · ${hiddenPaths} deeper rays (${hiddenVertices} vertices) not shown: raise “tree depth shown”`;
+}
+
+function jobWidth() { return state.job ? state.job.width : 1; }
 
 // ---- the BRDF tab ----
 
@@ -411,7 +625,7 @@ function perFrame(f) {
 
 function selectTab(tab) {
   state.tab = tab;
-  for (const name of ['render', 'stereo', 'brdf']) {
+  for (const name of TABS) {
     $(`tab-${name}`).setAttribute('aria-selected', String(name === tab));
     $(`panel-${name}`).hidden = name !== tab;
   }
@@ -419,24 +633,60 @@ function selectTab(tab) {
   // One render at a time per page: the tab shown is the one rendering.
   if (tab === 'render') return startRender();
   if (tab === 'stereo') return startStereo();
+  if (tab === 'student') return startStudent();
+  if (tab === 'race') return startRace();
   updateBrdf();
   return startSphere();
 }
 
+// Each way of showing the pair, in a line.
+const MODE_HELP = {
+  'red-cyan': 'Anaglyph for red–cyan glasses: the left eye’s red channel, the right eye’s green and blue.',
+  'half-color': 'Red–cyan, half colour: the left eye’s brightness in red (less rivalry on red objects), the right eye’s green and blue.',
+  grey: 'Red–cyan from grey pictures: no colour, no rivalry.',
+  'red-blue': 'Anaglyph for red (left) – blue (right) glasses.',
+  'red-green': 'Anaglyph for red (left) – green (right) glasses.',
+  'amber-blue': 'Anaglyph for amber (left) – blue (right) glasses (ColorCode 3-D).',
+  'green-magenta': 'Anaglyph for green (left) – magenta (right) glasses.',
+  dubois: 'Red–cyan with Dubois’ least-squares matrices: the truest colours through red–cyan glasses.',
+  'side-by-side': 'Left eye’s picture on the left: look straight through (parallel viewing) or use a stereoscope.',
+  'cross-eyed': 'Right eye’s picture on the left: cross your eyes until the two merge into a third in the middle.',
+  'over-under': 'Left eye’s picture above the right one: for mirror viewers (fits the window’s height).',
+  left: 'The left eye’s picture alone.',
+  right: 'The right eye’s picture alone.',
+};
+
+function showModeHelp() {
+  const mode = $('s-mode').value;
+  $('s-mode-help').textContent = tr(`mode.${mode}`, MODE_HELP[mode] || '');
+}
+
 function echo(id, text) { $(`${id}-out`).textContent = text; }
 
+// The other language, and what the script wrote again in it.
+function switchLanguage() {
+  applyLanguage(lang === 'bg' ? 'en' : 'bg', () => {
+    showModeHelp();
+    if (state.clicked) inspectPixel(...state.clicked);
+  });
+}
+
 async function setup() {
+  applyLanguage(initialLanguage());
+  $('lang').addEventListener('click', switchLanguage);
   const r = await call('GET', '/api/scenes', {}, false);
   window.catalogue = r.body;
   const scenes = r.body.scenes.map((s) => [s.name, s.builtin ? s.name : `${s.name} (file)`]);
   fill($('r-scene'), scenes, 'cornell');
   fill($('s-scene'), scenes, 'stereo');
+  fill($('y-scene'), scenes, 'cornell');
   const integrators = r.body.integrators.map((i) => [i[0], i[0]]);
   fill($('r-integrator'), integrators, 'path');
   // SPPM and Metropolis render whole images, not the pixel samples of a stereo pair.
   const whole = r.body.whole_image || [];
   fill($('s-integrator'), integrators.filter(([name]) => !whole.includes(name)), 'path');
   fill($('s-mode'), r.body.composites.map((c) => [c, c]), 'red-cyan');
+  showModeHelp();
   for (const el of document.querySelectorAll('select, input')) {
     const title = (r.body.scenes.find((s) => s.name === el.value) || {}).description;
     if (el.tagName === 'SELECT' && title) el.title = title;
@@ -457,17 +707,22 @@ async function setup() {
   $('render-form').addEventListener('submit', (e) => { e.preventDefault(); restartRender(); });
   $('r-stop').addEventListener('click', () => call('POST', '/api/stop', {}));
   $('r-picture').addEventListener('click', inspect);
+  // A new sample k (or tree depth) shows the same pixel again.
+  for (const id of ['i-sample', 'i-depth']) {
+    $(id).addEventListener('change', () => { if (state.clicked) inspectPixel(...state.clicked); });
+  }
 
   const restartStereo = perFrame(startStereo);
   $('stereo-form').addEventListener('input', (e) => {
     const id = e.target.id;
     if (id === 's-separation') echo('s-separation', e.target.value);
-    if (id === 's-convergence') echo('s-convergence', e.target.value);
+    if (id === 's-convergence') echo('s-convergence', `${e.target.value} m`);
+    if (id === 's-mode') showModeHelp();
     if (id === 's-desaturate') echo('s-desaturate', e.target.value);
     if (id === 's-exposure') echo('s-exposure', e.target.value);
     if (id === 's-focus') {
       $('s-convergence').disabled = e.target.checked;
-      echo('s-convergence', e.target.checked ? 'focus' : $('s-convergence').value);
+      echo('s-convergence', e.target.checked ? 'focus distance' : `${$('s-convergence').value} m`);
     }
     // The composite, desaturation and exposure only show the same pair anew.
     if (e.target.dataset.display && id !== 's-focus') { updateStats(); loadPicture(); return; }
@@ -490,14 +745,29 @@ async function setup() {
   });
   $('brdf-form').addEventListener('submit', (e) => e.preventDefault());
 
-  for (const name of ['render', 'stereo', 'brdf']) {
+  $('race-start').addEventListener('click', startRace);
+  $('race-stop').addEventListener('click', () => call('POST', '/api/stop', {}));
+  $('race-form').addEventListener('submit', (e) => { e.preventDefault(); startRace(); });
+  const restartStudent = perFrame(startStudent);
+  $('student-form').addEventListener('input', (e) => {
+    if (e.target.name === 'integrator') showStudentControls();
+    if (e.target.type === 'number' || e.target.type === 'text') return; // on change
+    restartStudent();
+  });
+  $('student-form').addEventListener('change', (e) => { if (e.target.type === 'number' || e.target.type === 'text') restartStudent(); });
+  $('student-form').addEventListener('submit', (e) => { e.preventDefault(); restartStudent(); });
+  $('y-stop').addEventListener('click', () => call('POST', '/api/stop', {}));
+  showStudentControls();
+
+  for (const name of TABS) {
     $(`tab-${name}`).addEventListener('click', () => selectTab(name));
   }
   pollLoop();
   // `#stereo` or `#brdf` opens that tab (links from the tour page and the slides).
   const tab = location.hash.slice(1);
   if (tab === 'selftest') selftest();
-  else selectTab(['stereo', 'brdf'].includes(tab) ? tab : 'render');
+  else if (tab === 'layout') layoutCheck();
+  else selectTab(TABS.includes(tab) ? tab : 'render');
 }
 
 // ---- the self-test (#selftest) ----
@@ -556,7 +826,7 @@ async function selftest() {
         polylines: $('r-overlay').querySelectorAll('polyline.path').length,
         circles: $('r-overlay').querySelectorAll('circle.vertex').length,
         lines: $('r-overlay').querySelectorAll('line.segment').length,
-        rows: table.hidden ? 0 : table.rows.length - 1,
+        rows: (table.hidden ? 0 : table.rows.length - 1) + ($('inspector-segments').hidden ? 0 : $('inspector-segments').rows.length - 1),
         record: state.record && {
           paths: state.record.paths.length,
           vertices: state.record.paths.reduce((n, p) => n + p.vertices.length, 0),
@@ -593,6 +863,76 @@ async function selftest() {
   pre.textContent = JSON.stringify(out);
   pre.hidden = false;
   document.title = 'selftest done';
+}
+
+// ---- the layout check (#layout): where things are in this window ----
+
+function rect(el) {
+  const r = el.getBoundingClientRect();
+  return { left: r.left, top: r.top, right: r.right, bottom: r.bottom, width: r.width, height: r.height };
+}
+
+async function layoutCheck() {
+  const out = { errors: [], step: 'start' };
+  try {
+    const form = $('render-form');
+    form.elements.scene.value = 'cornell';
+    form.elements.integrator.value = 'bdpt';
+    showFor('bdpt');
+    form.elements.spp.value = '16';
+    let shown = false;
+    state.onImage.push((job) => { if (job.kind === 'render') shown = true; });
+    await selectTab('render');
+    await until(() => shown, 60000);
+    const box = $('r-image').getBoundingClientRect();
+    await inspect({ clientX: box.left + box.width / 2, clientY: box.top + box.height * 0.8 });
+    await until(() => $('inspector-note').dataset.status, 20000);
+    await sleep(100);
+    const line = $('r-overlay').querySelector('polyline.path');
+    const style = line ? getComputedStyle(line) : null;
+    out.window = { width: window.innerWidth, height: window.innerHeight, scrollWidth: document.documentElement.scrollWidth };
+    out.rects = {
+      picture: rect($('r-picture')), stats: rect($('r-stats')), inspector: rect($('inspector')),
+      drawing: rect($('r-overlay')), tables: rect(document.querySelector('.inspector .tables')),
+      controls: rect($('render-form')), table: rect($('inspector-table')),
+    };
+    out.tables_overflow = getComputedStyle(document.querySelector('.inspector .tables')).overflowY;
+    out.line = style && { vector_effect: style.vectorEffect, width: parseFloat(style.strokeWidth) };
+    out.status = Number($('inspector-note').dataset.status);
+    out.rows = $('inspector-table').rows.length;
+    out.why = !$('inspector-why').hidden;
+    out.favicon = !!document.querySelector('link[rel="icon"]');
+    // A new sample k redraws the pixel clicked.
+    $('i-sample').value = '1';
+    $('i-sample').dispatchEvent(new Event('change'));
+    out.resampled = await until(() => $('inspector-note').textContent.includes('sample 1:') && $('inspector-note').textContent, 20000);
+    // Naive recursion's tree (8 rays a hit, D = 4: 585 rays) is shown to
+    // the depth chosen, with a count of what is hidden; the page keeps its length.
+    form.elements.integrator.value = 'naive';
+    showFor('naive');
+    form.elements['max-depth'].value = '4';
+    form.elements.spp.value = '1';
+    shown = false;
+    await startRender();
+    await until(() => shown, 60000);
+    $('i-sample').value = '0';
+    await inspect({ clientX: box.left + box.width / 2, clientY: box.top + box.height * 0.8 });
+    out.naive = {
+      note: $('inspector-note').textContent,
+      rows: $('inspector-table').rows.length - 1,
+      page_height: document.documentElement.scrollHeight,
+      depth_control: !$('i-depth-label').hidden,
+    };
+    await call('POST', '/api/stop', {});
+  } catch (e) {
+    out.errors.push(String(e && e.stack || e));
+  }
+  out.step = 'done';
+  state.closed = true;
+  if (state.kick) state.kick();
+  const pre = $('selftest');
+  pre.textContent = JSON.stringify(out);
+  pre.hidden = false;
 }
 
 setup().catch((e) => { document.body.insertAdjacentHTML('afterbegin', '<p class="error" role="alert"></p>'); document.querySelector('.error').textContent = `the lab cannot start: ${e}`; });
