@@ -1,0 +1,199 @@
+//! The wavefront path tracer: the lecture's path tracer run as a second
+//! engine, all of a unit's paths in lockstep, one stage at a time.
+//!
+//! Lecture topic: path tracing (the estimator is [`PathTracer`]'s, with MIS
+//! by the power heuristic and Russian roulette); this module is about how
+//! production renderers and GPUs run it fast (pbrt-v4's wavefront
+//! integrator, Laine et al., "Megakernels Considered Harmful", 2013).
+//!
+//! # One path at a time, or all of them a step at a time
+//!
+//! `path` follows one path from the camera to its end: trace, shade, sample
+//! a light, trace its shadow ray, sample the BRDF, trace again. Every step
+//! waits on the one before, and each touches different data (BVH nodes,
+//! triangles, the material, the light), so the processor mostly waits on
+//! memory and on branches it cannot predict. This engine takes a whole unit
+//! of the render loop (a 16×16 tile × 16 samples: 4096 paths) and runs each
+//! *stage* over all its live paths before the next stage starts:
+//!
+//! ```text
+//!   camera ──► ┌──────────────────────────────────────────────────────┐
+//!              │ closest hits ──► shade ──► shadow rays ──► compact    │ ×depth
+//!              └──────────────────────────────────────────────────────┘
+//!                                     └─► film (slots in raster order)
+//! ```
+//!
+//! - **Memory layout.** Paths live in a [`PathQueue`](queue::PathQueue):
+//!   structure of arrays, one array per field (rays, throughputs, radiance,
+//!   samplers, ...). A stage streams through the arrays it needs and no
+//!   other, and consecutive paths sit in consecutive cache lines.
+//! - **Lanes.** A stage does the same thing to thousands of paths, so the
+//!   same code and the same BVH nodes stay hot, and rays can be tested
+//!   several at a time, one per SIMD lane.
+//! - **Divergence.** Paths that hit glass and paths that hit a wall want
+//!   different code. Running stage by stage keeps each branch's code together
+//!   instead of interleaving it per path.
+//! - **Compaction.** Paths end at different depths (roulette, escaping rays).
+//!   After each bounce the live list drops the ended ones
+//!   ([`PathQueue::compact`](queue::PathQueue::compact)), so later bounces
+//!   loop over survivors only and no lane idles on a dead path.
+//!
+//! # The same estimator
+//!
+//! Each path has its own counter-based sampler, `Sampler::new(seed, pixel,
+//! k)` as in the per-sample loop, and draws its numbers in `path`'s order
+//! ([`shade`]); shadow rays are traced later but draw nothing, and each
+//! path's radiance is summed in the same order. The film receives the
+//! samples in the per-sample loop's order. So the engine renders the image
+//! `path` renders, bit for bit for a given seed, whatever the thread count
+//! (`tests/wavefront.rs` checks both, and agreement by z-tests with an
+//! independent seed).
+//!
+//! What it does not do is refused with one line ([`Unsupported`]): the
+//! BRDF-only and light-only variants of `path`, and recording paths (the
+//! lab's inspector records with `path`, which computes the same samples).
+
+mod camera;
+pub mod queue;
+mod shade;
+mod trace;
+
+use std::cell::RefCell;
+use std::fmt;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use crate::film::FilmTile;
+use crate::integrator::{DirectStrategy, Integrator, PathTracer};
+use crate::math::UVec2;
+use crate::render::{Progress, RenderOptions, RenderResult, Unit, render_units_watched};
+use crate::scene::Scene;
+use queue::{PathQueue, ShadowQueue};
+use shade::Depths;
+
+/// What the wavefront engine cannot render yet, in one line.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Unsupported(pub String);
+
+impl fmt::Display for Unsupported {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for Unsupported {}
+
+/// The wavefront path tracer, with [`PathTracer`]'s depth settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WavefrontPathTracer {
+    /// Maximum depth (Mitsuba's convention); `None` = unlimited.
+    pub max_depth: Option<u32>,
+    /// Russian roulette starts once this many bounces have been made.
+    pub rr_depth: u32,
+}
+
+impl Default for WavefrontPathTracer {
+    fn default() -> Self {
+        let p = PathTracer::default();
+        WavefrontPathTracer {
+            max_depth: p.max_depth,
+            rr_depth: p.rr_depth,
+        }
+    }
+}
+
+/// The queues of one worker thread, kept from unit to unit.
+#[derive(Default)]
+struct Workspace {
+    paths: PathQueue,
+    shadows: ShadowQueue,
+    pixels: Vec<UVec2>,
+}
+
+thread_local! {
+    static WORKSPACE: RefCell<Workspace> = RefCell::default();
+}
+
+impl WavefrontPathTracer {
+    /// The engine for `path`'s settings, or why it cannot run them.
+    pub fn from_path(path: &PathTracer) -> Result<Self, Unsupported> {
+        if path.strategy != DirectStrategy::Mis {
+            return Err(Unsupported(format!(
+                "the wavefront engine runs `path` with MIS only, not the {} variant: use the scalar engine",
+                path_name(path.strategy)
+            )));
+        }
+        Ok(WavefrontPathTracer {
+            max_depth: path.max_depth,
+            rr_depth: path.rr_depth,
+        })
+    }
+
+    /// Renders `scene` as [`crate::render::render`] renders it with `path`.
+    pub fn render(&self, scene: &Scene, options: &RenderOptions) -> RenderResult {
+        self.render_watched(scene, options, crate::render::interrupt_flag(), &mut |_| {})
+    }
+
+    /// [`Self::render`] with a stop flag and a watcher, as
+    /// [`crate::render::render_pixels_watched`].
+    pub fn render_watched(
+        &self,
+        scene: &Scene,
+        options: &RenderOptions,
+        stop: &AtomicBool,
+        watch: &mut (dyn FnMut(&Progress) + Send),
+    ) -> RenderResult {
+        let (w, h) = (scene.camera.width, scene.camera.height);
+        let unit = |unit: &Unit, tile: &mut FilmTile, stop: &AtomicBool| {
+            WORKSPACE.with(|ws| self.render_unit(scene, unit, tile, stop, &mut ws.borrow_mut()))
+        };
+        render_units_watched(w, h, options, stop, unit, watch)
+    }
+
+    /// All paths of `unit`, stage by stage; returns the samples added to
+    /// `tile` (all of them, or none if a stop was requested).
+    fn render_unit(
+        &self,
+        scene: &Scene,
+        unit: &Unit,
+        tile: &mut FilmTile,
+        stop: &AtomicBool,
+        ws: &mut Workspace,
+    ) -> u64 {
+        let depths = Depths {
+            max_depth: self.max_depth.unwrap_or(u32::MAX),
+            rr_depth: self.rr_depth,
+        };
+        let per_pixel = unit.samples.len();
+        ws.pixels.clear();
+        ws.pixels.extend(unit.pixels());
+        let samplers = ws
+            .pixels
+            .iter()
+            .flat_map(|&p| unit.samples.clone().map(move |k| unit.sampler(p, k)));
+        ws.paths.reset(samplers);
+        if depths.max_depth > 0 {
+            camera::generate(scene, &ws.pixels, per_pixel, &mut ws.paths);
+            while !ws.paths.live.is_empty() {
+                if stop.load(Ordering::Relaxed) {
+                    return 0;
+                }
+                trace::closest_hits(scene, &mut ws.paths);
+                shade::shade(scene, depths, &mut ws.paths, &mut ws.shadows);
+                trace::shadow_rays(scene, &ws.shadows, &mut ws.paths);
+                ws.paths.compact();
+            }
+        }
+        for (i, &l) in ws.paths.l.iter().enumerate() {
+            tile.add_sample(ws.pixels[i / per_pixel], l);
+        }
+        ws.paths.len() as u64
+    }
+}
+
+fn path_name(strategy: DirectStrategy) -> &'static str {
+    let path = PathTracer {
+        strategy,
+        ..PathTracer::default()
+    };
+    path.name()
+}
