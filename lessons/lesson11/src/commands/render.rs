@@ -2,14 +2,17 @@
 
 mod student;
 
-use anyhow::Result;
-use clap::Args;
+use anyhow::{Result, bail};
+use clap::{Args, ValueEnum};
 
+use raytracer::integrator::{DirectStrategy, PathTracer};
 use raytracer::render::interrupt_flag;
+
+use crate::engine::Engine;
 
 use crate::integrators::{IntegratorArgs, IntegratorKind, IntegratorPlan, render_sppm_to_files};
 use crate::options::{SceneArgs, check_exposure};
-use crate::render_files::render_to_files;
+use crate::render_files::{render_to_files, render_with_to_files, warn_if_unlit};
 
 /// Render a scene with one integrator and write NAME.png (tone mapped, sRGB),
 /// NAME.exr (linear radiance) and NAME-variance.exr (variance of each pixel's mean).
@@ -22,6 +25,10 @@ pub struct RenderArgs {
     pub integrator: IntegratorKind,
     #[command(flatten)]
     pub integrator_args: IntegratorArgs,
+    /// Which engine runs --integrator path: the lecture's (scalar) or the wavefront engine
+    /// (a tile's paths in lockstep; the same image bit for bit, faster).
+    #[arg(long, value_enum, default_value = "scalar")]
+    pub engine: Engine,
     /// Exposure in stops for the PNG (+1 doubles the brightness); the EXR is never changed.
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     pub exposure: f32,
@@ -38,6 +45,12 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             args.integrator,
             &args.integrator_args,
             args.exposure,
+        );
+    }
+    if args.engine != Engine::Scalar && args.integrator != IntegratorKind::Path {
+        bail!(
+            "--engine {} runs --integrator path only",
+            engine_name(args.engine)
         );
     }
     let (scene, options) = args.scene.load("cornell")?;
@@ -69,6 +82,29 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         }
         plan => plan.build(&scene, &options, interrupt_flag())?,
     };
+    if args.engine != Engine::Scalar {
+        let path = PathTracer {
+            max_depth: args.integrator_args.max_depth(args.integrator, &scene)?,
+            rr_depth: args.integrator_args.rr_depth(&scene),
+            strategy: DirectStrategy::Mis,
+        };
+        args.engine.check(&path)?;
+        let stem = format!("{}-{}", scene.name, integrator.name());
+        warn_if_unlit(&scene, integrator.as_ref());
+        render_with_to_files(
+            &scene,
+            &options,
+            &args.scene.out,
+            &stem,
+            args.exposure,
+            || {
+                args.engine
+                    .render(&scene, &path, &options)
+                    .expect("checked above")
+            },
+        )?;
+        return Ok(());
+    }
     let stem = format!("{}-{}", scene.name, integrator.name());
     render_to_files(
         &scene,
@@ -79,4 +115,11 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         args.exposure,
     )?;
     Ok(())
+}
+
+/// The engine's name as the command line spells it.
+fn engine_name(engine: Engine) -> String {
+    engine
+        .to_possible_value()
+        .map_or_else(String::new, |v| v.get_name().to_string())
 }
