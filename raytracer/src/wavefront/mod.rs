@@ -60,7 +60,9 @@ mod trace;
 
 use std::cell::RefCell;
 use std::fmt;
+use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::{Duration, Instant};
 
 use crate::film::FilmTile;
 use crate::integrator::{DirectStrategy, Integrator, PathTracer};
@@ -101,12 +103,48 @@ impl Default for WavefrontPathTracer {
     }
 }
 
+/// Time spent in each stage (summed over threads), and the work done.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct StageTimes {
+    /// Camera rays, and the film at the end.
+    pub camera_and_film: Duration,
+    /// Closest-hit traversal of the live paths' rays.
+    pub closest_hits: Duration,
+    /// Emission, light sample, BRDF sample, roulette.
+    pub shade: Duration,
+    /// Shadow rays (any hit).
+    pub shadow_rays: Duration,
+    /// Compaction of the live list.
+    pub compact: Duration,
+    /// Rays traced for closest hits, and shadow rays.
+    pub rays: u64,
+    pub shadow_ray_count: u64,
+}
+
+impl StageTimes {
+    fn add(&mut self, o: &StageTimes) {
+        self.camera_and_film += o.camera_and_film;
+        self.closest_hits += o.closest_hits;
+        self.shade += o.shade;
+        self.shadow_rays += o.shadow_rays;
+        self.compact += o.compact;
+        self.rays += o.rays;
+        self.shadow_ray_count += o.shadow_ray_count;
+    }
+
+    /// All stages.
+    pub fn total(&self) -> Duration {
+        self.camera_and_film + self.closest_hits + self.shade + self.shadow_rays + self.compact
+    }
+}
+
 /// The queues of one worker thread, kept from unit to unit.
 #[derive(Default)]
 struct Workspace {
     paths: PathQueue,
     shadows: ShadowQueue,
     pixels: Vec<UVec2>,
+    times: StageTimes,
 }
 
 thread_local! {
@@ -131,6 +169,35 @@ impl WavefrontPathTracer {
     /// Renders `scene` as [`crate::render::render`] renders it with `path`.
     pub fn render(&self, scene: &Scene, options: &RenderOptions) -> RenderResult {
         self.render_watched(scene, options, crate::render::interrupt_flag(), &mut |_| {})
+    }
+
+    /// [`Self::render`], with the time each stage took, summed over the
+    /// worker threads (for `lesson11 bench` and the table in the module doc).
+    pub fn render_profiled(
+        &self,
+        scene: &Scene,
+        options: &RenderOptions,
+    ) -> (RenderResult, StageTimes) {
+        let total = Mutex::new(StageTimes::default());
+        let (w, h) = (scene.camera.width, scene.camera.height);
+        let unit = |unit: &Unit, tile: &mut FilmTile, stop: &AtomicBool| {
+            WORKSPACE.with(|ws| {
+                let ws = &mut ws.borrow_mut();
+                ws.times = StageTimes::default();
+                let done = self.render_unit(scene, unit, tile, stop, ws);
+                total
+                    .lock()
+                    .expect("a render worker panicked")
+                    .add(&ws.times);
+                done
+            })
+        };
+        let stop = crate::render::interrupt_flag();
+        let result = render_units_watched(w, h, options, stop, unit, &mut |_| {});
+        (
+            result,
+            total.into_inner().expect("a render worker panicked"),
+        )
     }
 
     /// [`Self::render`] with a stop flag and a watcher, as
@@ -171,21 +238,36 @@ impl WavefrontPathTracer {
             .iter()
             .flat_map(|&p| unit.samples.clone().map(move |k| unit.sampler(p, k)));
         ws.paths.reset(samplers);
+        let mut clock = Instant::now();
+        let mut lap = |stage: &mut Duration| {
+            let now = Instant::now();
+            *stage += now - clock;
+            clock = now;
+        };
+        let t = &mut ws.times;
         if depths.max_depth > 0 {
             camera::generate(scene, &ws.pixels, per_pixel, &mut ws.paths);
+            lap(&mut t.camera_and_film);
             while !ws.paths.live.is_empty() {
                 if stop.load(Ordering::Relaxed) {
                     return 0;
                 }
+                t.rays += ws.paths.live.len() as u64;
                 trace::closest_hits(scene, &mut ws.paths);
+                lap(&mut t.closest_hits);
                 shade::shade(scene, depths, &mut ws.paths, &mut ws.shadows);
+                lap(&mut t.shade);
+                t.shadow_ray_count += ws.shadows.len() as u64;
                 trace::shadow_rays(scene, &ws.shadows, &mut ws.paths);
+                lap(&mut t.shadow_rays);
                 ws.paths.compact();
+                lap(&mut t.compact);
             }
         }
         for (i, &l) in ws.paths.l.iter().enumerate() {
             tile.add_sample(ws.pixels[i / per_pixel], l);
         }
+        lap(&mut t.camera_and_film);
         ws.paths.len() as u64
     }
 }

@@ -78,20 +78,28 @@ pub fn samples_per_second(python: &PathBuf, spp: u32) -> Result<f64, String> {
     }
 }
 
-/// The line `lesson11 bench` prints after its path tracing figure.
-pub fn compare(asked: Option<&PathBuf>, spp: u32, ours: f64, threads: usize) -> String {
+/// The line `lesson11 bench` prints after its path tracing figures: Mitsuba's
+/// rate and the ratio of each of our engines (`(name, samples per second)`)
+/// to it.
+pub fn compare(asked: Option<&PathBuf>, spp: u32, ours: &[(&str, f64)], threads: usize) -> String {
     let python = match find(asked) {
         Ok(p) => p,
         Err(why) => return format!("  Mitsuba 3: not found ({why}); {HOW_TO_GET}"),
     };
     match samples_per_second(&python, spp) {
-        Ok(theirs) => format!(
-            "  Mitsuba 3 {VARIANT} ({}), same scene and settings, all cores, just after: \
-             {:.3} M samples/s; ours on {threads} thread(s) / Mitsuba = {:.2}×",
-            python.display(),
-            theirs / 1e6,
-            ours / theirs
-        ),
+        Ok(theirs) => {
+            let ratios: Vec<String> = ours
+                .iter()
+                .map(|(name, rate)| format!("{name} {:.2}×", rate / theirs))
+                .collect();
+            format!(
+                "  Mitsuba 3 {VARIANT} ({}), same scene and settings, all cores, just after: \
+                 {:.3} M samples/s; ours on {threads} thread(s) / Mitsuba: {}",
+                python.display(),
+                theirs / 1e6,
+                ratios.join(", ")
+            )
+        }
         Err(why) => format!("  Mitsuba 3: {why}; {HOW_TO_GET}"),
     }
 }
