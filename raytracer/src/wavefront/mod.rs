@@ -71,6 +71,7 @@ use crate::render::{Progress, RenderOptions, RenderResult, Unit, render_units_wa
 use crate::scene::Scene;
 use queue::{PathQueue, ShadowQueue};
 use shade::Depths;
+use trace::Tracer;
 
 /// What the wavefront engine cannot render yet, in one line.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -143,6 +144,7 @@ impl StageTimes {
 struct Workspace {
     paths: PathQueue,
     shadows: ShadowQueue,
+    tracer: Tracer,
     pixels: Vec<UVec2>,
     times: StageTimes,
 }
@@ -253,12 +255,12 @@ impl WavefrontPathTracer {
                     return 0;
                 }
                 t.rays += ws.paths.live.len() as u64;
-                trace::closest_hits(scene, &mut ws.paths);
+                ws.tracer.closest_hits(scene, &mut ws.paths);
                 lap(&mut t.closest_hits);
                 shade::shade(scene, depths, &mut ws.paths, &mut ws.shadows);
                 lap(&mut t.shade);
                 t.shadow_ray_count += ws.shadows.len() as u64;
-                trace::shadow_rays(scene, &ws.shadows, &mut ws.paths);
+                ws.tracer.shadow_rays(scene, &ws.shadows, &mut ws.paths);
                 lap(&mut t.shadow_rays);
                 ws.paths.compact();
                 lap(&mut t.compact);

@@ -1,28 +1,51 @@
 //! The trace stages: closest hits of all live paths' rays, and the shadow
-//! rays of a bounce, each as one stream.
+//! rays of a bounce, each traced as one stream.
 //!
 //! Lecture topic: none of its own (ray casting). A stream is traced as a
-//! whole before any path is shaded, so the BVH's nodes and the primitives
-//! stay in cache from one ray to the next, and no shading code sits between
-//! two traversals to evict them.
+//! whole before any path is shaded ([`crate::geometry::stream`]): each BVH
+//! node is fetched once for all the rays that enter it, and no shading code
+//! runs between two traversals to evict the tree from the cache.
 
 use super::queue::{PathQueue, ShadowQueue};
+use crate::geometry::stream::RayStream;
+use crate::geometry::{Hit, Interaction};
+use crate::math::Ray;
 use crate::scene::Scene;
 
-/// The closest hit of every live path's ray, into `queue.hit`.
-pub fn closest_hits(scene: &Scene, queue: &mut PathQueue) {
-    for &s in &queue.live {
-        let s = s as usize;
-        queue.hit[s] = scene.intersect(&queue.ray[s]);
-    }
+/// The tracer's working memory, kept from bounce to bounce.
+#[derive(Debug, Default)]
+pub struct Tracer {
+    stream: RayStream,
+    rays: Vec<Ray>,
+    hits: Vec<Option<Hit>>,
+    blocked: Vec<bool>,
 }
 
-/// Resolves the shadow rays of a bounce: each unblocked one adds its
-/// contribution to its path's radiance.
-pub fn shadow_rays(scene: &Scene, shadows: &ShadowQueue, queue: &mut PathQueue) {
-    for i in 0..shadows.len() {
-        if scene.unoccluded(&shadows.ray[i]) {
-            queue.l[shadows.slot[i] as usize] += shadows.contribution[i];
+impl Tracer {
+    /// The closest hit of every live path's ray, into `queue.hit`.
+    pub fn closest_hits(&mut self, scene: &Scene, queue: &mut PathQueue) {
+        self.rays.clear();
+        self.rays
+            .extend(queue.live.iter().map(|&s| queue.ray[s as usize]));
+        let g = &scene.geometry;
+        g.intersect_stream(&self.rays, &mut self.hits, &mut self.stream);
+        for ((&s, ray), hit) in queue.live.iter().zip(&self.rays).zip(&self.hits) {
+            queue.hit[s as usize] = hit.map(|h| {
+                let sp = g.surface_point(ray, &h);
+                Interaction::new(sp, h.t, -ray.d)
+            });
+        }
+    }
+
+    /// Resolves the shadow rays of a bounce: each unblocked one adds its
+    /// contribution to its path's radiance.
+    pub fn shadow_rays(&mut self, scene: &Scene, shadows: &ShadowQueue, queue: &mut PathQueue) {
+        let g = &scene.geometry;
+        g.occluded_stream(&shadows.ray, &mut self.blocked, &mut self.stream);
+        for (i, &blocked) in self.blocked.iter().enumerate() {
+            if !blocked {
+                queue.l[shadows.slot[i] as usize] += shadows.contribution[i];
+            }
         }
     }
 }
