@@ -44,7 +44,8 @@ fn same(a: &Image, b: &Image) -> bool {
 
 /// Every built-in scene, at 40 pixels wide, 20 spp (a full pass and a
 /// partial one), max depth 8 and unlimited: the wavefront image is the path
-/// tracer's, bit for bit, its mean and its variance, on 1 and 2 threads.
+/// tracer's, bit for bit, its mean and its variance, on 1 and 2 threads,
+/// with rays traced one by one or as streams.
 #[test]
 fn same_image_as_path_bit_for_bit_on_every_builtin_scene() {
     let names = [
@@ -67,13 +68,14 @@ fn same_image_as_path_bit_for_bit_on_every_builtin_scene() {
             };
             let reference = render(&scene, &path, &options(20, 11, 2)).film;
             let engine = WavefrontPathTracer::from_path(&path).unwrap();
-            for threads in [1, 2] {
+            for (threads, streams) in [(1, false), (2, false), (2, true)] {
+                let engine = WavefrontPathTracer { streams, ..engine };
                 let film = engine.render(&scene, &options(20, 11, threads)).film;
                 assert_eq!(film.total_samples(), reference.total_samples());
                 assert!(
                     same(&film.image(), &reference.image())
                         && same(&film.variance_image(), &reference.variance_image()),
-                    "{name}, max depth {max_depth:?}, {threads} threads: not path's image"
+                    "{name}, max depth {max_depth:?}, {threads} threads, streams {streams}: not path's image"
                 );
             }
         }
@@ -120,6 +122,7 @@ fn furnaces_give_their_exact_values() {
     let engine = |max_depth| WavefrontPathTracer {
         max_depth,
         rr_depth: 3,
+        streams: true,
     };
     let cases = [
         ("furnace", Some(1), 0.5),

@@ -92,6 +92,11 @@ pub struct WavefrontPathTracer {
     pub max_depth: Option<u32>,
     /// Russian roulette starts once this many bounces have been made.
     pub rr_depth: u32,
+    /// Trace each stage's rays as one stream through the BVH
+    /// ([`crate::geometry::stream`]) instead of one ray after the other (the
+    /// same hits). Off by default: on the Cornell box's 30 primitives it
+    /// costs more than it saves (see the README's performance section).
+    pub streams: bool,
 }
 
 impl Default for WavefrontPathTracer {
@@ -100,6 +105,7 @@ impl Default for WavefrontPathTracer {
         WavefrontPathTracer {
             max_depth: p.max_depth,
             rr_depth: p.rr_depth,
+            streams: false,
         }
     }
 }
@@ -165,6 +171,7 @@ impl WavefrontPathTracer {
         Ok(WavefrontPathTracer {
             max_depth: path.max_depth,
             rr_depth: path.rr_depth,
+            streams: false,
         })
     }
 
@@ -255,12 +262,13 @@ impl WavefrontPathTracer {
                     return 0;
                 }
                 t.rays += ws.paths.live.len() as u64;
-                ws.tracer.closest_hits(scene, &mut ws.paths);
+                ws.tracer.closest_hits(scene, self.streams, &mut ws.paths);
                 lap(&mut t.closest_hits);
                 shade::shade(scene, depths, &mut ws.paths, &mut ws.shadows);
                 lap(&mut t.shade);
                 t.shadow_ray_count += ws.shadows.len() as u64;
-                ws.tracer.shadow_rays(scene, &ws.shadows, &mut ws.paths);
+                ws.tracer
+                    .shadow_rays(scene, self.streams, &ws.shadows, &mut ws.paths);
                 lap(&mut t.shadow_rays);
                 ws.paths.compact();
                 lap(&mut t.compact);

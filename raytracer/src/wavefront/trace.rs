@@ -2,9 +2,10 @@
 //! rays of a bounce, each traced as one stream.
 //!
 //! Lecture topic: none of its own (ray casting). A stream is traced as a
-//! whole before any path is shaded ([`crate::geometry::stream`]): each BVH
-//! node is fetched once for all the rays that enter it, and no shading code
-//! runs between two traversals to evict the tree from the cache.
+//! whole before any path is shaded, so no shading code runs between two
+//! traversals to evict the tree from the cache; with `streams` the rays
+//! walk the tree together ([`crate::geometry::stream`]), each node fetched
+//! once for all the rays that enter it, else one after the other.
 
 use super::queue::{PathQueue, ShadowQueue};
 use crate::geometry::stream::RayStream;
@@ -23,12 +24,17 @@ pub struct Tracer {
 
 impl Tracer {
     /// The closest hit of every live path's ray, into `queue.hit`.
-    pub fn closest_hits(&mut self, scene: &Scene, queue: &mut PathQueue) {
+    pub fn closest_hits(&mut self, scene: &Scene, streams: bool, queue: &mut PathQueue) {
         self.rays.clear();
         self.rays
             .extend(queue.live.iter().map(|&s| queue.ray[s as usize]));
         let g = &scene.geometry;
-        g.intersect_stream(&self.rays, &mut self.hits, &mut self.stream);
+        if streams {
+            g.intersect_stream(&self.rays, &mut self.hits, &mut self.stream);
+        } else {
+            self.hits.clear();
+            self.hits.extend(self.rays.iter().map(|r| g.intersect(r)));
+        }
         for ((&s, ray), hit) in queue.live.iter().zip(&self.rays).zip(&self.hits) {
             queue.hit[s as usize] = hit.map(|h| {
                 let sp = g.surface_point(ray, &h);
@@ -39,9 +45,20 @@ impl Tracer {
 
     /// Resolves the shadow rays of a bounce: each unblocked one adds its
     /// contribution to its path's radiance.
-    pub fn shadow_rays(&mut self, scene: &Scene, shadows: &ShadowQueue, queue: &mut PathQueue) {
+    pub fn shadow_rays(
+        &mut self,
+        scene: &Scene,
+        streams: bool,
+        shadows: &ShadowQueue,
+        queue: &mut PathQueue,
+    ) {
         let g = &scene.geometry;
-        g.occluded_stream(&shadows.ray, &mut self.blocked, &mut self.stream);
+        if streams {
+            g.occluded_stream(&shadows.ray, &mut self.blocked, &mut self.stream);
+        } else {
+            self.blocked.clear();
+            self.blocked.extend(shadows.ray.iter().map(|r| g.occluded(r)));
+        }
         for (i, &blocked) in self.blocked.iter().enumerate() {
             if !blocked {
                 queue.l[shadows.slot[i] as usize] += shadows.contribution[i];

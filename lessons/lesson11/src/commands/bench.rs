@@ -175,7 +175,15 @@ fn wavefront_rows(scene: &Scene, path: &PathTracer, spp: u32, threads: &[usize])
     let engine = WavefrontPathTracer::from_path(path)?;
     crate::console::say!("  the same on the wavefront engine (a tile's paths in lockstep):");
     let (mut last, mut profile) = (0.0, None);
-    for &n in threads {
+    let streamed = WavefrontPathTracer {
+        streams: true,
+        ..engine
+    };
+    for (n, engine) in threads
+        .iter()
+        .map(|&n| (n, &engine))
+        .chain(threads.last().map(|&n| (n, &streamed)))
+    {
         let options = RenderOptions {
             spp,
             seed: 1,
@@ -185,11 +193,15 @@ fn wavefront_rows(scene: &Scene, path: &PathTracer, spp: u32, threads: &[usize])
         };
         let (result, times) = engine.render_profiled(scene, &options);
         crate::console::say!(
-            "  {:>8} {:>10.3} {:>14.3}",
+            "  {:>8} {:>10.3} {:>14.3}{}",
             n,
             result.stats.elapsed.as_secs_f64(),
-            result.stats.samples_per_second() / 1e6
+            result.stats.samples_per_second() / 1e6,
+            if engine.streams { "  (rays traced as streams)" } else { "" }
         );
+        if engine.streams {
+            break;
+        }
         last = result.stats.samples_per_second();
         profile = Some((times, result.stats.samples.max(1)));
     }
