@@ -57,7 +57,8 @@ impl Tracer {
             g.occluded_stream(&shadows.ray, &mut self.blocked, &mut self.stream);
         } else {
             self.blocked.clear();
-            self.blocked.extend(shadows.ray.iter().map(|r| g.occluded(r)));
+            self.blocked
+                .extend(shadows.ray.iter().map(|r| g.occluded(r)));
         }
         for (i, &blocked) in self.blocked.iter().enumerate() {
             if !blocked {

@@ -197,7 +197,11 @@ fn wavefront_rows(scene: &Scene, path: &PathTracer, spp: u32, threads: &[usize])
             n,
             result.stats.elapsed.as_secs_f64(),
             result.stats.samples_per_second() / 1e6,
-            if engine.streams { "  (rays traced as streams)" } else { "" }
+            if engine.streams {
+                "  (rays traced as streams)"
+            } else {
+                ""
+            }
         );
         if engine.streams {
             break;

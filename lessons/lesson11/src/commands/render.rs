@@ -7,6 +7,8 @@ use clap::{Args, ValueEnum};
 
 use raytracer::integrator::{DirectStrategy, PathTracer};
 use raytracer::render::interrupt_flag;
+use raytracer::scene::Scene;
+use raytracer::wavefront::WavefrontPathTracer;
 
 use crate::engine::Engine;
 
@@ -47,13 +49,8 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             args.exposure,
         );
     }
-    if args.engine != Engine::Scalar && args.integrator != IntegratorKind::Path {
-        bail!(
-            "--engine {} runs --integrator path only",
-            engine_name(args.engine)
-        );
-    }
     let (scene, options) = args.scene.load("cornell")?;
+    let wavefront = wavefront_engine(args, &scene)?;
     // The lab renders from the same plan (`commands/lab/job.rs`).
     let plan = args
         .integrator
@@ -82,13 +79,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         }
         plan => plan.build(&scene, &options, interrupt_flag())?,
     };
-    if args.engine != Engine::Scalar {
-        let path = PathTracer {
-            max_depth: args.integrator_args.max_depth(args.integrator, &scene)?,
-            rr_depth: args.integrator_args.rr_depth(&scene),
-            strategy: DirectStrategy::Mis,
-        };
-        args.engine.check(&path)?;
+    if let Some(engine) = wavefront {
         let stem = format!("{}-{}", scene.name, integrator.name());
         warn_if_unlit(&scene, integrator.as_ref());
         render_with_to_files(
@@ -97,11 +88,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             &args.scene.out,
             &stem,
             args.exposure,
-            || {
-                args.engine
-                    .render(&scene, &path, &options)
-                    .expect("checked above")
-            },
+            || engine.render(&scene, &options),
         )?;
         return Ok(());
     }
@@ -115,6 +102,27 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         args.exposure,
     )?;
     Ok(())
+}
+
+/// The wavefront engine if `--engine wavefront` asks for it (`None` for the
+/// scalar engine), or one line on why it cannot run this render. The lab
+/// asks it too.
+pub fn wavefront_engine(args: &RenderArgs, scene: &Scene) -> Result<Option<WavefrontPathTracer>> {
+    if args.engine == Engine::Scalar {
+        return Ok(None);
+    }
+    if args.integrator != IntegratorKind::Path {
+        bail!(
+            "--engine {} runs --integrator path only",
+            engine_name(args.engine)
+        );
+    }
+    let path = PathTracer {
+        max_depth: args.integrator_args.max_depth(args.integrator, scene)?,
+        rr_depth: args.integrator_args.rr_depth(scene),
+        strategy: DirectStrategy::Mis,
+    };
+    Ok(Some(WavefrontPathTracer::from_path(&path)?))
 }
 
 /// The engine's name as the command line spells it.

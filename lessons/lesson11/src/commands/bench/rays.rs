@@ -153,7 +153,11 @@ fn throughput_packets<const N: usize>(
 
 /// Closest-hit throughput of streams of `CHUNK` rays traced together
 /// (`Geometry::intersect_stream`, as the wavefront engine traces).
-fn throughput_streams(pool: &rayon::ThreadPool, g: &Geometry, rays: &[Ray]) -> (f64, Option<f64>, usize) {
+fn throughput_streams(
+    pool: &rayon::ThreadPool,
+    g: &Geometry,
+    rays: &[Ray],
+) -> (f64, Option<f64>, usize) {
     let (wall, cpu, hits) = best_of(pool, || {
         rays.par_chunks(CHUNK)
             .map_init(

@@ -263,6 +263,7 @@ pub fn sphere_job(q: &Query, choice: &BrdfChoice) -> Result<JobSpec, String> {
         build_for: None,
         plan: IntegratorPlan::Ready(Box::new(integrator)),
         options,
+        wavefront: None,
     })
 }
 

@@ -35,6 +35,7 @@ use raytracer::render::metropolis::{MetropolisProgress, render_metropolis_watche
 use raytracer::render::sppm::{SppmProgress, render_sppm_watched};
 use raytracer::render::{Metropolis, Progress, RenderOptions, render_pixels_watched};
 use raytracer::scene::Scene;
+use raytracer::wavefront::WavefrontPathTracer;
 use serde::Serialize;
 
 use super::settings::one_line;
@@ -75,6 +76,9 @@ pub struct JobSpec {
     /// Checked, not built: the job's thread builds what takes time.
     pub plan: IntegratorPlan,
     pub options: RenderOptions,
+    /// `--engine wavefront`: the path tracer on the wavefront engine (the
+    /// same samples; the inspector records them with `path`).
+    pub wavefront: Option<WavefrontPathTracer>,
 }
 
 /// The latest picture of one eye and how far it has come.
@@ -145,6 +149,7 @@ pub struct Job {
     /// The integrator of pixel samples, once built (the path inspector
     /// records its samples).
     integrator: OnceLock<Arc<dyn Integrator + Send>>,
+    wavefront: Option<WavefrontPathTracer>,
     /// Why the render has no pixel samples to inspect (SPPM, Metropolis).
     no_samples: Option<&'static str>,
     /// What the build makes ("the photon maps"), if there is one.
@@ -255,6 +260,7 @@ impl Job {
             seed: spec.options.seed,
             units,
             integrator,
+            wavefront: spec.wavefront,
             no_samples,
             building,
             scenes: scenes.clone(),
@@ -399,14 +405,17 @@ impl Job {
                 None,
             );
         };
-        let result = render_pixels_watched(
-            w,
-            h,
-            options,
-            &self.stop,
-            |pixel, sampler, splats| integrator.sample(scene, pixel, sampler, splats),
-            &mut watch,
-        );
+        let result = match &self.wavefront {
+            Some(engine) => engine.render_watched(scene, options, &self.stop, &mut watch),
+            None => render_pixels_watched(
+                w,
+                h,
+                options,
+                &self.stop,
+                |pixel, sampler, splats| integrator.sample(scene, pixel, sampler, splats),
+                &mut watch,
+            ),
+        };
         let complete = if result.stats.interrupted {
             lock(&self.state).eyes[eye].complete_spp
         } else {

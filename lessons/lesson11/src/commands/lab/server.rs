@@ -252,6 +252,7 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
                 build_for: None,
                 plan: setup.plan,
                 options: setup.options,
+                wavefront: setup.wavefront,
             };
             started(state.pages.start(q.page()?, spec)?)
         }),

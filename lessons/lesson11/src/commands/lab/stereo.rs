@@ -65,6 +65,7 @@ pub fn stereo_job(q: &Query, folder: &SceneFolder) -> Result<JobSpec, String> {
         build_for,
         plan: setup.plan,
         options: setup.options,
+        wavefront: setup.wavefront,
     })
 }
 
