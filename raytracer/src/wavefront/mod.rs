@@ -13,7 +13,7 @@
 //! waits on the one before, and each touches different data (BVH nodes,
 //! triangles, the material, the light), so the processor mostly waits on
 //! memory and on branches it cannot predict. This engine takes a whole unit
-//! of the render loop (a 16×16 tile × 16 samples: 4096 paths) and runs each
+//! of the render loop (by default a 16×16 tile × 16 samples: 4096 paths) and runs each
 //! *stage* over all its live paths before the next stage starts:
 //!
 //! ```text
@@ -23,7 +23,7 @@
 //!                                     └─► film (slots in raster order)
 //! ```
 //!
-//! - **Memory layout.** Paths live in a [`PathQueue`](queue::PathQueue):
+//! - **Memory layout.** Paths live in a [`PathQueue`]:
 //!   structure of arrays, one array per field (rays, throughputs, radiance,
 //!   samplers, ...). A stage streams through the arrays it needs and no
 //!   other, and consecutive paths sit in consecutive cache lines.
@@ -35,7 +35,7 @@
 //!   instead of interleaving it per path.
 //! - **Compaction.** Paths end at different depths (roulette, escaping rays).
 //!   After each bounce the live list drops the ended ones
-//!   ([`PathQueue::compact`](queue::PathQueue::compact)), so later bounces
+//!   ([`PathQueue::compact`]), so later bounces
 //!   loop over survivors only and no lane idles on a dead path.
 //!
 //! # Where the time goes
@@ -61,16 +61,16 @@
 //!
 //! Each path has its own counter-based sampler, `Sampler::new(seed, pixel,
 //! k)` as in the per-sample loop, and draws its numbers in `path`'s order
-//! ([`shade`]); shadow rays are traced later but draw nothing, and each
+//! (`shade.rs`); shadow rays are traced later but draw nothing, and each
 //! path's radiance is summed in the same order. The film receives the
 //! samples in the per-sample loop's order. So the engine renders the image
 //! `path` renders, bit for bit for a given seed, whatever the thread count
 //! (`tests/wavefront.rs` checks both, and agreement by z-tests with an
 //! independent seed).
 //!
-//! What it does not do is refused with one line ([`Unsupported`]): the
-//! BRDF-only and light-only variants of `path`, and recording paths (the
-//! lab's inspector records with `path`, which computes the same samples).
+//! What it does not run is refused with one line ([`Unsupported`]): the
+//! BRDF-only and light-only variants of `path`. It records no paths: the
+//! lab's inspector records with `path`, which computes the same samples.
 
 mod camera;
 pub mod queue;
