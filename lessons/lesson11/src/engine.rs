@@ -21,10 +21,9 @@ pub enum Engine {
 
 impl Engine {
     /// The engine that renders the tour's pictures where the chapter is not
-    /// about the integrator's code (the same image either way). Measured a
-    /// tie on the Cornell box (CPU time 0.99× the scalar engine's, see the
-    /// README's performance section); the wavefront engine is used so the
-    /// tour runs it.
+    /// about the integrator's code (the same image either way): the
+    /// wavefront engine, 0.97× the scalar engine's CPU time on the Cornell
+    /// box (see the README's performance section).
     pub const FASTEST: Engine = Engine::Wavefront;
 
     /// Checks that this engine runs `path` as configured (before rendering).
