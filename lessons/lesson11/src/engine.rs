@@ -22,7 +22,7 @@ pub enum Engine {
 impl Engine {
     /// The engine that renders the tour's pictures where the chapter is not
     /// about the integrator's code (the same image either way): the
-    /// wavefront engine, 0.97× the scalar engine's CPU time on the Cornell
+    /// wavefront engine, 0.96× the scalar engine's CPU time on the Cornell
     /// box (see the README's performance section).
     pub const FASTEST: Engine = Engine::Wavefront;
 

@@ -23,14 +23,31 @@ pub struct Tracer {
 }
 
 impl Tracer {
-    /// The closest hit of every live path's ray, into `queue.hit`.
-    pub fn closest_hits(&mut self, scene: &Scene, streams: bool, queue: &mut PathQueue) {
+    /// The closest hit of every live path's ray, into `queue.hit`; `camera`:
+    /// the rays are the camera rays, in slot order.
+    pub fn closest_hits(
+        &mut self,
+        scene: &Scene,
+        streams: bool,
+        camera: bool,
+        queue: &mut PathQueue,
+    ) {
         self.rays.clear();
         self.rays
             .extend(queue.live.iter().map(|&s| queue.ray[s as usize]));
         let g = &scene.geometry;
         if streams {
             g.intersect_stream(&self.rays, &mut self.hits, &mut self.stream);
+        } else if camera {
+            // The samples of a pixel are neighbours in the queue: their camera
+            // rays are nearly parallel, and go through the BVH as packets.
+            self.hits.clear();
+            for chunk in self.rays.chunks(16) {
+                match <&[Ray; 16]>::try_from(chunk) {
+                    Ok(packet) => self.hits.extend(g.intersect16(packet)),
+                    Err(_) => self.hits.extend(chunk.iter().map(|r| g.intersect(r))),
+                }
+            }
         } else {
             self.hits.clear();
             self.hits.extend(self.rays.iter().map(|r| g.intersect(r)));
