@@ -20,6 +20,7 @@
 //! | 7 | [`render`] | the parallel, deterministic loop over pixels; BDPT's strategy images; Metropolis light transport's chains | GI algorithms: Metropolis |
 //! | 8 | [`stereo`] | stereo rig, anaglyphs, side-by-side, crosstalk, light fields | stereoscopy |
 //! | 8 | [`metrics`] | image statistics and comparisons for the lessons and the grader | — |
+//! | 8 | [`wavefront`] | the path tracer as a second engine: all of a tile's paths in lockstep, stage by stage | path tracing (how it runs fast) |
 //!
 //! A scene is loaded (or taken from the built-in ones), an integrator
 //! estimates the radiance of each pixel sample, and the render loop gathers
@@ -42,7 +43,7 @@
 //! `#[cfg(test)]`, may use the whole crate: a scene test may render):
 //!
 //! ```text
-//! 8 stereo metrics
+//! 8 stereo metrics wavefront
 //! 7 render
 //! 6 integrator
 //! 5 scene
@@ -71,3 +72,4 @@ pub mod render;
 pub mod sampling;
 pub mod scene;
 pub mod stereo;
+pub mod wavefront;

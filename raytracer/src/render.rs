@@ -270,6 +270,61 @@ pub fn render_pixels_watched<F>(
 where
     F: Fn(UVec2, &mut Sampler, &mut Vec<Splat>) -> Color + Sync,
 {
+    let per_sample = |unit: &Unit, tile: &mut FilmTile, stop: &AtomicBool| {
+        render_unit_by_samples(unit, tile, stop, &sample)
+    };
+    render_units_watched(width, height, options, stop, per_sample, watch)
+}
+
+/// One unit of work (see the module doc): a tile and a range of sample
+/// indices, with what a renderer needs to address its random numbers.
+#[derive(Clone, Debug)]
+pub struct Unit {
+    /// The tile's first pixel and its size.
+    pub origin: UVec2,
+    pub size: UVec2,
+    /// The sample indices `k` of this pass.
+    pub samples: Range<u32>,
+    /// The render's seed and image width: sample `k` of pixel `(x, y)` draws
+    /// from `Sampler::new(seed, y·width + x, k)`.
+    pub seed: u64,
+    pub width: u32,
+}
+
+impl Unit {
+    /// The pixels of the tile in raster order.
+    pub fn pixels(&self) -> impl Iterator<Item = UVec2> + '_ {
+        let (o, s) = (self.origin, self.size);
+        (o.y..o.y + s.y).flat_map(move |y| (o.x..o.x + s.x).map(move |x| UVec2::new(x, y)))
+    }
+
+    /// The sampler of sample `k` of `pixel`.
+    #[inline]
+    pub fn sampler(&self, pixel: UVec2, k: u32) -> Sampler {
+        let index = pixel.y as u64 * self.width as u64 + pixel.x as u64;
+        Sampler::new(self.seed, index, k as u64)
+    }
+}
+
+/// The render loop of [`render_pixels_watched`] for a renderer that takes a
+/// whole unit at a time (the wavefront engine traces all the unit's paths in
+/// lockstep): `render_unit(unit, tile, stop)` fills the (reset) tile with the
+/// unit's samples and returns how many it took. To keep the determinism
+/// contract it must add each pixel's samples in increasing `k`, pixels in
+/// raster order, as the per-sample loop does, and may stop early (keeping
+/// only whole samples) once `stop` is set.
+pub fn render_units_watched<U>(
+    width: u32,
+    height: u32,
+    options: &RenderOptions,
+    stop: &AtomicBool,
+    render_unit: U,
+    watch: &mut (dyn FnMut(&Progress) + Send),
+) -> RenderResult
+where
+    U: Fn(&Unit, &mut FilmTile, &AtomicBool) -> u64 + Sync,
+{
+    let sample = &render_unit;
     let start = Instant::now();
     let layout = Layout::new(width, height, options.tile_size, options.spp);
     let expected = width as u64 * height as u64 * options.spp as u64;
@@ -536,7 +591,7 @@ struct Job<'a, F> {
 
 impl<F> Job<'_, F>
 where
-    F: Fn(UVec2, &mut Sampler, &mut Vec<Splat>) -> Color + Sync,
+    F: Fn(&Unit, &mut FilmTile, &AtomicBool) -> u64 + Sync,
 {
     /// One worker: takes units in increasing order until none is left or a
     /// stop is requested. Units are handed out in order, so the reorder buffer
@@ -567,30 +622,45 @@ where
     fn render_unit(&self, u: usize, tile: &mut FilmTile) -> u64 {
         let (origin, size, samples) = self.layout.unit(u);
         tile.reset(origin, size);
-        let mut done = 0;
-        for y in origin.y..origin.y + size.y {
-            for x in origin.x..origin.x + size.x {
-                let pixel = UVec2::new(x, y);
-                let index = y as u64 * self.layout.width as u64 + x as u64;
-                for k in samples.clone() {
-                    if self.stop.load(Ordering::Relaxed) {
-                        return done;
-                    }
-                    let mut sampler = Sampler::new(self.seed, index, k as u64);
-                    // A sample cut short by a stop request is dropped whole.
-                    let kept = tile.record_unless_abandoned(pixel, |splats| {
-                        let value = (self.sample)(pixel, &mut sampler, splats);
-                        (!stop::take_abandoned()).then_some(value)
-                    });
-                    if !kept {
-                        return done;
-                    }
-                    done += 1;
+        let unit = Unit {
+            origin,
+            size,
+            samples,
+            seed: self.seed,
+            width: self.layout.width,
+        };
+        (self.sample)(&unit, tile, self.stop)
+    }
+}
+
+/// The per-sample loop over one unit: one call of `sample` per pixel sample.
+fn render_unit_by_samples<F>(unit: &Unit, tile: &mut FilmTile, stop: &AtomicBool, sample: &F) -> u64
+where
+    F: Fn(UVec2, &mut Sampler, &mut Vec<Splat>) -> Color + Sync,
+{
+    let (origin, size) = (unit.origin, unit.size);
+    let mut done = 0;
+    for y in origin.y..origin.y + size.y {
+        for x in origin.x..origin.x + size.x {
+            let pixel = UVec2::new(x, y);
+            for k in unit.samples.clone() {
+                if stop.load(Ordering::Relaxed) {
+                    return done;
                 }
+                let mut sampler = unit.sampler(pixel, k);
+                // A sample cut short by a stop request is dropped whole.
+                let kept = tile.record_unless_abandoned(pixel, |splats| {
+                    let value = sample(pixel, &mut sampler, splats);
+                    (!stop::take_abandoned()).then_some(value)
+                });
+                if !kept {
+                    return done;
+                }
+                done += 1;
             }
         }
-        done
     }
+    done
 }
 
 /// The progress bar's line for work counted in `unit`s.

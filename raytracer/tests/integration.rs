@@ -21,3 +21,4 @@ mod record;
 mod scale;
 mod scene_fuzz;
 mod shading_normals;
+mod wavefront;

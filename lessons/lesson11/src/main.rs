@@ -22,6 +22,7 @@
 //! metropolis.rs    --integrator mlt: its options and its render to files
 //! render_files.rs  rendering to files: PNG, EXR and the variance, replaced together
 //! reference.rs     the independent references renders are measured against
+//! engine.rs        which engine runs the path tracer: the lecture's, or the wavefront one
 //! options.rs       scene, size, samples, seed, threads and output folder of a command line
 //! page/ plots/     the HTML page and its SVG plots
 //! console.rs       standard output that a closed pipe or a full disk cannot crash
@@ -39,6 +40,7 @@ mod bias;
 mod chapters;
 mod commands;
 mod console;
+mod engine;
 mod equal_time;
 mod integrators;
 mod metropolis;

@@ -19,7 +19,7 @@ use anyhow::Result;
 use raytracer::film::output::{StagedFile, commit_all};
 use raytracer::film::{Film, Image};
 use raytracer::integrator::Integrator;
-use raytracer::render::{RenderOptions, RenderStats, render};
+use raytracer::render::{RenderOptions, RenderResult, RenderStats, render};
 use raytracer::scene::Scene;
 
 use crate::options::create_dir;
@@ -37,9 +37,23 @@ pub fn render_to_files(
     stem: &str,
     exposure: f32,
 ) -> Result<Picture> {
-    let files = OutputFiles::new(dir, stem)?;
     warn_if_unlit(scene, integrator);
-    let result = render(scene, integrator, options);
+    render_with_to_files(scene, options, dir, stem, exposure, || {
+        render(scene, integrator, options)
+    })
+}
+
+/// [`render_to_files`] for a render made by `render` (another engine).
+pub fn render_with_to_files(
+    scene: &Scene,
+    options: &RenderOptions,
+    dir: &Path,
+    stem: &str,
+    exposure: f32,
+    render: impl FnOnce() -> RenderResult,
+) -> Result<Picture> {
+    let files = OutputFiles::new(dir, stem)?;
+    let result = render();
     files.write(&result.film, &result.stats, options.spp, exposure, || {
         interrupted_summary(
             &result.stats,

@@ -12,15 +12,16 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result};
 use clap::{ArgMatches, Args, ValueEnum};
-use raytracer::integrator::Integrator;
 use raytracer::integrator::record::PathRecord;
+use raytracer::integrator::{Integrator, PathTracer};
 use raytracer::render::{RenderOptions, memory_needed};
 use raytracer::scene::Scene;
 
+use crate::engine::Engine;
 use crate::options::{SceneArgs, check_memory, check_threads, create_dir, load_scene};
 use crate::page::{Figure, Picture, Section};
 use crate::plots::{Labels, path_figure_svg};
-use crate::render_files::render_to_files;
+use crate::render_files::{render_to_files, render_with_to_files, warn_if_unlit};
 
 /// How long the tour may take.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, Default)]
@@ -219,6 +220,31 @@ impl Tour {
         caption: &str,
     ) -> Result<Picture> {
         let p = render_to_files(scene, integrator, options, &chapter.dir, stem, 0.0)?;
+        chapter
+            .section
+            .figures
+            .push(Figure::new(&self.out, &p, caption));
+        Ok(p)
+    }
+
+    /// [`Tour::picture`] for the path tracer `pt` on [`Engine::FASTEST`], for
+    /// chapters that show what path tracing renders rather than its code (the
+    /// same image bit for bit on either engine).
+    pub fn path_picture(
+        &self,
+        chapter: &mut ChapterOutput,
+        scene: &Scene,
+        pt: &PathTracer,
+        options: &RenderOptions,
+        stem: &str,
+        caption: &str,
+    ) -> Result<Picture> {
+        let engine = Engine::FASTEST;
+        engine.check(pt)?;
+        warn_if_unlit(scene, pt);
+        let p = render_with_to_files(scene, options, &chapter.dir, stem, 0.0, || {
+            engine.render(scene, pt, options).expect("checked above")
+        })?;
         chapter
             .section
             .figures

@@ -334,6 +334,55 @@ fn render_writes_png_exr_and_variance() {
     std::fs::remove_dir_all(&out).ok();
 }
 
+/// `--engine wavefront` writes the scalar engine's files byte for byte (the
+/// same samples in the same order), and refuses any integrator but `path`
+/// in one line.
+#[test]
+fn render_on_the_wavefront_engine_writes_the_same_files() {
+    let run = |engine: &str, integrator: &str, out: &Path| {
+        lesson11(&[
+            "render",
+            "--scene",
+            "cornell",
+            "--integrator",
+            integrator,
+            "--engine",
+            engine,
+            "--width",
+            "12",
+            "--height",
+            "8",
+            "--spp",
+            "3",
+            "--out",
+            out.to_str().unwrap(),
+        ])
+    };
+    let (a, b) = (temp_dir("engine-scalar"), temp_dir("engine-wavefront"));
+    for (engine, out) in [("scalar", &a), ("wavefront", &b)] {
+        let o = run(engine, "path", out);
+        assert!(o.status.success(), "{engine}: {}", stderr(&o));
+    }
+    for f in [
+        "cornell-path.exr",
+        "cornell-path-variance.exr",
+        "cornell-path.png",
+    ] {
+        let read = |dir: &Path| std::fs::read(dir.join(f)).unwrap();
+        assert!(read(&a) == read(&b), "{f} differs between the engines");
+    }
+    let o = run("wavefront", "bdpt", &b);
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert!(
+        e.contains("--engine wavefront runs --integrator path only")
+            && e.trim().lines().count() == 1,
+        "{e}"
+    );
+    std::fs::remove_dir_all(&a).ok();
+    std::fs::remove_dir_all(&b).ok();
+}
+
 /// Metropolis light transport writes the same three files; a render this
 /// small (48 mutations) runs with one chain per mutation.
 #[test]

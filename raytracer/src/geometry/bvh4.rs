@@ -25,7 +25,7 @@ use super::bvh::{Bvh, BvhNode};
 use crate::math::{Vec3A, Vec4};
 
 /// Set in a child reference that points to a leaf.
-const LEAF: u32 = 1 << 31;
+pub(super) const LEAF: u32 = 1 << 31;
 /// A leaf reference is `LEAF | first << COUNT_BITS | count`.
 const COUNT_BITS: u32 = 4;
 /// Traversal stack size (enough: pending subtrees are siblings of the nodes
@@ -42,7 +42,7 @@ pub struct Bvh4Node {
     /// unused lanes hold the empty box (min = +∞, max = −∞), which no ray hits.
     bounds: [Vec4; 6],
     /// Node index, or a leaf reference (see `LEAF`), or `NONE`.
-    child: [u32; 4],
+    pub(super) child: [u32; 4],
 }
 
 /// The four-wide tree. Node 0 is the root; primitives are in the order of
@@ -209,7 +209,7 @@ impl Bvh4 {
 
 /// First primitive and count of a leaf reference.
 #[inline(always)]
-fn leaf_range(reference: u32) -> (u32, u32) {
+pub(super) fn leaf_range(reference: u32) -> (u32, u32) {
     (
         (reference & !LEAF) >> COUNT_BITS,
         reference & ((1 << COUNT_BITS) - 1),
@@ -222,7 +222,7 @@ fn leaf_range(reference: u32) -> (u32, u32) {
 /// maximum: picking the planes once per ray saves the min/max of the two
 /// plane distances per box. The side comes from the sign of 1/d, so a −0.0
 /// component picks the planes its −1e30 needs.
-struct SlabRay {
+pub(super) struct SlabRay {
     o: [Vec4; 3],
     inv_d: [Vec4; 3],
     negative: [usize; 3],
@@ -230,8 +230,14 @@ struct SlabRay {
 
 impl SlabRay {
     #[inline(always)]
-    fn new(o: Vec3A, d: Vec3A) -> Self {
-        let InverseDirection { inv_d, negative } = InverseDirection::new(d);
+    pub(super) fn new(o: Vec3A, d: Vec3A) -> Self {
+        Self::from_inverse(o, InverseDirection::new(d))
+    }
+
+    /// The ray from `o` with its direction's inverse already computed.
+    #[inline(always)]
+    pub(super) fn from_inverse(o: Vec3A, inv: InverseDirection) -> Self {
+        let InverseDirection { inv_d, negative } = inv;
         SlabRay {
             o: [Vec4::splat(o.x), Vec4::splat(o.y), Vec4::splat(o.z)],
             inv_d: [
@@ -247,7 +253,7 @@ impl SlabRay {
     /// entry distances `max_k (plane_near_k − o_k)/d_k` (clamped at 0) and a
     /// bit mask of the children entered (`t_near ≤ t_far`).
     #[inline(always)]
-    fn enter(&self, node: &Bvh4Node, t_max: f32) -> (Vec4, u32) {
+    pub(super) fn enter(&self, node: &Bvh4Node, t_max: f32) -> (Vec4, u32) {
         let b = &node.bounds;
         let [sx, sy, sz] = self.negative;
         let [ox, oy, oz] = self.o;

@@ -22,6 +22,7 @@ mod packet;
 pub mod primitive;
 pub mod quad;
 pub mod sphere;
+pub mod stream;
 pub mod transform;
 pub mod triangle;
 

@@ -77,7 +77,7 @@ fn render(tour: &Tour) -> Result<Section> {
         rr_depth: 5,
         strategy: DirectStrategy::Mis,
     };
-    let path = tour.picture(
+    let path = tour.path_picture(
         &mut s,
         &scene,
         &pt,

@@ -15,6 +15,7 @@ use clap::Args;
 use raytracer::integrator::{Bdpt, Direct, DirectStrategy, Integrator, LightTracer, PathTracer};
 use raytracer::render::{Metropolis, RenderOptions, interrupted, render, render_metropolis};
 use raytracer::scene::Scene;
+use raytracer::wavefront::WavefrontPathTracer;
 
 /// The error of an interrupted benchmark, once `cut_short` (a measurement
 /// that Ctrl-C ended early) or the interrupt flag says so: nothing after
@@ -126,10 +127,14 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             );
             last = result.stats.samples_per_second();
         }
-        // The path tracer (the second case) against its peer.
+        // The path tracer (the second case) on the wavefront engine, then
+        // both against their peer.
         if k == 1 {
             let n = *threads.last().expect("at least one thread count");
-            let line = mitsuba::compare(args.mitsuba.as_ref(), args.spp, last, n);
+            let wavefront = wavefront_rows(&scene, &path, args.spp, &threads)?;
+            stop_if_interrupted(false)?;
+            let ours = [("path", last), ("path on the wavefront engine", wavefront)];
+            let line = mitsuba::compare(args.mitsuba.as_ref(), args.spp, &ours, n);
             stop_if_interrupted(line.is_none())?;
             crate::console::say!("{}", line.unwrap_or_default());
         }
@@ -178,6 +183,64 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// The same path tracing figure on the wavefront engine (the same image bit
+/// for bit, see `raytracer::wavefront`): one row per thread count; returns
+/// the last rate.
+fn wavefront_rows(scene: &Scene, path: &PathTracer, spp: u32, threads: &[usize]) -> Result<f64> {
+    let engine = WavefrontPathTracer::from_path(path)?;
+    crate::console::say!("  the same on the wavefront engine (a tile's paths in lockstep):");
+    let (mut last, mut profile) = (0.0, None);
+    let streamed = WavefrontPathTracer {
+        streams: true,
+        ..engine
+    };
+    for (n, engine) in threads
+        .iter()
+        .map(|&n| (n, &engine))
+        .chain(threads.last().map(|&n| (n, &streamed)))
+    {
+        let options = RenderOptions {
+            spp,
+            seed: 1,
+            threads: Some(n),
+            progress: false,
+            ..RenderOptions::default()
+        };
+        let (result, times) = engine.render_profiled(scene, &options);
+        crate::console::say!(
+            "  {:>8} {:>10.3} {:>14.3}{}",
+            n,
+            result.stats.elapsed.as_secs_f64(),
+            result.stats.samples_per_second() / 1e6,
+            if engine.streams {
+                "  (rays traced as streams)"
+            } else {
+                ""
+            }
+        );
+        if engine.streams {
+            break;
+        }
+        last = result.stats.samples_per_second();
+        profile = Some((times, result.stats.samples.max(1)));
+    }
+    if let Some((t, samples)) = profile {
+        let share = |d: std::time::Duration| 100.0 * d.as_secs_f64() / t.total().as_secs_f64();
+        crate::console::say!(
+            "  where its time goes: closest hits {:.0}%, shading {:.0}%, shadow rays {:.0}%, \
+             camera and film {:.0}%, compaction {:.0}%; per sample {:.2} rays and {:.2} shadow rays",
+            share(t.closest_hits),
+            share(t.shade),
+            share(t.shadow_rays),
+            share(t.camera_and_film),
+            share(t.compact),
+            t.rays as f64 / samples as f64,
+            t.shadow_ray_count as f64 / samples as f64
+        );
+    }
+    Ok(last)
 }
 
 /// Samples per second of path, light and bidirectional tracing on `door`

@@ -2,14 +2,19 @@
 
 pub(crate) mod student;
 
-use anyhow::Result;
-use clap::Args;
+use anyhow::{Result, bail};
+use clap::{Args, ValueEnum};
 
+use raytracer::integrator::{DirectStrategy, PathTracer};
 use raytracer::render::interrupt_flag;
+use raytracer::scene::Scene;
+use raytracer::wavefront::WavefrontPathTracer;
+
+use crate::engine::Engine;
 
 use crate::integrators::{IntegratorArgs, IntegratorKind, IntegratorPlan, render_sppm_to_files};
 use crate::options::{SceneArgs, check_exposure};
-use crate::render_files::render_to_files;
+use crate::render_files::{render_to_files, render_with_to_files, warn_if_unlit};
 
 /// Render a scene with one integrator and write NAME.png (tone mapped, sRGB),
 /// NAME.exr (linear radiance) and NAME-variance.exr (variance of each pixel's mean).
@@ -22,6 +27,10 @@ pub struct RenderArgs {
     pub integrator: IntegratorKind,
     #[command(flatten)]
     pub integrator_args: IntegratorArgs,
+    /// Which engine runs --integrator path: the lecture's (scalar) or the wavefront engine
+    /// (a tile's paths in lockstep; the same image bit for bit, faster).
+    #[arg(long, value_enum, default_value = "scalar")]
+    pub engine: Engine,
     /// Exposure in stops for the PNG (+1 doubles the brightness); the EXR is never changed.
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     pub exposure: f32,
@@ -41,6 +50,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         );
     }
     let (scene, options) = args.scene.load("cornell")?;
+    let wavefront = wavefront_engine(args, &scene)?;
     // The lab renders from the same plan (`commands/lab/job.rs`).
     let plan = args
         .integrator
@@ -69,6 +79,19 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         }
         plan => plan.build(&scene, &options, interrupt_flag())?,
     };
+    if let Some(engine) = wavefront {
+        let stem = format!("{}-{}", scene.name, integrator.name());
+        warn_if_unlit(&scene, integrator.as_ref());
+        render_with_to_files(
+            &scene,
+            &options,
+            &args.scene.out,
+            &stem,
+            args.exposure,
+            || engine.render(&scene, &options),
+        )?;
+        return Ok(());
+    }
     let stem = format!("{}-{}", scene.name, integrator.name());
     render_to_files(
         &scene,
@@ -79,4 +102,32 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         args.exposure,
     )?;
     Ok(())
+}
+
+/// The wavefront engine if `--engine wavefront` asks for it (`None` for the
+/// scalar engine), or one line on why it cannot run this render. The lab
+/// asks it too.
+pub fn wavefront_engine(args: &RenderArgs, scene: &Scene) -> Result<Option<WavefrontPathTracer>> {
+    if args.engine == Engine::Scalar {
+        return Ok(None);
+    }
+    if args.integrator != IntegratorKind::Path {
+        bail!(
+            "--engine {} runs --integrator path only",
+            engine_name(args.engine)
+        );
+    }
+    let path = PathTracer {
+        max_depth: args.integrator_args.max_depth(args.integrator, scene)?,
+        rr_depth: args.integrator_args.rr_depth(scene),
+        strategy: DirectStrategy::Mis,
+    };
+    Ok(Some(WavefrontPathTracer::from_path(&path)?))
+}
+
+/// The engine's name as the command line spells it.
+fn engine_name(engine: Engine) -> String {
+    engine
+        .to_possible_value()
+        .map_or_else(String::new, |v| v.get_name().to_string())
 }

@@ -160,18 +160,30 @@ pub fn samples_per_second(python: &Path, spp: u32) -> Result<f64, Unfinished> {
     }
 }
 
-/// The line `lesson11 bench` prints after its path tracing figure; `None`
-/// if Ctrl-C stopped the peer.
-pub fn compare(asked: Option<&PathBuf>, spp: u32, ours: f64, threads: usize) -> Option<String> {
+/// The line `lesson11 bench` prints after its path tracing figures: Mitsuba's
+/// rate and the ratio of each of our engines (`(name, samples per second)`)
+/// to it; `None` if Ctrl-C stopped the peer.
+pub fn compare(
+    asked: Option<&PathBuf>,
+    spp: u32,
+    ours: &[(&str, f64)],
+    threads: usize,
+) -> Option<String> {
     let figure = find(asked).and_then(|python| Ok((samples_per_second(&python, spp)?, python)));
     match figure {
-        Ok((theirs, python)) => Some(format!(
-            "  Mitsuba 3 {VARIANT} ({}), same scene and settings, all cores, just after: \
-             {:.3} M samples/s; ours on {threads} thread(s) / Mitsuba = {:.2}×",
-            python.display(),
-            theirs / 1e6,
-            ours / theirs
-        )),
+        Ok((theirs, python)) => {
+            let ratios: Vec<String> = ours
+                .iter()
+                .map(|(name, rate)| format!("{name} {:.2}×", rate / theirs))
+                .collect();
+            Some(format!(
+                "  Mitsuba 3 {VARIANT} ({}), same scene and settings, all cores, just after: \
+                 {:.3} M samples/s; ours on {threads} thread(s) / Mitsuba: {}",
+                python.display(),
+                theirs / 1e6,
+                ratios.join(", ")
+            ))
+        }
         Err(Unfinished::Interrupted) => None,
         Err(Unfinished::Failed(why)) => Some(format!("  Mitsuba 3: {why}; {HOW_TO_GET}")),
     }

@@ -16,6 +16,7 @@ use std::time::Instant;
 
 use anyhow::Context as _;
 use rayon::prelude::*;
+use raytracer::geometry::stream::RayStream;
 use raytracer::geometry::{Geometry, Hit, Mesh, Shape};
 use raytracer::math::{Ray, Vec3A};
 use raytracer::render::interrupted;
@@ -164,6 +165,31 @@ fn throughput_packets<const N: usize>(
     (n / wall, cpu.filter(|_| single).map(|c| n / c), hits)
 }
 
+/// Closest-hit throughput of streams of `CHUNK` rays traced together
+/// (`Geometry::intersect_stream`, as the wavefront engine traces).
+fn throughput_streams(
+    pool: &rayon::ThreadPool,
+    g: &Geometry,
+    rays: &[Ray],
+) -> (f64, Option<f64>, usize) {
+    let (wall, cpu, hits) = best_of(pool, || {
+        rays.par_chunks(CHUNK)
+            .map_init(
+                || (RayStream::default(), Vec::new()),
+                |(stream, out), chunk| {
+                    g.intersect_stream(chunk, out, stream);
+                    let sum: f32 = out.iter().flatten().map(|h| h.t).sum();
+                    std::hint::black_box(sum);
+                    out.iter().flatten().count()
+                },
+            )
+            .sum::<usize>()
+    });
+    let n = rays.len() as f64;
+    let single = pool.current_num_threads() == 1;
+    (n / wall, cpu.filter(|_| single).map(|c| n / c), hits)
+}
+
 /// A number with 3 significant digits.
 fn sig3(x: f64) -> String {
     if x == 0.0 || !x.is_finite() {
@@ -186,13 +212,14 @@ fn measure(name: &str, g: &Geometry, rays: &[Ray], threads: &[usize]) -> anyhow:
         let (any, any_cpu, hits_any) = throughput(&pool, g, rays, true);
         let (p4, p4_cpu, hits4) = throughput_packets(&pool, &packets4, |p| g.intersect4(p));
         let (p16, p16_cpu, hits16) = throughput_packets(&pool, &packets16, |p| g.intersect16(p));
+        let (st, st_cpu, hits_stream) = throughput_streams(&pool, g, rays);
         stop_if_interrupted(false)?;
         anyhow::ensure!(
-            hits == hits_any && hits == hits4 && hits == hits16,
-            "single rays, any-hit and packets disagree: {hits}, {hits_any}, {hits4}, {hits16} hits"
+            hits == hits_any && hits == hits4 && hits == hits16 && hits == hits_stream,
+            "single rays, any-hit, packets and streams disagree: {hits}, {hits_any}, {hits4}, {hits16}, {hits_stream} hits"
         );
         crate::console::say!(
-            "  {name:<20} {n:>2} thread(s): closest {:>5}{}, any {:>5}{}, packets 2x2 {:>5}{}, 4x4 {:>5}{}; hits {hits} ({}%)",
+            "  {name:<20} {n:>2} thread(s): closest {:>5}{}, any {:>5}{}, packets 2x2 {:>5}{}, 4x4 {:>5}{}, streams of {CHUNK} {:>5}{}; hits {hits} ({}%)",
             sig3(closest / 1e6),
             per_cpu(closest_cpu),
             sig3(any / 1e6),
@@ -201,6 +228,8 @@ fn measure(name: &str, g: &Geometry, rays: &[Ray], threads: &[usize]) -> anyhow:
             per_cpu(p4_cpu),
             sig3(p16 / 1e6),
             per_cpu(p16_cpu),
+            sig3(st / 1e6),
+            per_cpu(st_cpu),
             sig3(100.0 * hits as f64 / rays.len() as f64),
         );
     }
@@ -234,7 +263,7 @@ pub fn run(threads: &[usize]) -> anyhow::Result<()> {
         "Mrays/s, best of {REPS}; in parentheses: per CPU-second of the thread (a busy machine does not lower it)"
     );
     crate::console::say!(
-        "closest = Geometry::intersect, any = occluded, packets = intersect4 / intersect16 (closest hit)"
+        "closest = Geometry::intersect, any = occluded, packets = intersect4 / intersect16, streams = intersect_stream (closest hit)"
     );
     crate::console::say!(
         "reference, case (a): Mitsuba 3 llvm_ad_rgb 9.4-10.0 Mrays/s on 1 thread, 18.3 on 2; Embree 4 single rays 6-7"

@@ -265,6 +265,7 @@ pub fn sphere_job(q: &Query, choice: &BrdfChoice) -> Result<JobSpec, String> {
         options,
         student: None,
         race: None,
+        wavefront: None,
     })
 }
 

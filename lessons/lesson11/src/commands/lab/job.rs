@@ -35,6 +35,7 @@ use raytracer::render::metropolis::{MetropolisProgress, render_metropolis_watche
 use raytracer::render::sppm::{SppmProgress, render_sppm_watched};
 use raytracer::render::{Metropolis, Progress, RenderOptions, render_pixels_watched};
 use raytracer::scene::Scene;
+use raytracer::wavefront::WavefrontPathTracer;
 use serde::Serialize;
 
 use raytracer::math::{Color, UVec2};
@@ -85,6 +86,9 @@ pub struct JobSpec {
     /// on a thread of its own, measured against a reference, instead of
     /// `plan`.
     pub race: Option<Racers>,
+    /// `--engine wavefront`: the path tracer on the wavefront engine (the
+    /// same samples; the inspector records them with `path`).
+    pub wavefront: Option<WavefrontPathTracer>,
 }
 
 /// An equal-time race (`race.rs`).
@@ -195,6 +199,7 @@ pub struct Job {
     /// The integrator of pixel samples, once built (the path inspector
     /// records its samples).
     integrator: OnceLock<Arc<dyn Integrator + Send>>,
+    wavefront: Option<WavefrontPathTracer>,
     /// Why the render has no pixel samples to inspect (SPPM, Metropolis).
     no_samples: Option<&'static str>,
     /// What the build makes ("the photon maps"), if there is one.
@@ -339,6 +344,7 @@ impl Job {
             seed: spec.options.seed,
             units,
             integrator,
+            wavefront: spec.wavefront,
             no_samples,
             building,
             scenes: scenes.clone(),
@@ -584,25 +590,28 @@ impl Job {
                 None,
             );
         };
-        let result = render_pixels_watched(
-            w,
-            h,
-            options,
-            &self.stop,
-            |pixel, sampler, splats| {
-                if !catch {
-                    return integrator.sample(scene, pixel, sampler, splats);
-                }
-                let sample = || integrator.sample(scene, pixel, sampler, splats);
-                std::panic::catch_unwind(std::panic::AssertUnwindSafe(sample)).unwrap_or_else(
-                    |payload| {
-                        self.student_panicked(pixel, payload.as_ref());
-                        Color::ZERO
-                    },
-                )
-            },
-            &mut watch,
-        );
+        let result = match &self.wavefront {
+            Some(engine) => engine.render_watched(scene, options, &self.stop, &mut watch),
+            None => render_pixels_watched(
+                w,
+                h,
+                options,
+                &self.stop,
+                |pixel, sampler, splats| {
+                    if !catch {
+                        return integrator.sample(scene, pixel, sampler, splats);
+                    }
+                    let sample = || integrator.sample(scene, pixel, sampler, splats);
+                    std::panic::catch_unwind(std::panic::AssertUnwindSafe(sample)).unwrap_or_else(
+                        |payload| {
+                            self.student_panicked(pixel, payload.as_ref());
+                            Color::ZERO
+                        },
+                    )
+                },
+                &mut watch,
+            ),
+        };
         let complete = if result.stats.interrupted {
             lock(&self.state).eyes[eye].complete_spp
         } else {

@@ -111,6 +111,7 @@ pub fn race_job(q: &Query, folder: &SceneFolder) -> Result<JobSpec, String> {
         build_for: None,
         plan: IntegratorPlan::Ready(Box::new(raytracer::integrator::PathTracer::default())),
         options,
+        wavefront: None,
         student: None,
         race: Some(Racers {
             integrators: racers,

@@ -266,6 +266,7 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
                 options: setup.options,
                 student: None,
                 race: None,
+                wavefront: setup.wavefront,
             };
             started(state.pages.start(q.page()?, spec)?)
         }),

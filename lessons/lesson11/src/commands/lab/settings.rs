@@ -17,6 +17,7 @@ use std::path::{Path, PathBuf};
 use clap::{Args, FromArgMatches};
 use raytracer::render::RenderOptions;
 use raytracer::scene::{BUILTIN_SCENES, Scene};
+use raytracer::wavefront::WavefrontPathTracer;
 use serde::Serialize;
 
 use super::query::Query;
@@ -44,6 +45,7 @@ pub const RENDER_PARAMS: &[&str] = &[
     "roulette",
     "cutoff",
     "ao-distance",
+    "engine",
 ];
 
 /// What the page calls each option (its label), so that an error of
@@ -79,6 +81,8 @@ pub struct RenderSetup {
     /// The options of `lesson11 render` (and of `lesson11 stereo`) that give
     /// the same picture, e.g. `--scene cornell --integrator path --spp 64`.
     pub options_line: String,
+    /// `engine=wavefront`: the path tracer on the wavefront engine.
+    pub wavefront: Option<WavefrontPathTracer>,
 }
 
 /// The scenes a page may choose: the built-in ones, and the `.toml` files of
@@ -215,6 +219,8 @@ pub fn render_setup(
         .integrator
         .plan(&args.integrator_args, &scene, &options, false)
         .map_err(|e| on_the_page(&one_line(&e)))?;
+    let wavefront = crate::commands::render::wavefront_engine(&args, &scene)
+        .map_err(|e| on_the_page(&one_line(&e)))?;
     let options_line = words
         .iter()
         .map(|w| match w.split_once('=') {
@@ -230,6 +236,7 @@ pub fn render_setup(
         plan,
         options,
         options_line,
+        wavefront,
     })
 }
 

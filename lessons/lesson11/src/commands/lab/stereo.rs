@@ -67,6 +67,7 @@ pub fn stereo_job(q: &Query, folder: &SceneFolder) -> Result<JobSpec, String> {
         options: setup.options,
         student: None,
         race: None,
+        wavefront: setup.wavefront,
     })
 }
 

@@ -42,6 +42,7 @@ pub fn student_job(q: &Query, folder: &SceneFolder) -> Result<JobSpec, String> {
         build_for: None,
         plan: setup.plan,
         options: setup.options,
+        wavefront: None,
         student: Some(StudentPair {
             exercise: which.exercise(),
             make: Box::new(move || (which.student(), which.reference())),
