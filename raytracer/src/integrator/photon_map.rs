@@ -258,6 +258,7 @@ mod tests {
                     wo: Vec3A::new(0.0, 1.0, 0.0),
                     t: 1.0,
                     shape: 0,
+                    p_error: Vec3A::ZERO,
                 };
                 sum += map.radiance(&it, &brdf, search, |_| true).x;
             }

@@ -236,7 +236,7 @@ impl InstantRadiosity {
                 d2,
                 self.settings.clamp,
             );
-            if !scene.unoccluded(&Ray::spawn_to(x.p, x.ng, v.it.p, v.it.ng)) {
+            if !scene.unoccluded(&Ray::spawn_between(x.ray_end(), v.it.ray_end())) {
                 continue;
             }
             // The VPL is a light-path vertex: it scatters importance, with
