@@ -203,9 +203,9 @@ fn push_off(p: Vec3A, ng: Vec3A, d: Vec3A, distance: f32) -> Vec3A {
     let o = p + offset;
     let away = |v: f32, by: f32| {
         if by > 0.0 {
-            v.next_up()
+            next_float_up(v)
         } else if by < 0.0 {
-            v.next_down()
+            -next_float_up(-v)
         } else {
             v
         }
@@ -215,6 +215,22 @@ fn push_off(p: Vec3A, ng: Vec3A, d: Vec3A, distance: f32) -> Vec3A {
         away(o.y, offset.y),
         away(o.z, offset.z),
     )
+}
+
+/// The next float above `v` (`f32::next_up`, which needs Rust 1.86; the
+/// crate supports 1.85): `±0` goes to the smallest positive subnormal,
+/// infinities and NaN stay.
+#[inline]
+fn next_float_up(v: f32) -> f32 {
+    if !v.is_finite() {
+        v
+    } else if v == 0.0 {
+        f32::from_bits(1)
+    } else if v > 0.0 {
+        f32::from_bits(v.to_bits() + 1)
+    } else {
+        f32::from_bits(v.to_bits() - 1)
+    }
 }
 
 /// Luminance of linear sRGB/Rec. 709 primaries (used for Russian roulette and
