@@ -146,7 +146,7 @@ impl InstantRadiosity {
                 max_depth: settings.max_depth.map(|d| d.saturating_sub(1)),
                 rr_depth: settings.rr_depth,
                 seed: settings.seed,
-                stream: 1,
+                stream: super::dimensions::VPL_STREAM,
             },
             stop,
             |v| {
@@ -204,7 +204,7 @@ impl InstantRadiosity {
     /// The light of every VPL at `x` (the module doc's sum), for paths whose
     /// camera part has `t` segments.
     pub fn gather(&self, scene: &Scene, x: &Interaction, t: u32) -> Color {
-        let d = self.settings.max_depth.unwrap_or(u32::MAX);
+        let d = super::max_segments(self.settings.max_depth);
         let brdf = scene.brdf(x);
         let wo = x.frame.to_local(x.wo);
         let mut l = Color::ZERO;
@@ -266,7 +266,7 @@ impl Integrator for InstantRadiosity {
         let Some(x) = vp.hit else {
             return l;
         };
-        if vp.depth >= max_depth.unwrap_or(u32::MAX) {
+        if vp.depth >= super::max_segments(max_depth) {
             return l;
         }
         let brdf = scene.brdf(&x);
