@@ -402,12 +402,18 @@ fn irradiance_caching_gives_the_furnace_within_its_noise() {
 /// many bounces (0.98⁶⁴ = 0.27 of it lies beyond the 64th). Unlimited depth
 /// means unlimited: roulette, not a cap, ends the paths.
 fn bright_furnace(w: u32, h: u32) -> Scene {
+    furnace_of_albedo(0.98, w, h)
+}
+
+/// The builtin furnace with albedo `rho` and emission `1 − rho`: every
+/// pixel is 1.
+fn furnace_of_albedo(rho: f32, w: u32, h: u32) -> Scene {
     let text = raytracer::scene::builtin::builtin("furnace")
         .unwrap()
         .toml
-        .replace("albedo = 0.5", "albedo = 0.98")
-        .replace("emission = 0.5", "emission = 0.02");
-    assert!(text.contains("albedo = 0.98") && text.contains("emission = 0.02"));
+        .replace("albedo = 0.5", &format!("albedo = {rho}"))
+        .replace("emission = 0.5", &format!("emission = {}", 1.0 - rho));
+    assert!(text.contains(&format!("albedo = {rho}")));
     let origin = raytracer::scene::SceneOrigin::Dir {
         name: "bright-furnace".into(),
         dir: std::env::temp_dir(),
@@ -427,6 +433,86 @@ fn irradiance_caching_gives_the_bright_furnace_at_unlimited_depth() {
     let scene = bright_furnace(8, 8);
     assert_furnace("irradiance cache, bright furnace, D = ∞", 1.0, |s| {
         image(&scene, &ic(&scene, 0.5, 16, None, s), 1, s)
+    });
+}
+
+/// Twelve runs of `run` in a furnace whose exact value is 1:
+/// [`assert_furnace`]'s t-test against 1, and the mean within 3 % of 1.
+///
+/// Why not the bright furnace of albedo 0.98: Russian roulette survives
+/// with at most 0.95, so a path's weight grows by 0.98/0.95 per bounce and
+/// the estimate's second moment sums `(0.98²/0.95)^k`, which diverges:
+/// infinite variance, no fixed bound can be met by any number of runs
+/// (irradiance caching's twelve runs there vary by ±10 %). At albedo 0.95
+/// the ratio is 0.95: finite variance, and 3.8 % of the light still lies
+/// beyond the 64th bounce (0.95⁶⁴), which a depth cap would remove.
+/// Why 3 % and not the 2 % the issue names: at the settings below the
+/// runs' standard error of the mean is 0.6–0.9 %, so 2 % would be 2–3 of
+/// them (a false failure in about 1 run of 100); 3 % is at least 3.4 of
+/// them (about 1e-3 if the tails were Gaussian; these weights' tails are
+/// heavier), and still below the 3.8 % a cap at 64 bounces would lose.
+fn assert_bright_furnace(what: &str, run: impl Fn(u64) -> Image) {
+    let means: Vec<f64> = (0..RUNS).map(|s| mean(&run(s)).x as f64).collect();
+    let (t, m) = t_stat(&means, 1.0);
+    eprintln!(
+        "{what}: {m:.5} vs 1 (t = {t:.2}, standard error {:.5})",
+        (m - 1.0) / t
+    );
+    assert!(
+        t.abs() < T_MAX && (m - 1.0).abs() < 0.03,
+        "{what}: mean {m:.5} vs exact 1, t = {t:.1}"
+    );
+}
+
+/// Photon mapping at unlimited depth in the furnace of albedo 0.95 (see
+/// [`assert_bright_furnace`]): the photons' paths end by roulette alone,
+/// and the density estimate of a uniform radiance has no bias (on the
+/// sphere's inner wall the area within chord distance `r` is exactly
+/// `π r²`), so the image is 1. Passed before this test was written: it
+/// guards unlimited depth, it found no defect. Cost: about 2 s.
+#[test]
+fn photon_mapping_gives_the_bright_furnace_at_unlimited_depth() {
+    let scene = furnace_of_albedo(0.95, 8, 8);
+    let never = AtomicBool::new(false);
+    assert_bright_furnace("photon, furnace of albedo 0.95, D = ∞", |s| {
+        let settings = PhotonSettings {
+            photons: 16_000,
+            k: 30,
+            max_depth: None,
+            rr_depth: 5,
+            seed: 7000 + s,
+            ..PhotonSettings::default()
+        };
+        let pm = PhotonMapping::build(&scene, settings, &never).unwrap();
+        image(&scene, &pm, 1, s)
+    });
+}
+
+/// SPPM at unlimited depth in the furnace of albedo 0.95: 1, as photon
+/// mapping. Cost: about 2 s.
+#[test]
+fn sppm_gives_the_bright_furnace_at_unlimited_depth() {
+    let scene = furnace_of_albedo(0.95, 8, 8);
+    let settings = SppmSettings {
+        photons: 4000,
+        max_depth: None,
+        rr_depth: 5,
+        ..SppmSettings::default()
+    };
+    assert_bright_furnace("sppm, furnace of albedo 0.95, D = ∞", |s| {
+        sppm_image(&scene, &settings, 8, 5000 + s)
+    });
+}
+
+/// Instant radiosity at unlimited depth in the furnace of albedo 0.95:
+/// every VPL, however many bounces from the light, is gathered (on the
+/// sphere `G = 1/(4r²)` everywhere: no clamping question, no splotches).
+/// Cost: about 2 s.
+#[test]
+fn vpl_gives_the_bright_furnace_at_unlimited_depth() {
+    let scene = furnace_of_albedo(0.95, 4, 4);
+    assert_bright_furnace("vpl, furnace of albedo 0.95, D = ∞", |s| {
+        image(&scene, &vpl(&scene, 2048, 0.0, None, s), 1, s)
     });
 }
 

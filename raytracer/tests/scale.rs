@@ -138,3 +138,28 @@ fn the_lamp_gap_survives_scaling() {
         );
     }
 }
+
+/// The same box moved 100 m and 1000 m from the origin: its coordinates
+/// grow, the 1 cm lamp gap does not. A ray offset of 2⁻¹⁵ of the largest
+/// coordinate (3 cm at 1000 m) started rays from the ceiling below the lamp
+/// beyond about 330 m (the band's |z| was about 3 at 100 m and 20 at
+/// 1000 m); offsets from the hit points' error bounds (a few ulps: about
+/// 0.5 mm at 1000 m) keep the gap open. Same band, segments and threshold
+/// as [`the_lamp_gap_survives_scaling`]. Cost: about 3 s.
+#[test]
+fn the_lamp_gap_survives_translation() {
+    let base = lamp_band(&common::builtin_moved("cornell", 1.0, Vec3A::ZERO), 3);
+    let threshold = z_threshold(2 * 8 * 24 * 3, 1e-4) as f32;
+    for (k, offset) in [100.0f32, 1000.0].into_iter().enumerate() {
+        let moved = Vec3A::new(offset, -offset, offset);
+        let other = lamp_band(&common::builtin_moved("cornell", 1.0, moved), 6 + k as u64);
+        let (z, x, y) = worst_segment(&base, &other);
+        eprintln!(
+            "lamp band moved by {moved}: max |z| = {z:.2} at row {y}, x from {x} (threshold {threshold:.2})"
+        );
+        assert!(
+            z < threshold,
+            "cornell moved by {moved}: row {y}, x from {x}: |z| = {z:.1}"
+        );
+    }
+}

@@ -221,6 +221,7 @@ fn surface_vertex(scene: &Scene, shape: u32, p: Vec3A, n: Vec3A, from: Vec3A) ->
         wo: (from - p).normalize_or_zero(),
         t: 1.0,
         shape,
+        p_error: Vec3A::ZERO,
     };
     let mut v = Vertex::surface(scene, it, Color::ONE);
     v.delta = scene.brdf(&it).is_delta();

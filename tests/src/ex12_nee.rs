@@ -515,6 +515,7 @@ pub fn scene_with(
         wo: Vec3A::new(0.3, 1.0, 0.2).normalize(),
         t: 1.0,
         shape: 0,
+        p_error: Vec3A::ZERO,
     };
     (scene, it)
 }

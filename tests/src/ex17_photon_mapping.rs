@@ -177,6 +177,7 @@ fn hit(x: Vec3A, n: Vec3A, wo: Vec3A) -> Interaction {
         wo: wo.normalize(),
         t: 1.0,
         shape: 0,
+        p_error: Vec3A::ZERO,
     }
 }
 

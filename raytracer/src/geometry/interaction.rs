@@ -6,7 +6,7 @@
 
 use super::SurfacePoint;
 use crate::frame::Frame;
-use crate::math::{Ray, Vec2, Vec3A};
+use crate::math::{Ray, RayEnd, Vec2, Vec3A};
 
 /// A ray's hit, in the form the estimators of the lecture use: the point `x`,
 /// its normals, its shading frame and the direction `ω_o` back along the ray.
@@ -24,6 +24,9 @@ pub struct Interaction {
     pub t: f32,
     /// Index of the shape hit.
     pub shape: u32,
+    /// Bound on the rounding error of each coordinate of `p`
+    /// ([`SurfacePoint::p_error`]).
+    pub p_error: Vec3A,
 }
 
 impl Interaction {
@@ -37,18 +40,30 @@ impl Interaction {
             wo,
             t,
             shape: sp.shape,
+            p_error: sp.p_error,
+        }
+    }
+
+    /// This point as the end of a ray: position, error bound, normal.
+    #[inline]
+    pub fn ray_end(&self) -> RayEnd {
+        RayEnd {
+            p: self.p,
+            error: self.p_error,
+            n: self.ng,
         }
     }
 
     /// A ray leaving the surface in world direction `d`.
     #[inline]
     pub fn spawn_ray(&self, d: Vec3A) -> Ray {
-        Ray::spawn(self.p, self.ng, d)
+        Ray::spawn_from(self.ray_end(), d)
     }
 
-    /// A shadow ray from this point to `q` (normal `nq`, zero for a point light).
+    /// A shadow ray from this point to `q` (normal `nq`, zero for a point
+    /// light), whose error is estimated from its magnitude.
     #[inline]
     pub fn spawn_ray_to(&self, q: Vec3A, nq: Vec3A) -> Ray {
-        Ray::spawn_to(self.p, self.ng, q, nq)
+        Ray::spawn_between(self.ray_end(), RayEnd::estimated(q, nq))
     }
 }

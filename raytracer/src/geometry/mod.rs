@@ -33,7 +33,7 @@ use std::sync::Arc;
 
 use rayon::prelude::*;
 
-use crate::math::{Ray, Vec2, Vec3A};
+use crate::math::{Ray, Vec2, Vec3A, gamma};
 
 pub use aabb::Aabb;
 pub use bvh::Bvh;
@@ -82,6 +82,10 @@ pub struct SurfacePoint {
     pub uv: Vec2,
     /// Index of the [`Shape`] hit, in the order given to [`Geometry::new`].
     pub shape: u32,
+    /// Bound on the rounding error of each coordinate of `p` (pbrt's
+    /// `pError`): how far the computed point may lie from the true surface,
+    /// which rays leaving it must clear ([`crate::math::offset_ray_origin`]).
+    pub p_error: Vec3A,
 }
 
 /// Where a primitive comes from: shape index and, for a mesh, triangle index.
@@ -308,16 +312,23 @@ impl Geometry {
                     ns: ng,
                     uv: Sphere::uv(ng),
                     shape: src.shape,
+                    // c + r·(p' − c)/|p' − c|: a normalisation and a sum
+                    // (pbrt's γ₅ |p − c| for the reprojection, plus the
+                    // centre's addition).
+                    p_error: gamma(5) * ((p - s.center).abs() + s.center.abs()),
                 }
             }
             Shape::Quad(q) => {
                 let ng = q.normal();
+                let (a, b) = (hit.uv.x, hit.uv.y);
                 SurfacePoint {
-                    p: q.point(hit.uv.x, hit.uv.y),
+                    p: q.point(a, b),
                     ng,
                     ns: ng,
                     uv: hit.uv,
                     shape: src.shape,
+                    // origin + a·e1 + b·e2: two products, two sums.
+                    p_error: gamma(3) * (q.origin.abs() + (a * q.e1).abs() + (b * q.e2).abs()),
                 }
             }
             Shape::Mesh(m) => {
@@ -348,6 +359,8 @@ impl Geometry {
                     ns,
                     uv,
                     shape: src.shape,
+                    // b0·p0 + b1·p1 + b2·p2 with b0 = 1 − b1 − b2 (pbrt's γ₇).
+                    p_error: gamma(7) * ((b0 * p0).abs() + (b1 * p1).abs() + (b2 * p2).abs()),
                 }
             }
         }

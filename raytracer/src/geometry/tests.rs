@@ -4,7 +4,7 @@
 use std::sync::Arc;
 
 use super::*;
-use crate::math::{PI, Vec3};
+use crate::math::{PI, RayEnd, Vec3};
 use crate::sampling::Sampler;
 
 fn uniform_sphere(s: &mut Sampler) -> Vec3A {
@@ -310,7 +310,8 @@ fn surface_points(g: &Geometry, centre: Vec3A, radius: f32, n: usize) -> Vec<(Su
     out
 }
 
-/// Rays spawned on a surface with [`Ray::spawn`] never hit that surface
+/// Rays spawned on a surface with [`Ray::spawn_from`] and the hit's error
+/// bound never hit that surface
 /// again at the start point. Every shape here is convex (or flat), so a ray
 /// leaving on the outer side must hit nothing at all, and a ray entering
 /// must hit another primitive (mesh) or the far side (sphere).
@@ -355,7 +356,12 @@ fn spawned_rays_do_not_self_intersect() {
             let mut s = Sampler::new(11, k as u64, case as u64);
             let d = uniform_sphere(&mut s);
             let outward = if flat { true } else { d.dot(sp.ng) > 0.0 };
-            let hit = g.intersect(&Ray::spawn(sp.p, sp.ng, d));
+            let end = RayEnd {
+                p: sp.p,
+                error: sp.p_error,
+                n: sp.ng,
+            };
+            let hit = g.intersect(&Ray::spawn_from(end, d));
             if outward {
                 assert!(hit.is_none(), "case {case}, point {k}: re-hit {hit:?}");
             } else if let Some(h) = hit {

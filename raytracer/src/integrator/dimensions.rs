@@ -58,11 +58,39 @@
 //!   covers: its record rays (`rays` of them, or with gradients one per
 //!   cell of its `M × N` strata), and at a Phong surface: continuation and an
 //!   irradiance-cache ray's path. Their light paths (photons, VPLs) and the
-//!   cache's records draw from streams of their own (sample indices `2^48 +
-//!   stream` and `2^47`), each light path as a light path's start and per
-//!   bounce: continuation, roulette.
+//!   cache's records draw from streams of their own (see Streams below),
+//!   each light path as a light path's start and per bounce: continuation,
+//!   roulette.
+//!
+//! # Streams
+//!
+//! Numbers that belong to no pixel sample come from streams of their own,
+//! named here in one place so that no two algorithms share one by accident:
+//! the light paths of photon mapping, instant radiosity and SPPM's passes
+//! (sample index `2^48 + stream`, [`super::photon::photon_sample_index`]),
+//! the irradiance cache's records (sample index `2^47`) and the derived
+//! seeds of Metropolis light transport's chains.
 
 use crate::sampling::Draw;
+
+/// Light-path stream of photon mapping's photons.
+pub const PHOTON_MAPPING_STREAM: u64 = 0;
+/// Light-path stream of instant radiosity's VPLs.
+pub const VPL_STREAM: u64 = 1;
+/// Light-path stream of SPPM's first pass; pass `k` uses this plus `k`.
+pub const SPPM_FIRST_STREAM: u64 = 2;
+/// Sample index of the irradiance cache's record rays (pixel: the record's
+/// index): below the photon streams, far above any pixel sample.
+pub const IRRADIANCE_CACHE_SAMPLE: u64 = 1 << 47;
+/// Derived-seed names of Metropolis light transport's streams
+/// ([`crate::render::metropolis`]): the bootstrap paths, the choice of each
+/// chain's start, the chain's accept/reject numbers, its large steps and
+/// its small steps.
+pub const METROPOLIS_BOOTSTRAP_STREAM: u64 = 1;
+pub const METROPOLIS_START_STREAM: u64 = 2;
+pub const METROPOLIS_CONTROL_STREAM: u64 = 3;
+pub const METROPOLIS_LARGE_STREAM: u64 = 4;
+pub const METROPOLIS_SMALL_STREAM: u64 = 5;
 
 /// The position of a camera sample within its pixel (a box filter).
 pub const FILM: Draw<2> = Draw::new("position within the pixel");

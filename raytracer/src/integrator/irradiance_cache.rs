@@ -359,7 +359,7 @@ impl Strata {
 }
 
 /// The sample index of the cache's own random numbers (far above pixel samples).
-const CACHE_SAMPLE: u64 = 1 << 47;
+const CACHE_SAMPLE: u64 = super::dimensions::IRRADIANCE_CACHE_SAMPLE;
 
 /// Irradiance caching with its cache filled.
 #[derive(Clone, Debug)]
@@ -538,7 +538,7 @@ impl IrradianceCache {
     }
 
     fn max_depth(&self) -> u32 {
-        self.settings.max_depth.unwrap_or(u32::MAX)
+        super::max_segments(self.settings.max_depth)
     }
 
     /// A new record at `x`, reached in `depth` segments.
@@ -666,7 +666,7 @@ pub fn incoming_indirect(
     rr_depth: u32,
     sampler: &mut Sampler,
 ) -> (Color, f32) {
-    let d = max_depth.unwrap_or(u32::MAX);
+    let d = super::max_segments(max_depth);
     let (mut l, mut beta) = (Color::ZERO, Color::ONE);
     // Undoes the 1/η² that refraction puts into a radiance throughput, for
     // the roulette only (as the path tracer does).

@@ -307,6 +307,7 @@ mod tests {
             wo: (x[from].p - x[i].p).normalize_or_zero(),
             t: 1.0,
             shape,
+            p_error: Vec3A::ZERO,
         };
         Vertex::surface(scene, it, Color::ONE)
     }

@@ -91,6 +91,16 @@ pub use path::{DirectStrategy, PathTracer};
 pub use photon_mapping::{PhotonMapping, PhotonSettings, PhotonStats};
 pub use vpl::{InstantRadiosity, VplSettings};
 
+/// Mitsuba's maximum depth `D` (`None`: unlimited) as the most segments a
+/// path may have: a path of `k` segments may add another only while
+/// `k < max_segments(D)` (D = 1: only emitters seen directly). The one place
+/// where "unlimited" becomes a number; every integrator counts depth in
+/// segments from the lens, as Mitsuba does.
+#[inline]
+pub fn max_segments(max_depth: Option<u32>) -> u32 {
+    max_depth.unwrap_or(u32::MAX)
+}
+
 /// The primary ray of a pixel sample: a uniform point in the pixel (a box
 /// filter: each sample counts fully for its own pixel) and a point on the lens.
 /// Draws [`FILM`](dimensions::FILM) and [`LENS`](dimensions::LENS), the

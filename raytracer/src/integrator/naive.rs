@@ -199,7 +199,7 @@ impl NaiveRecursive {
         if let Some(r) = rec.record() {
             r.contribute(at, product * l, None);
         }
-        if depth + 1 >= self.max_depth.unwrap_or(u32::MAX) {
+        if depth + 1 >= super::max_segments(self.max_depth) {
             return l;
         }
         if self.cutoff.is_some_and(|c| product.max_element() < c) {

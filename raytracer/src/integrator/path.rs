@@ -113,7 +113,7 @@ impl PathTracer {
         sampler: &mut Sampler,
         rec: &mut R,
     ) -> Color {
-        let max_depth = self.max_depth.unwrap_or(u32::MAX);
+        let max_depth = super::max_segments(self.max_depth);
         let use_nee = self.strategy != DirectStrategy::BrdfOnly;
         let mut ray = camera_ray(scene, pixel, sampler);
         // The recorded vertex the path is at (always `None` when not recording).

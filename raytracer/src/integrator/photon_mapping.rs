@@ -160,7 +160,7 @@ impl PhotonMapping {
                 max_depth: settings.max_depth,
                 rr_depth: settings.rr_depth,
                 seed: settings.seed,
-                stream: 0,
+                stream: super::dimensions::PHOTON_MAPPING_STREAM,
             },
             stop,
         );
@@ -235,7 +235,7 @@ impl Integrator for PhotonMapping {
         _splats: &mut Vec<Splat>,
     ) -> Color {
         let max_depth = self.settings.max_depth;
-        let d = max_depth.unwrap_or(u32::MAX);
+        let d = super::max_segments(max_depth);
         let vp = visible_point(scene, pixel, sampler, max_depth);
         let mut l = vp.le;
         let Some(it) = vp.hit else {

@@ -60,6 +60,7 @@ mod tests {
             wo: Vec3A::Y,
             t: 1.0,
             shape: 0,
+            p_error: Vec3A::ZERO,
         }
     }
 

@@ -180,7 +180,7 @@ pub fn camera_pass(
     let Some(it) = vp.hit else {
         return (l, None);
     };
-    if vp.depth >= settings.max_depth.unwrap_or(u32::MAX) {
+    if vp.depth >= super::max_segments(settings.max_depth) {
         return (l, None);
     }
     l += vp.beta * nee::sample_light(scene, &it, scene.brdf(&it), &mut sampler, false);
@@ -211,7 +211,7 @@ pub fn photon_pass(
             max_depth: settings.max_depth,
             rr_depth: settings.rr_depth,
             seed,
-            stream: 2 + pass as u64,
+            stream: super::dimensions::SPPM_FIRST_STREAM + pass as u64,
         },
         stop,
     );
@@ -241,7 +241,7 @@ pub fn gather(
     point: &PassPoint,
     r: f32,
 ) -> (u32, Color) {
-    let d = settings.max_depth.unwrap_or(u32::MAX);
+    let d = super::max_segments(settings.max_depth);
     let it = &point.it;
     let brdf = scene.brdf(it);
     let wo = it.frame.to_local(it.wo);

@@ -48,7 +48,7 @@ use std::cell::RefCell;
 use super::shading_normals::importance_correction;
 use crate::frame::Frame;
 use crate::geometry::Interaction;
-use crate::math::{Color, Ray, Vec2, Vec3A};
+use crate::math::{Color, Ray, RayEnd, Vec2, Vec3A};
 use crate::scene::Scene;
 
 /// No light at this vertex.
@@ -104,6 +104,7 @@ pub const EMPTY_VERTEX: Vertex = Vertex {
         wo: Vec3A::ZERO,
         t: 0.0,
         shape: u32::MAX,
+        p_error: Vec3A::ZERO,
     },
     light: NO_LIGHT,
     beta: Color::ZERO,
@@ -174,6 +175,7 @@ fn point_interaction(p: Vec3A, n: Vec3A) -> Interaction {
         wo: Vec3A::ZERO,
         t: 0.0,
         shape: u32::MAX,
+        p_error: RayEnd::estimated(p, n).error,
     }
 }
 
@@ -364,5 +366,5 @@ impl Vertex {
 /// Whether nothing blocks the segment between vertices `a` and `b`.
 #[inline]
 pub fn visible(scene: &Scene, a: &Vertex, b: &Vertex) -> bool {
-    scene.unoccluded(&Ray::spawn_to(a.p(), a.it.ng, b.p(), b.it.ng))
+    scene.unoccluded(&Ray::spawn_between(a.it.ray_end(), b.it.ray_end()))
 }

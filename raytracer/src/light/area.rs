@@ -596,7 +596,8 @@ mod tests {
                     // the offset origin: the lamp moved by the offset), the
                     // ray's origin just off it, on the side it leaves to.
                     assert_eq!(l.shape.sample_area(u_pos).0, e.p);
-                    assert!(e.ray.o != e.p && (e.ray.o - e.p).dot(e.ray.d) > 0.0);
+                    let side = (e.ray.o - e.p).dot(e.n) * e.ray.d.dot(e.n);
+                    assert!(e.ray.o != e.p && side > 0.0, "{e:?}");
                     assert!((pdf_a - e.pdf_a).abs() <= 1e-5 * e.pdf_a);
                     assert!((pdf_w - e.pdf_w).abs() <= 1e-3 * e.pdf_w);
                     let cos = e.n.dot(e.ray.d);

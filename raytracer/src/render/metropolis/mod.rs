@@ -135,12 +135,13 @@ pub struct MetropolisResult {
     pub chain_tile_means: Vec<Vec<Color>>,
 }
 
-/// Derived seeds of the streams of one render.
-const BOOTSTRAP_STREAM: u64 = 1;
-const START_STREAM: u64 = 2;
-const CONTROL_STREAM: u64 = 3;
-const LARGE_STREAM: u64 = 4;
-const SMALL_STREAM: u64 = 5;
+/// Derived seeds of the streams of one render (named with every other
+/// stream in [`crate::integrator::dimensions`]).
+use crate::integrator::dimensions::{
+    METROPOLIS_BOOTSTRAP_STREAM as BOOTSTRAP_STREAM, METROPOLIS_CONTROL_STREAM as CONTROL_STREAM,
+    METROPOLIS_LARGE_STREAM as LARGE_STREAM, METROPOLIS_SMALL_STREAM as SMALL_STREAM,
+    METROPOLIS_START_STREAM as START_STREAM,
+};
 
 fn stream(seed: u64, name: u64) -> u64 {
     mix64(seed ^ mix64(name.wrapping_mul(0x9e37_79b9_7f4a_7c15)))
