@@ -341,10 +341,9 @@ fn render(tour: &Tour) -> Result<Section> {
         (scene.camera.width, scene.camera.height),
         &format!(
             "What clamping G at {VPL_CLAMP} removes: unclamped minus clamped instant radiosity, the \
-             same VPLs ({} spp), in luminance. The light lost sits in the corners and along the \
-             edges, where a VPL is close to the point it lights; the clamped image is {:.1}% darker \
-             overall.",
-            vpl.run.spp,
+             same VPLs and pixel samples, in luminance. The light lost sits in the corners and \
+             along the edges, where a VPL is close to the point it lights; the clamped image is \
+             {:.1}% darker overall.",
             100.0 * luminance(lost) / luminance(total).max(1e-9)
         ),
     )?;
