@@ -215,6 +215,7 @@ fn student_job(
             progress: false,
             ..Default::default()
         },
+        wavefront: None,
         student: Some(super::job::StudentPair {
             exercise: "ex13_mis",
             make: Box::new(move || (student, Box::new(PathTracer::default()))),
