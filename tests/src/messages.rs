@@ -9,6 +9,7 @@
 //! Bulgarian falls back to English (the test `messages_exist_in_both_languages`
 //! of `tests/tests/check_texts.rs` names it).
 
+use std::cell::RefCell;
 use std::collections::BTreeMap;
 use std::fmt::Display;
 use std::sync::OnceLock;
@@ -59,7 +60,26 @@ pub fn text_in(lang: Lang, key: &str, args: &[(&str, &dyn Display)]) -> String {
 
 /// The message `key` in the current language (see [`text_in`]).
 pub fn text(key: &str, args: &[(&str, &dyn Display)]) -> String {
+    LOG.with(|log| {
+        if let Some(keys) = log.borrow_mut().as_mut() {
+            keys.push(key.to_string());
+        }
+    });
     text_in(lang::current(), key, args)
+}
+
+thread_local! {
+    static LOG: RefCell<Option<Vec<String>>> = const { RefCell::new(None) };
+}
+
+/// Runs `f` and returns, beside its result, the keys of the messages it
+/// made on this thread, in order (the self-test compares a failure's keys
+/// in both languages: the same keys name the same mistake).
+pub fn keys_used<R>(f: impl FnOnce() -> R) -> (R, Vec<String>) {
+    let outer = LOG.with(|log| log.borrow_mut().replace(Vec::new()));
+    let r = f();
+    let keys = LOG.with(|log| std::mem::replace(&mut *log.borrow_mut(), outer));
+    (r, keys.unwrap_or_default())
 }
 
 /// A message of the grader in the current language:
@@ -76,4 +96,102 @@ macro_rules! tr {
     };
     (@value $name:ident) => { $name };
     (@value $name:ident $value:expr) => { $value };
+}
+
+/// What is wrong between two catalogs, one line each (empty: nothing): a
+/// key that one language lacks, or whose placeholders differ.
+pub fn mismatches(en: &BTreeMap<String, String>, bg: &BTreeMap<String, String>) -> Vec<String> {
+    let mut out = Vec::new();
+    for (key, template) in en {
+        match bg.get(key) {
+            None => out.push(format!("{key}: missing in tests/messages/bg.toml")),
+            Some(t) => {
+                let (mut a, mut b) = (lang::placeholders(template), lang::placeholders(t));
+                a.sort();
+                b.sort();
+                if a != b {
+                    out.push(format!(
+                        "{key}: placeholders {a:?} in English, {b:?} in Bulgarian"
+                    ));
+                }
+            }
+        }
+    }
+    for key in bg.keys().filter(|k| !en.contains_key(*k)) {
+        out.push(format!("{key}: missing in tests/messages/en.toml"));
+    }
+    out
+}
+
+/// The keys of the `tr!("…")` calls in a Rust source.
+pub fn keys_in_source(source: &str) -> Vec<String> {
+    let pieces: Vec<&str> = source.split("tr!(").collect();
+    pieces
+        .windows(2)
+        .filter(|w| !w[0].ends_with(|c: char| c.is_alphanumeric() || c == '_'))
+        .filter_map(|w| {
+            let rest = w[1].trim_start().strip_prefix('"')?;
+            let key = &rest[..rest.find('"')?];
+            let (section, name) = key.split_once('.')?;
+            let word =
+                |s: &str| !s.is_empty() && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+            (word(section) && word(name)).then(|| key.to_string())
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_missing_key_or_placeholder_is_named() {
+        let en = parse("[a]\nx = \"x {n}\"\ny = \"y\"\n").unwrap();
+        let bg = parse("[a]\nx = \"х {m}\"\nz = \"з\"\n").unwrap();
+        let m = mismatches(&en, &bg);
+        assert_eq!(m.len(), 3, "{m:?}");
+        assert!(m[0].starts_with("a.x: placeholders"), "{m:?}");
+        assert!(
+            m[1].starts_with("a.y: missing in tests/messages/bg.toml"),
+            "{m:?}"
+        );
+        assert!(
+            m[2].starts_with("a.z: missing in tests/messages/en.toml"),
+            "{m:?}"
+        );
+        assert!(mismatches(&en, &en).is_empty());
+    }
+
+    #[test]
+    fn a_message_is_filled_in_the_language_asked() {
+        let n = 3;
+        let en = lang::with(Lang::En, || {
+            crate::tr!(
+                "report.progress",
+                done = 1,
+                total = n,
+                failing = 0,
+                todo = 2
+            )
+        });
+        let bg = lang::with(Lang::Bg, || {
+            crate::tr!(
+                "report.progress",
+                done = 1,
+                total = n,
+                failing = 0,
+                todo = 2
+            )
+        });
+        assert_eq!(en, "Progress: 1/3 done, 0 failing, 2 not started.");
+        assert!(bg.starts_with("Напредък: 1/3 готови"), "{bg}");
+        assert_eq!(
+            keys_in_source("x tr!(\n \"a.b\", n) tr!(\"c.d\")"),
+            ["a.b", "c.d"]
+        );
+        let ((), keys) = keys_used(|| {
+            crate::tr!("report.last");
+        });
+        assert_eq!(keys, ["report.last"]);
+    }
 }
