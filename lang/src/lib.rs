@@ -155,10 +155,41 @@ enum Piece<'a> {
     Text(&'a str),
     Hole {
         name: &'a str,
-        plus: bool,
-        precision: Option<usize>,
+        spec: Spec,
         whole: &'a str,
     },
+}
+
+/// The formats a template may ask for: `[<|>][+][width][.precision]`.
+#[derive(Clone, Copy, Default)]
+struct Spec {
+    right: bool,
+    plus: bool,
+    width: usize,
+    precision: Option<usize>,
+}
+
+impl Spec {
+    fn parse(spec: &str) -> Option<Spec> {
+        let mut s = Spec::default();
+        let mut rest = spec;
+        if let Some(r) = rest.strip_prefix('>') {
+            (s.right, rest) = (true, r);
+        } else if let Some(r) = rest.strip_prefix('<') {
+            rest = r;
+        }
+        if let Some(r) = rest.strip_prefix('+') {
+            (s.plus, rest) = (true, r);
+        }
+        let (width, precision) = rest.split_once('.').unwrap_or((rest, ""));
+        if !width.is_empty() {
+            s.width = width.parse().ok()?;
+        }
+        if rest.contains('.') {
+            s.precision = Some(precision.parse().ok()?);
+        }
+        Some(s)
+    }
 }
 
 fn pieces(template: &str) -> Vec<Piece<'_>> {
@@ -184,19 +215,12 @@ fn pieces(template: &str) -> Vec<Piece<'_>> {
         };
         let inner = &rest[i + 1..close];
         let (name, spec) = inner.split_once(':').unwrap_or((inner, ""));
-        let plus = spec.starts_with('+');
-        let precision = spec
-            .trim_start_matches('+')
-            .strip_prefix('.')
-            .and_then(|p| p.parse().ok());
-        let valid = !name.is_empty()
-            && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
-            && (spec.is_empty() || spec == "+" || precision.is_some());
-        if valid {
+        let spec = Spec::parse(spec);
+        let valid = !name.is_empty() && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+        if let (true, Some(spec)) = (valid, spec) {
             out.push(Piece::Hole {
                 name,
-                plus,
-                precision,
+                spec,
                 whole: &rest[i..=close],
             });
         } else {
@@ -210,27 +234,32 @@ fn pieces(template: &str) -> Vec<Piece<'_>> {
 
 /// The template with its placeholders filled: `{name}` by the argument's
 /// `Display`, `{name:.3}` with three decimals, `{name:+.1}` with a sign too
-/// (for numbers; other formats are formatted by the caller). A placeholder
-/// without an argument stays as written, so a test can find it.
+/// (for numbers), `{name:>2}`, `{name:<22}` padded to a width (other formats
+/// are formatted by the caller). A placeholder without an argument stays as
+/// written, so a test can find it.
 pub fn fill(template: &str, args: &[(&str, &dyn Display)]) -> String {
     let mut out = String::with_capacity(template.len() + 16);
     for piece in pieces(template) {
         match piece {
             Piece::Text(t) => out.push_str(t),
-            Piece::Hole {
-                name,
-                plus,
-                precision,
-                whole,
-            } => match args.iter().find(|(n, _)| *n == name) {
+            Piece::Hole { name, spec, whole } => match args.iter().find(|(n, _)| *n == name) {
                 None => out.push_str(whole),
                 Some((_, v)) => {
-                    let _ = match (plus, precision) {
-                        (false, None) => write!(out, "{v}"),
-                        (true, None) => write!(out, "{v:+}"),
-                        (false, Some(p)) => write!(out, "{v:.p$}"),
-                        (true, Some(p)) => write!(out, "{v:+.p$}"),
+                    let mut s = String::new();
+                    let _ = match (spec.plus, spec.precision) {
+                        (false, None) => write!(s, "{v}"),
+                        (true, None) => write!(s, "{v:+}"),
+                        (false, Some(p)) => write!(s, "{v:.p$}"),
+                        (true, Some(p)) => write!(s, "{v:+.p$}"),
                     };
+                    let pad = spec.width.saturating_sub(s.chars().count());
+                    if spec.right {
+                        out.extend(std::iter::repeat_n(' ', pad));
+                        out.push_str(&s);
+                    } else {
+                        out.push_str(&s);
+                        out.extend(std::iter::repeat_n(' ', pad));
+                    }
                 }
             },
         }
@@ -294,6 +323,11 @@ mod tests {
             "x = 0.123 (+0.1), 3 — причина"
         );
         assert_eq!(fill("{{x}} {missing} {x", &args), "{x} {missing} {x");
+        assert_eq!(
+            fill("[{n:>3}|{why:<8}|{x:>7.2}]", &args),
+            "[  3|причина |   0.12]"
+        );
+        assert_eq!(fill("{x:?} {n:x}", &args), "{x:?} {n:x}");
         assert_eq!(placeholders("{a} {b:.2} {a} {{c}}"), ["a", "b"]);
     }
 }
