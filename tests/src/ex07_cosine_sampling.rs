@@ -148,15 +148,15 @@ fn diagnose(sample: SampleFn, seed: u64) -> String {
     // 1/18): 4.6e-4; the alternatives below lie at least 0.014 (30 standard
     // errors) apart, and each is recognised within 0.005 (10 of them).
     if (upper_phi as f64) < 0.01 * n {
-        crate::tr!("ex07.half_circle").into()
+        crate::tr!("ex07.half_circle")
     } else if empty >= 4 {
         crate::tr!("ex07.sectors", empty)
     } else if (mean_cos - 0.5).abs() < 0.005 {
-        crate::tr!("ex07.uniform").into()
+        crate::tr!("ex07.uniform")
     } else if (mean_cos - PI / 4.0).abs() < 0.005 {
-        crate::tr!("ex07.sin_uniform").into()
+        crate::tr!("ex07.sin_uniform")
     } else if (mean_cos - 0.8).abs() < 0.005 {
-        crate::tr!("ex07.cos3_mean").into()
+        crate::tr!("ex07.cos3_mean")
     } else if mean_cos > 2.0 / 3.0 {
         crate::tr!("ex07.too_many", mean_cos)
     } else {

@@ -81,7 +81,7 @@ pub fn cases() -> Vec<Case> {
     let (a, p) = phong_albedo_and_acceptance(PHONG_N as f64, grazing);
     vec![
         Case {
-            what: crate::tr!("ex09.lambert").into(),
+            what: crate::tr!("ex09.lambert"),
             brdf: Brdf::Lambert(Lambert {
                 albedo: Texture::Constant(rho),
             }),
