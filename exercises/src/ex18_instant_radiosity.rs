@@ -2,7 +2,7 @@
 //! paths, and their light gathered at a camera hit.
 //!
 //! Slides: "Instant radiosity" ("Instant radiosity"),
-//! "Clamping: smooth, but wrong" ("Отрязване: гладко, но грешно").
+//! "Clamping: smooth, but wrong" ("Ограничаване (clamping): гладко, но грешно").
 //!
 //! Instant radiosity traces N light paths once and turns their vertices into
 //! virtual point lights (VPLs); a point the camera sees is then lit by every

@@ -273,10 +273,7 @@ pub fn render_reference(c: &Comparison, progress: bool) -> Result<PathBuf, Strin
     );
     if result.stats.interrupted {
         // A partial render is no reference: the stored files stay as they were.
-        return Err(format!(
-            "{}: interrupted, the stored reference was left as it was",
-            c.name
-        ));
+        return Err(crate::tr!("compare.interrupted", name = c.name));
     }
     let (mean, variance) = reference_paths(c);
     std::fs::create_dir_all(mean.parent().unwrap()).map_err(|e| e.to_string())?;
@@ -292,9 +289,7 @@ pub fn render_reference(c: &Comparison, progress: bool) -> Result<PathBuf, Strin
 fn load_reference(c: &Comparison) -> Result<(Image, Image), String> {
     let (mean, variance) = reference_paths(c);
     let read = |p: &Path| {
-        Image::read_exr(p).map_err(|e| {
-            format!("grader: the reference {} is missing or unreadable ({e}): run `cargo run --release -p lesson11 -- references`", p.display())
-        })
+        Image::read_exr(p).map_err(|e| crate::tr!("compare.missing", path = p.display(), e))
     };
     Ok((read(&mean)?, read(&variance)?))
 }
@@ -326,9 +321,13 @@ pub fn compare_into(
     let a = render(&scene(c)?, student, &options(c.spp, seed, false, ""));
     let (ai, av) = (a.film.image(), a.film.variance_image());
     if (ai.width, ai.height) != (bi.width, bi.height) {
-        return Err(format!(
-            "grader: the reference of {} is {}×{}, not {}×{}: run `cargo run --release -p lesson11 -- references`",
-            c.name, bi.width, bi.height, ai.width, ai.height
+        return Err(crate::tr!(
+            "compare.size",
+            name = c.name,
+            rw = bi.width,
+            rh = bi.height,
+            w = ai.width,
+            h = ai.height
         ));
     }
     let z = z_test(&ai, &av, &bi, &bv, c.tile);
@@ -340,28 +339,29 @@ pub fn compare_into(
     let written = write_images(dir, c, &ai, &bi, &z.z, z.grid.x, threshold);
     let mean = |img: &Image| raytracer::metrics::mean(img);
     let mut msg = if a.film.nonfinite_count() > 0 {
-        format!(
-            "{}: {} of your samples were NaN, infinite or negative",
-            c.scene,
-            a.film.nonfinite_count()
+        crate::tr!(
+            "compare.nonfinite",
+            scene = c.scene,
+            count = a.film.nonfinite_count()
         )
     } else {
-        format!(
-            "{}: your picture differs from the reference in tile {} (|z| = {:.1} > {threshold:.1}); mean of your image {:.4}, of the reference {:.4}",
-            c.scene,
-            z.worst_tile,
-            z.max_abs_z,
-            mean(&ai).element_sum() / 3.0,
-            mean(&bi).element_sum() / 3.0
+        crate::tr!(
+            "compare.differs",
+            scene = c.scene,
+            tile = z.worst_tile,
+            z = z.max_abs_z,
+            yours = mean(&ai).element_sum() / 3.0,
+            reference = mean(&bi).element_sum() / 3.0,
+            threshold
         )
     };
     match written {
-        Ok(()) => msg.push_str(&format!(
-            "; see {}/{}_{{student,reference,z}}.png",
-            dir.display(),
-            c.name
+        Ok(()) => msg.push_str(&crate::tr!(
+            "compare.see",
+            dir = dir.display(),
+            name = c.name
         )),
-        Err(e) => msg.push_str(&format!(" (could not write the images: {e})")),
+        Err(e) => msg.push_str(&crate::tr!("compare.no_images", e)),
     }
     Err(msg)
 }

@@ -57,36 +57,30 @@ pub fn check(f: EyesFn) -> Result<(), String> {
             continue;
         }
         let p = camera.position();
-        let what = format!("camera at {}, stereo_separation {s}", fmt3(p));
+        let what = crate::tr!("ex01.what", position = fmt3(p), s);
         if close3(l, er, tol) && close3(r, el, tol) {
-            return Err(format!(
-                "{what}: left and right are swapped — your left eye sits on the side of +rightDir, where the right eye belongs"
-            ));
+            return Err(crate::tr!("ex01.swapped", what));
         }
         let dist = (r - l).length();
         if (dist - s).abs() > 1e-4 * s {
             let why = if (dist - 2.0 * s).abs() <= 1e-4 * s {
-                ": twice too far apart — each eye moved by the whole separation"
+                crate::tr!("ex01.twice")
             } else if (dist - 0.5 * s).abs() <= 1e-4 * s {
-                ": half the separation — each eye moved by a quarter of it"
+                crate::tr!("ex01.half")
             } else {
-                ""
+                String::new()
             };
-            return Err(format!(
-                "{what}: your eyes are {dist:.4} apart, stereo_separation is {s}{why}"
-            ));
+            return Err(crate::tr!("ex01.distance", what, dist, s, why));
         }
         let mid = 0.5 * (l + r);
         if !close3(mid, p, tol) {
-            return Err(format!(
-                "{what}: the midpoint of your eyes is {}, not the camera position — the pair is shifted",
-                fmt3(mid)
-            ));
+            return Err(crate::tr!("ex01.shifted", what, mid = fmt3(mid)));
         }
-        return Err(format!(
-            "{what}: your eyes are offset along {}, which is not the camera's rightDir {}",
-            fmt3((r - l) / dist),
-            fmt3(camera.right_dir())
+        return Err(crate::tr!(
+            "ex01.direction",
+            what,
+            offset = fmt3((r - l) / dist),
+            right = fmt3(camera.right_dir())
         ));
     }
     Ok(())

@@ -42,30 +42,31 @@ pub fn check(f: AnaglyphFn) -> Result<(), String> {
         if close3(got, want, 1e-4) {
             continue;
         }
-        let what = format!(
-            "left {}, right {}, desaturation {d}: yours {}, expected {}",
-            fmt3(left),
-            fmt3(right),
-            fmt3(got),
-            fmt3(want)
+        let what = crate::tr!(
+            "ex02.what",
+            left = fmt3(left),
+            right = fmt3(right),
+            d,
+            got = fmt3(got),
+            want = fmt3(want)
         );
         let (l, r) = (desaturate(left, d), desaturate(right, d));
         let why = if close3(got, Color::new(r.x, l.y, l.z), 1e-4) {
-            "the channels are swapped: your red comes from the right frame and your green and blue from the left, but the red filter is over the left eye".to_string()
+            crate::tr!("ex02.swapped")
         } else if close3(got, expected(left, right, 1.0 - d), 1e-4) {
-            "the desaturation is reversed: your colours are greyest where d is smallest".to_string()
+            crate::tr!("ex02.reversed")
         } else if close3(got, expected(left, right, 0.0), 1e-4) {
-            "the colours were not desaturated: your pixel is the same whatever d is".to_string()
+            crate::tr!("ex02.not_desaturated")
         } else {
             let avg = |c: Color| c.lerp(Color::splat((c.x + c.y + c.z) / 3.0), d);
             let (la, ra) = (avg(left), avg(right));
             if close3(got, Color::new(la.x, ra.y, ra.z), 1e-4) {
-                "your grey is the plain average of the three channels, not the luminance Y(c) of the stub (the eye weighs green far more than blue)".to_string()
+                crate::tr!("ex02.average")
             } else {
-                let bad: Vec<&str> = [
-                    "red (the left eye's)",
-                    "green (the right eye's)",
-                    "blue (the right eye's)",
+                let bad: Vec<String> = [
+                    crate::tr!("ex02.red"),
+                    crate::tr!("ex02.green"),
+                    crate::tr!("ex02.blue"),
                 ]
                 .into_iter()
                 .enumerate()
@@ -76,19 +77,20 @@ pub fn check(f: AnaglyphFn) -> Result<(), String> {
                     .into_iter()
                     .filter(|c| c.2 == 0.0)
                     .all(|(l0, r0, _)| close3(f(l0, r0, 0.0), expected(l0, r0, 0.0), 1e-4));
-                format!(
-                    "wrong in the {} channel{}; {}",
-                    bad.join(" and "),
-                    if bad.len() > 1 { "s" } else { "" },
-                    if plain {
-                        "the cases with d = 0 pass, so the filters are right and the desaturation is not"
-                    } else {
-                        "wrong with d = 0 too, so the filters' mixing itself is wrong"
-                    }
-                )
+                let channels = bad.join(&crate::tr!("ex02.and"));
+                let why = if plain {
+                    crate::tr!("ex02.filters_right")
+                } else {
+                    crate::tr!("ex02.filters_wrong")
+                };
+                if bad.len() > 1 {
+                    crate::tr!("ex02.wrong_channels", channels, why)
+                } else {
+                    crate::tr!("ex02.wrong_channel", channels, why)
+                }
             }
         };
-        return Err(format!("{what} — {why}"));
+        return Err(crate::tr!("ex02.failure", what, why));
     }
     Ok(())
 }

@@ -34,23 +34,19 @@ pub fn check(f: LambertFn) -> Result<(), String> {
     if (albedo - 1.0).abs() >= 1e-3 {
         let r = albedo as f64;
         let why = if ratio_near(r, PI as f64) {
-            " — too bright by ×π: the constant that the integral over the hemisphere brings (a factor π) is missing".to_string()
+            crate::tr!("ex03.pi")
         } else if ratio_near(r, 2.0 / 3.0) {
-            " — your f_r seems to contain cos θ_i, so the cosine counts twice: the cosine belongs to the integrator, not the BRDF".to_string()
+            crate::tr!("ex03.cos_twice")
         } else if ratio_near(r, 1.0 / PI as f64) {
-            " — too dark by ×1/π: divided by π twice?".to_string()
+            crate::tr!("ex03.pi_twice")
         } else if ratio_near(r, 0.5) {
-            " — half the light is lost: as if the integral of the cosine over the hemisphere were 2π".to_string()
+            crate::tr!("ex03.half")
         } else if albedo > 1.0 {
-            format!(
-                " — too bright by ×{albedo:.3}: the surface reflects more light than it receives"
-            )
+            crate::tr!("ex03.brighter", albedo)
         } else {
-            format!(" — too dark by ×{albedo:.3}: a white surface must reflect all the light")
+            crate::tr!("ex03.darker", albedo)
         };
-        return Err(format!(
-            "the directional albedo of your Lambert (white texture) is {albedo:.3}, expected 1{why}"
-        ));
+        return Err(crate::tr!("ex03.albedo", albedo, why));
     }
     // The texture is looked up at uv.
     let a = Color::new(0.9, 0.1, 0.1);
@@ -68,17 +64,19 @@ pub fn check(f: LambertFn) -> Result<(), String> {
             let why = if close3(got, f(&checker, Vec2::ZERO, wo, wi), 1e-4)
                 && close3(got, checker.eval(Vec2::ZERO) / PI, 1e-4)
             {
-                "your f_r has the colour of the texture at uv = (0, 0), not at the point's uv"
+                crate::tr!("ex03.uv_zero")
             } else if close3(got, other / PI, 1e-4) {
-                "your f_r has the colour of the other square of the checker: the texture is looked up at another point than uv"
+                crate::tr!("ex03.other_square")
             } else {
-                "your f_r does not follow the texture's colour at this point (the white texture passed, so the constant is right)"
+                crate::tr!("ex03.not_texture")
             };
-            return Err(format!(
-                "checker texture at uv = {uv}, whose colour there is {}: your f_r is {}, π·f_r = {} — {why}",
-                fmt3(c),
-                fmt3(got),
-                fmt3(got * PI)
+            return Err(crate::tr!(
+                "ex03.checker",
+                uv,
+                colour = fmt3(c),
+                got = fmt3(got),
+                pi_got = fmt3(got * PI),
+                why
             ));
         }
     }
@@ -87,11 +85,11 @@ pub fn check(f: LambertFn) -> Result<(), String> {
     for (o, i) in [(wo, below), (below, wi)] {
         let got = f(&Texture::Constant(Color::ONE), Vec2::ZERO, o, i);
         if got != Color::ZERO {
-            return Err(format!(
-                "wo = {}, wi = {}: your f_r is {}, not black — light from below the surface, or leaving below it (z ≤ 0), is reflected by yours",
-                fmt3(o),
-                fmt3(i),
-                fmt3(got)
+            return Err(crate::tr!(
+                "ex03.below",
+                wo = fmt3(o),
+                wi = fmt3(i),
+                got = fmt3(got)
             ));
         }
     }

@@ -50,47 +50,25 @@ fn check_normalization(s: NormFn) -> Result<(), String> {
         return Ok(());
     };
     let mistakes: [Mistake<f32, f32>; 7] = [
-        (
-            "(n+1)/(2π) makes ∫ S(n) cos^n θ dω = 1, a probability density without the cosine θ_i of the albedo: the albedo at normal incidence becomes (n+1)/(n+2)·ρ_s < ρ_s — energy is lost",
-            &|&n| (n + 1.0) * INV_2PI,
-        ),
-        (
-            "an unnormalized lobe (S = 1): its albedo at normal incidence is 2π/(n+2), far below 1 for large n",
-            &|_| 1.0,
-        ),
-        (
-            "you returned the integral ∫ cos^{n+1} θ dω itself, not the constant that makes S(n) times it equal 1",
-            &|&n| 1.0 / expected_s(n),
-        ),
-        (
-            "twice too large in every case: as if the integral over φ gave π, half a turn",
-            &|&n| (n + 2.0) * 2.0 * INV_2PI,
-        ),
-        (
-            "half the right value in every case: as if the integral ran over the whole sphere of directions, not the hemisphere above the surface",
-            &|&n| (n + 2.0) * 0.5 * INV_2PI,
-        ),
-        (
-            "too large by ×π in every case: a missing π (the integral over φ of a full turn brings it)",
-            &|&n| (n + 2.0) * 0.5,
-        ),
-        (
-            "right at integer exponents only: your n was rounded to an integer, but a lobe's exponent is any real n ≥ 0 (see n = 0.5, 3.7, 42.5)",
-            &|&n| (n.trunc() + 2.0) * INV_2PI,
-        ),
+        (&crate::tr!("ex04.s_density"), &|&n| (n + 1.0) * INV_2PI),
+        (&crate::tr!("ex04.s_unnormalized"), &|_| 1.0),
+        (&crate::tr!("ex04.s_integral"), &|&n| 1.0 / expected_s(n)),
+        (&crate::tr!("ex04.s_twice"), &|&n| (n + 2.0) * 2.0 * INV_2PI),
+        (&crate::tr!("ex04.s_half"), &|&n| (n + 2.0) * 0.5 * INV_2PI),
+        (&crate::tr!("ex04.s_pi"), &|&n| (n + 2.0) * 0.5),
+        (&crate::tr!("ex04.s_integer"), &|&n| {
+            (n.trunc() + 2.0) * INV_2PI
+        }),
     ];
     let n = EXPONENTS[k];
-    let why =
-        recognise(&EXPONENTS, &got, &mistakes, |g, a| close(g, a, 1e-4)).unwrap_or_else(|| {
-            format!(
-                "with it the albedo at normal incidence would be {:.3}·ρ_s instead of ρ_s",
-                got[k] / expected_s(n)
-            )
-        });
-    Err(format!(
-        "S({n}) is {}, expected {} — {why}",
-        got[k],
-        expected_s(n)
+    let why = recognise(&EXPONENTS, &got, &mistakes, |g, a| close(g, a, 1e-4))
+        .unwrap_or_else(|| crate::tr!("ex04.s_albedo", ratio = got[k] / expected_s(n)));
+    Err(crate::tr!(
+        "ex04.s",
+        n,
+        got = got[k],
+        want = expected_s(n),
+        why
     ))
 }
 
@@ -131,47 +109,30 @@ fn check_eval(f: PhongFn) -> Result<(), String> {
     };
     let c = &cases[k];
     let mistakes: [Mistake<Case, Color>; 8] = [
-        (
-            "your f_r is not zero where cos α < 0 (more than 90° from the mirror direction): a negative cosine went into the power",
-            &|c| albedo * expected_s(c.n) * mirror_z(c.wo).dot(c.wi).abs().powf(c.n),
-        ),
-        (
-            "ρ_s is missing: your lobe is that of a white surface",
-            &|c| want(c) / albedo,
-        ),
-        ("S(n) is missing: your lobe is not normalized", &|c| {
-            want(c) / expected_s(c.n)
+        (&crate::tr!("ex04.f_negative"), &|c| {
+            albedo * expected_s(c.n) * mirror_z(c.wo).dot(c.wi).abs().powf(c.n)
         }),
-        (
-            "your lobe is centred on ω_o itself: α is measured from its MIRROR direction",
-            &|c| lobe(albedo, c.n, c.wo.dot(c.wi)),
-        ),
-        (
-            "your cos α is wi.z, the angle from the normal: α is measured from the mirror direction of wo (reflect(ω_o)), which is the normal only at normal incidence",
-            &|c| lobe(albedo, c.n, c.wi.z),
-        ),
-        (
-            "you mirrored −ω_i, the lecture's incoming direction: here ω_i points away from the surface, and the angle is between ω_i and reflect(ω_o)",
-            &|c| lobe(albedo, c.n, -mirror_z(c.wo).dot(c.wi)),
-        ),
-        (
-            "you raised S(n)·cos α to the power n, not the cosine alone",
-            &|c| {
-                let cos_a = mirror_z(c.wo).dot(c.wi);
-                if cos_a <= 0.0 {
-                    Color::ZERO
-                } else {
-                    albedo * (expected_s(c.n) * cos_a).powf(c.n)
-                }
-            },
-        ),
-        (
-            "right at integer exponents only: the power was taken of an exponent rounded to an integer (n = 2.5 fails)",
-            &|c| {
-                lobe(albedo, c.n.trunc(), mirror_z(c.wo).dot(c.wi))
-                    * (expected_s(c.n) / expected_s(c.n.trunc()))
-            },
-        ),
+        (&crate::tr!("ex04.f_albedo"), &|c| want(c) / albedo),
+        (&crate::tr!("ex04.f_s"), &|c| want(c) / expected_s(c.n)),
+        (&crate::tr!("ex04.f_wo"), &|c| {
+            lobe(albedo, c.n, c.wo.dot(c.wi))
+        }),
+        (&crate::tr!("ex04.f_normal"), &|c| lobe(albedo, c.n, c.wi.z)),
+        (&crate::tr!("ex04.f_minus_wi"), &|c| {
+            lobe(albedo, c.n, -mirror_z(c.wo).dot(c.wi))
+        }),
+        (&crate::tr!("ex04.f_power"), &|c| {
+            let cos_a = mirror_z(c.wo).dot(c.wi);
+            if cos_a <= 0.0 {
+                Color::ZERO
+            } else {
+                albedo * (expected_s(c.n) * cos_a).powf(c.n)
+            }
+        }),
+        (&crate::tr!("ex04.f_integer"), &|c| {
+            lobe(albedo, c.n.trunc(), mirror_z(c.wo).dot(c.wi))
+                * (expected_s(c.n) / expected_s(c.n.trunc()))
+        }),
     ];
     // A negative cosine raised to a non-integer power is NaN.
     let negative_power = cases
@@ -179,18 +140,19 @@ fn check_eval(f: PhongFn) -> Result<(), String> {
         .zip(&got)
         .any(|(c, g)| !g.is_finite() && mirror_z(c.wo).dot(c.wi) < 0.0);
     let why = if negative_power {
-        Some("your f_r is not zero where cos α < 0 (more than 90° from the mirror direction), and NaN there at n = 2.5: a negative cosine went into the power".to_string())
+        Some(crate::tr!("ex04.f_nan"))
     } else {
         recognise(&cases, &got, &mistakes, |g, a| close3(g, a, 1e-3))
     }
     .unwrap_or_else(|| symptom(&cases, &got, &want));
-    Err(format!(
-        "n = {}, wo = {}, wi = {}: your f_r is {}, expected {} — {why}",
-        c.n,
-        fmt3(c.wo),
-        fmt3(c.wi),
-        fmt3(got[k]),
-        fmt3(want(c))
+    Err(crate::tr!(
+        "ex04.f",
+        n = c.n,
+        wo = fmt3(c.wo),
+        wi = fmt3(c.wi),
+        got = fmt3(got[k]),
+        want = fmt3(want(c)),
+        why
     ))
 }
 
@@ -206,9 +168,7 @@ fn symptom(cases: &[Case], got: &[Color], want: &dyn Fn(&Case) -> Color) -> Stri
         .collect();
     let k = ratios.first().copied().unwrap_or(1.0);
     if ratios.iter().all(|r| (r / k - 1.0).abs() < 1e-3) {
-        return format!(
-            "your f_r is ×{k:.4} the right one in every case: the lobe's shape is right, its scale is not"
-        );
+        return crate::tr!("ex04.scale", k);
     }
     let peak = cases
         .iter()
@@ -216,10 +176,8 @@ fn symptom(cases: &[Case], got: &[Color], want: &dyn Fn(&Case) -> Color) -> Stri
         .filter(|(c, _)| (mirror_z(c.wo).dot(c.wi) - 1.0).abs() < 1e-6)
         .all(|(c, g)| close3(*g, want(c), 1e-3));
     if peak {
-        "right at the mirror direction but wrong away from it: the lobe's fall-off with α is wrong"
-            .to_string()
+        crate::tr!("ex04.peak_right")
     } else {
-        "wrong at the mirror direction already, where cos α = 1 and only the constants count"
-            .to_string()
+        crate::tr!("ex04.peak_wrong")
     }
 }

@@ -46,31 +46,25 @@ pub fn check(sample: SampleFn, pdf: PdfFn) -> Result<(), String> {
         if !(close(got, want, 1e-4) || (want == 0.0 && got == 0.0)) {
             let c = w.z.max(0.0);
             let why = if close(got, 0.5 * INV_PI, 1e-4) {
-                "1/(2π) is the density of UNIFORM hemisphere sampling".to_string()
+                crate::tr!("ex07.uniform_pdf")
             } else if want == 0.0 {
-                "on and below the horizon (w.z ≤ 0) the directions are never drawn, so their density is 0".to_string()
+                crate::tr!("ex07.below_pdf")
             } else if close(got, w.z, 1e-4) {
-                format!(
-                    "your density is cos θ itself: it integrates to {:.4} over the hemisphere, not 1 — a missing normalization",
-                    std::f64::consts::PI
-                )
+                crate::tr!("ex07.cos_itself", integral = std::f64::consts::PI)
             } else if close(got, c * c * c * INV_PI, 1e-4) {
-                "your density falls off as cos³θ, two powers of cos θ too fast (it integrates to 0.5 over the hemisphere): lifting a disk point straight up onto the hemisphere changes area by a single cos θ — cos³θ is the change of measure onto a plane at unit distance, as for a camera's film".to_string()
+                crate::tr!("ex07.cos3")
             } else {
-                format!(
-                    "your density integrates to {:.4} over the hemisphere{}",
-                    pdf_integral(pdf),
-                    if close(got / c, pdf(Vec3A::Z), 1e-3) {
-                        ""
+                crate::tr!(
+                    "ex07.integrates",
+                    integral = pdf_integral(pdf),
+                    proportional = if close(got / c, pdf(Vec3A::Z), 1e-3) {
+                        String::new()
                     } else {
-                        ", and is not proportional to cos θ"
+                        crate::tr!("ex07.not_proportional")
                     }
                 )
             };
-            return Err(format!(
-                "cosine_hemisphere_pdf({}) is {got}, expected {want} — {why}",
-                fmt3(w)
-            ));
+            return Err(crate::tr!("ex07.pdf", w = fmt3(w), got, want, why));
         }
     }
     // 2. Unit directions in the upper hemisphere.
@@ -80,10 +74,11 @@ pub fn check(sample: SampleFn, pdf: PdfFn) -> Result<(), String> {
             let u = Vec2::new(i as f32 / n as f32, j as f32 / n as f32);
             let w = sample(u);
             if !((w.length() - 1.0).abs() < 1e-4 && w.z >= 0.0) {
-                return Err(format!(
-                    "sample_cosine_hemisphere({u}) is {} (length {:.4}): expected a unit vector with z ≥ 0",
-                    fmt3(w),
-                    w.length()
+                return Err(crate::tr!(
+                    "ex07.not_unit",
+                    got = fmt3(w),
+                    length = w.length(),
+                    u
                 ));
             }
         }
@@ -98,10 +93,11 @@ pub fn check(sample: SampleFn, pdf: PdfFn) -> Result<(), String> {
     if let Err(e) = test.run(|u, _| Some(sample(u)), expected_pdf) {
         let first = e.lines().next().unwrap_or_default();
         let first = first.split(" Worst cells").next().unwrap_or(first);
-        return Err(format!(
-            "your directions' density is not proportional to cos θ — {} ({first}){}",
-            diagnose(sample, test.seed),
-            write_picture(sample, test.seed)
+        return Err(crate::tr!(
+            "ex07.chi2",
+            diagnosis = diagnose(sample, test.seed),
+            picture = write_picture(sample, test.seed),
+            first
         ));
     }
     Ok(())
@@ -152,25 +148,19 @@ fn diagnose(sample: SampleFn, seed: u64) -> String {
     // 1/18): 4.6e-4; the alternatives below lie at least 0.014 (30 standard
     // errors) apart, and each is recognised within 0.005 (10 of them).
     if (upper_phi as f64) < 0.01 * n {
-        "half of the circle is empty (no φ ≥ π): your φ covers only half a turn".into()
+        crate::tr!("ex07.half_circle")
     } else if empty >= 4 {
-        format!(
-            "{empty} of 16 sectors of φ are (nearly) empty: your φ does not go all the way round"
-        )
+        crate::tr!("ex07.sectors", empty)
     } else if (mean_cos - 0.5).abs() < 0.005 {
-        "cos θ is uniform (its mean is 0.50): those are UNIFORM directions over the hemisphere; the density must grow with cos θ (mean 2/3)".into()
+        crate::tr!("ex07.uniform")
     } else if (mean_cos - PI / 4.0).abs() < 0.005 {
-        "the mean of cos θ is π/4 ≈ 0.785, not 2/3: sin θ (the radius of the disk point under the direction) is uniformly distributed in yours, so the directions crowd the normal — sin θ not squared (the area of a ring of the disk grows with its radius)".into()
+        crate::tr!("ex07.sin_uniform")
     } else if (mean_cos - 0.8).abs() < 0.005 {
-        "the mean of cos θ is 0.80, as for a density proportional to cos³θ, not cos θ: your directions crowd the normal too much".into()
+        crate::tr!("ex07.cos3_mean")
     } else if mean_cos > 2.0 / 3.0 {
-        format!(
-            "too many directions near the normal: the mean of cos θ is {mean_cos:.3}, expected 2/3"
-        )
+        crate::tr!("ex07.too_many", mean_cos)
     } else {
-        format!(
-            "too few directions near the normal: the mean of cos θ is {mean_cos:.3}, expected 2/3"
-        )
+        crate::tr!("ex07.too_few", mean_cos)
     }
 }
 
@@ -202,10 +192,7 @@ fn write_picture(sample: SampleFn, seed: u64) -> String {
     let written =
         std::fs::create_dir_all(output_dir()).and_then(|()| write_histograms(&histograms, &path));
     match written {
-        Ok(()) => format!(
-            "; see {}: top, cos θ of your directions (grey) against the distribution they should have (red); below, φ against the uniform one",
-            path.display()
-        ),
-        Err(e) => format!(" (could not write the histograms: {e})"),
+        Ok(()) => crate::tr!("ex07.see", file = path.display()),
+        Err(e) => crate::tr!("ex07.no_picture", e),
     }
 }

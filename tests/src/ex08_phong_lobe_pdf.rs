@@ -49,55 +49,50 @@ pub fn check(pdf: PdfFn) -> Result<(), String> {
     {
         let sin = |t: f32| (1.0 - t * t).max(0.0).sqrt();
         let mistakes: [Mistake<(f32, f32), f32>; 7] = [
-            (
-                "(n+2)/(2π) cos^n α is S(n), the BRDF's normalization (exercise 4): that makes ∫ p cos θ dω = 1 at normal incidence; a density must make ∫ p dω = 1, without the cosine",
-                &|&(n, t)| (n + 2.0) * INV_2PI * t.powf(n),
-            ),
-            (
-                "too large by ×2π: (n+1) cos^n α is the density of t = cos α alone; the spread of the directions over φ is missing",
-                &|&(n, t)| (n + 1.0) * t.powf(n),
-            ),
-            (
-                "that is a density per dα dφ: it carries the sin α of dω = sin α dα dφ (and vanishes on the axis, where the warp puts the most directions), so it is not per unit solid angle",
-                &|&(n, t)| (n + 1.0) * INV_2PI * t.powf(n) * sin(t),
-            ),
-            (
-                "one power of cos α too many: your density goes as cos^{n+1} α, the warp's as a lower power",
-                &|&(n, t)| (n + 1.0) * INV_2PI * t.powf(n + 1.0),
-            ),
-            (
-                "n t^{n−1}/(2π) is the derivative of the lobe cos^n α itself, not of the distribution function of the cos α the warp produces",
-                &|&(n, t)| n * INV_2PI * t.powf(n - 1.0),
-            ),
-            (
-                "1/(2π) is the density of UNIFORM directions over the hemisphere (the warp with n = 0)",
-                &|_| INV_2PI,
-            ),
-            (
-                "too large by ×π in every case: a missing π (the integral over φ of a full turn brings one)",
-                &|&(n, t)| (n + 1.0) * 0.5 * t.powf(n),
-            ),
+            (&crate::tr!("ex08.s_n"), &|&(n, t)| {
+                (n + 2.0) * INV_2PI * t.powf(n)
+            }),
+            (&crate::tr!("ex08.two_pi"), &|&(n, t)| (n + 1.0) * t.powf(n)),
+            (&crate::tr!("ex08.d_alpha"), &|&(n, t)| {
+                (n + 1.0) * INV_2PI * t.powf(n) * sin(t)
+            }),
+            (&crate::tr!("ex08.power"), &|&(n, t)| {
+                (n + 1.0) * INV_2PI * t.powf(n + 1.0)
+            }),
+            (&crate::tr!("ex08.derivative"), &|&(n, t)| {
+                n * INV_2PI * t.powf(n - 1.0)
+            }),
+            (&crate::tr!("ex08.uniform"), &|_| INV_2PI),
+            (&crate::tr!("ex08.pi"), &|&(n, t)| {
+                (n + 1.0) * 0.5 * t.powf(n)
+            }),
         ];
         let (n, t) = cases[k];
-        let why = recognise(&cases, &got, &mistakes, |g, a| close(g, a, 1e-4)).unwrap_or_else(|| {
-            format!(
-                "over all directions your density integrates to {:.4} for n = {n}, and a density must integrate to 1",
-                integral(pdf, n)
-            )
-        });
-        return Err(format!(
-            "phong_lobe_pdf(n = {n}, cos α = {t}) is {}, expected {} — {why}",
-            got[k],
-            expected(n, t)
+        let why = recognise(&cases, &got, &mistakes, |g, a| close(g, a, 1e-4))
+            .unwrap_or_else(|| crate::tr!("ex08.integral", integral = integral(pdf, n), n));
+        return Err(crate::tr!(
+            "ex08.pdf",
+            got = got[k],
+            want = expected(n, t),
+            n,
+            t,
+            why
         ));
     }
     // The edge: directions the warp never produces have density 0.
     for (n, t) in [(10.0, 0.0), (10.0, -0.4), (2.5, -0.9), (0.0, -1.0)] {
         let g = pdf(n, t);
         if g != 0.0 {
-            return Err(format!(
-                "phong_lobe_pdf(n = {n}, cos α = {t}) is {g}, expected 0 — the warp gives cos α = u₁^(1/(n+1)) > 0, so directions with cos α ≤ 0 have density 0 (a negative cosine raised to a power is not a density{})",
-                if g.is_nan() { ": here it is NaN" } else { "" }
+            return Err(crate::tr!(
+                "ex08.below",
+                nan = if g.is_nan() {
+                    crate::tr!("ex08.nan")
+                } else {
+                    String::new()
+                },
+                n,
+                t,
+                g
             ));
         }
     }

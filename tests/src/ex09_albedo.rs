@@ -81,7 +81,7 @@ pub fn cases() -> Vec<Case> {
     let (a, p) = phong_albedo_and_acceptance(PHONG_N as f64, grazing);
     vec![
         Case {
-            what: "Lambert ρ = (0.8, 0.5, 0.2), wo at 37°".into(),
+            what: crate::tr!("ex09.lambert"),
             brdf: Brdf::Lambert(Lambert {
                 albedo: Texture::Constant(rho),
             }),
@@ -91,7 +91,7 @@ pub fn cases() -> Vec<Case> {
         },
         Case {
             // At normal incidence the normalized Phong's albedo is exactly ρ_s.
-            what: format!("Phong ρ_s = {PHONG_RHO}, n = {PHONG_N}, wo = normal"),
+            what: crate::tr!("ex09.phong_normal", PHONG_RHO, PHONG_N),
             brdf: phong.clone(),
             wo: Vec3A::Z,
             exact: Color::splat(PHONG_RHO),
@@ -99,10 +99,12 @@ pub fn cases() -> Vec<Case> {
             accepted: 1.0,
         },
         Case {
-            what: format!(
-                "Phong ρ_s = {PHONG_RHO}, n = {PHONG_N}, wo at 75° (exact albedo {:.4} < ρ_s: part of the lobe is below the horizon; {:.0}% of its BRDF samples are refused)",
-                PHONG_RHO as f64 * a,
-                100.0 * (1.0 - p)
+            what: crate::tr!(
+                "ex09.phong_75",
+                exact = PHONG_RHO as f64 * a,
+                refused = 100.0 * (1.0 - p),
+                PHONG_RHO,
+                PHONG_N
             ),
             brdf: phong,
             wo: grazing,
@@ -113,7 +115,7 @@ pub fn cases() -> Vec<Case> {
 }
 
 /// What the usual mistakes converge to in `case`, with their names.
-fn mistakes(case: &Case) -> Vec<(Color, &'static str)> {
+fn mistakes(case: &Case) -> Vec<(Color, String)> {
     let n = SAMPLES as f32;
     // ∫ f_r dω_i over the upper hemisphere: 2ρ for Lambert; for the
     // normalized Phong ρ_s (n+2)/(n+1) times the share of its lobe above the
@@ -125,34 +127,19 @@ fn mistakes(case: &Case) -> Vec<(Color, &'static str)> {
         _ => case.exact * 2.0,
     };
     let mut named = vec![
-        (
-            brdf_integral,
-            "the cosine θ_i is missing: your mean is the integral of f_r alone over the hemisphere (for Lambert twice the albedo)",
-        ),
-        (
-            brdf_integral * case.wo.z,
-            "the cosine in your weights is that of ω_o, the fixed viewing direction, not cos θ_i of each drawn ω_i: your mean is cos θ_o times the integral of f_r (the slide's bound runs over ω_o, this integral over ω_i)",
-        ),
-        (
-            case.exact * (n / (n - 1.0)),
-            "you divided by N − 1: the mean is too bright by N/(N − 1)",
-        ),
+        (brdf_integral, crate::tr!("ex09.no_cos")),
+        (brdf_integral * case.wo.z, crate::tr!("ex09.cos_o")),
+        (case.exact * (n / (n - 1.0)), crate::tr!("ex09.n_minus_1")),
     ];
     if case.accepted < 1.0 {
         // Dividing by the number K of accepted draws: E[Σ v / K; K > 0]
         // = E[v | accepted] · P(K > 0) = (ρ/p) · (1 − (1 − p)^N).
         let p = case.accepted;
         let left_out = (1.0 - (1.0 - p).powi(SAMPLES as i32)) / p;
-        named.push((
-            case.exact * left_out as f32,
-            "a refused draw (Brdf::sample returned None) still counts: it is one of the N draws, with value 0 — you divided by the number of accepted ones",
-        ));
+        named.push((case.exact * left_out as f32, crate::tr!("ex09.refused")));
     }
-    named.push((case.exact / n, "too dark by ×1/N: divided by N twice?"));
-    named.push((
-        case.exact * n,
-        "too bright by ×N: the sum over the draws is not divided by their number",
-    ));
+    named.push((case.exact / n, crate::tr!("ex09.twice_n")));
+    named.push((case.exact * n, crate::tr!("ex09.times_n")));
     named
 }
 
@@ -205,7 +192,7 @@ pub fn check(f: AlbedoFn) -> Result<(), String> {
             .or(here.first())
             .map(|&m| list[m].1.to_string());
         stats.check(
-            &format!("directional albedo of {}", case.what),
+            &crate::tr!("ex09.what", case = case.what),
             case.exact,
             |r| {
                 advice.clone().or_else(|| {
@@ -214,11 +201,18 @@ pub fn check(f: AlbedoFn) -> Result<(), String> {
                             && (ratio_near(r, 2.0 / (3.0 * std::f64::consts::PI))
                                 || ratio_near(r, 1.0 / (2.0 * std::f64::consts::PI)))
                         {
-                            "too dark by about ×1/π or ×1/(2π): the contributions are not divided by the density of their directions".to_string()
+                            crate::tr!("ex09.no_pdf")
                         } else if r > 1.0 {
-                            format!("too bright by ×{r:.3}{}", if r * case.exact.max_element() as f64 > 1.0 { ": an albedo above 1 creates energy" } else { "" })
+                            {
+                                let energy = if r * case.exact.max_element() as f64 > 1.0 {
+                                    crate::tr!("ex09.creates_energy")
+                                } else {
+                                    String::new()
+                                };
+                                crate::tr!("ex09.brighter", r, energy)
+                            }
                         } else {
-                            format!("too dark by ×{r:.3}")
+                            crate::tr!("ex09.darker", r)
                         },
                     )
                 })

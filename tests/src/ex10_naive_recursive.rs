@@ -102,37 +102,29 @@ pub fn alternating_series_text(d: u32) -> String {
 
 /// The message for a furnace whose mean is the alternating series.
 pub fn signed_cosine_message(d: u32) -> String {
-    format!(
-        "your mean is {:.4} = {}: the sign alternates with every bounce — a signed cos θ_i. Inside the furnace you see the wall from its back side (wo.z < 0), where the sampled wi.z < 0 too, and your cosine turns negative there",
-        series(d, -RHO),
-        alternating_series_text(d)
+    crate::tr!(
+        "ex10.signed_cosine",
+        mean = series(d, -RHO),
+        series = alternating_series_text(d)
     )
 }
 
 /// The message for a depth off by one.
 pub fn depth_message(d: u32, more: bool) -> String {
-    format!(
-        "your mean is that of max_depth {}: max_depth D counts the segments of a path — D = 1 shows only the emitters seen directly, D = 2 direct light, at most D − 1 bounces",
-        if more { d + 1 } else { d - 1 }
-    )
+    crate::tr!("ex10.depth", depth = if more { d + 1 } else { d - 1 })
 }
 
 /// The message for a cosine with the sign of the other convention, seen
 /// where the BRDF is seen from the front (wo.z > 0): the mean is minus the
 /// answer, `exact`.
 pub fn other_sign_message(mean: f64) -> String {
-    format!(
-        "your mean is {mean:.4}, the right answer with the sign flipped: negative radiance. Your cos θ_i is negative where the surface is seen from the front — the lecture's (−ω_i·n) is written for its ω_i pointing INTO the surface; ours points away from it (slide \"The lecture's ωᵢ and ours\")"
-    )
+    crate::tr!("ex10.other_sign", mean)
 }
 
 /// The message for a cosine left out of the weights, in the emitting
 /// furnace (ρ = 0.5: every bounce then passes 2ρ = 1 of the light).
 pub fn missing_cosine_message(d: u32) -> String {
-    format!(
-        "your mean is about {:.4} = {d}·L_e, as if every bounce reflected all the light, though ρ = 0.5: the cosine θ_i is missing from the weights (without it a Lambert wall's ρ/π integrates to 2ρ over the hemisphere)",
-        series(d, 2.0 * RHO)
-    )
+    crate::tr!("ex10.no_cosine", mean = series(d, 2.0 * RHO), d)
 }
 
 /// Whether every channel of the mean lies within `tol` (relative) of
@@ -151,17 +143,12 @@ fn mistakes(d: u32, n: u32) -> Vec<(Option<f64>, String)> {
         (Some(series(d + 1, RHO)), depth_message(d, true)),
         (
             Some(series(d, n as f64 * RHO)),
-            format!(
-                "your mean is L_e(1 + Nρ + (Nρ)² + …): the N = {n} branches are summed, not averaged — each level is N times too bright"
-            ),
+            crate::tr!("ex10.summed", n),
         ),
         // One bounce too few: at D = 1 a stop at `depth + 2 ≥ max_depth`
         // still gives L_e, so the mistake is seen from D = 2 on.
         ((d > 1).then(|| series(d - 1, RHO)), depth_message(d, false)),
-        (
-            Some(LE),
-            "your mean is L_e alone: only the camera ray's hit adds its emission — the emission of the deeper hits is missing".to_string(),
-        ),
+        (Some(LE), crate::tr!("ex10.first_only")),
         (Some(series(d, 2.0 * RHO)), missing_cosine_message(d)),
     ]
 }
@@ -206,16 +193,16 @@ pub fn check(f: NaiveFn) -> Result<(), String> {
             .or(here.first())
             .map(|(_, (_, why))| why.clone());
         stats.check(
-            &format!("emitting furnace (L_e = 0.5, ρ = 0.5), max_depth {d}, branching {n}: L = L_e(1 + ρ + … + ρ^(D−1))"),
+            &crate::tr!("ex10.furnace", d, n),
             Color::splat(exact as f32),
             |r| {
                 advice.clone().or_else(|| {
                     Some(if d == 1 {
-                        format!("×{r:.3} at max_depth 1, where only the emission of the camera ray's hit counts and nothing is reflected")
+                        crate::tr!("ex10.depth_one", r)
                     } else if r > 1.0 {
-                        format!("too bright by ×{r:.3} at max_depth {d}: the reflected light is too strong")
+                        crate::tr!("ex10.brighter", r, d)
                     } else {
-                        format!("too dark by ×{r:.3} at max_depth {d}: light is lost in the reflections, or the recursion stops too soon")
+                        crate::tr!("ex10.darker", r, d)
                     })
                 })
             },
@@ -223,18 +210,14 @@ pub fn check(f: NaiveFn) -> Result<(), String> {
     }
     let grey = grey_sphere()?;
     let stats = camera_estimates(&grey, 89, ESTIMATES, |ray, s| f(&grey, &ray, 0, 3, 2, s));
-    stats.check(
-        "grey Lambert sphere (ρ = 0.5) under a sky of 1, every camera ray on the sphere, max_depth 3, branching 2: L = ρ",
-        Color::splat(GREY as f32),
-        |r| Some(sky_symptom(r, stats.mean()[0])),
-    )?;
+    stats.check(&crate::tr!("ex10.grey"), Color::splat(GREY as f32), |r| {
+        Some(sky_symptom(r, stats.mean()[0]))
+    })?;
     let white = small_scene("white-furnace")?;
     let stats = camera_estimates(&white, 88, ESTIMATES, |ray, s| f(&white, &ray, 0, 3, 2, s));
-    stats.check(
-        "white furnace (white Lambert sphere under a sky of 1, seen from outside), max_depth 3, branching 2",
-        Color::ONE,
-        |r| Some(sky_symptom(r, stats.mean()[0])),
-    )
+    stats.check(&crate::tr!("ex10.white"), Color::ONE, |r| {
+        Some(sky_symptom(r, stats.mean()[0]))
+    })
 }
 
 /// What a wrong mean under a sky of 1 shows (`r`: the mean over the exact
@@ -243,14 +226,10 @@ pub fn sky_symptom(r: f64, mean: f64) -> String {
     if (r + 1.0).abs() < 0.03 {
         other_sign_message(mean)
     } else if r.abs() < 0.03 {
-        "nothing arrives from the sky: the rays that leave the scene bring no light".to_string()
+        crate::tr!("ex10.no_sky")
     } else if r > 1.0 {
-        format!(
-            "too bright by ×{r:.3} under a sky of 1: the surface seems to reflect more than it receives"
-        )
+        crate::tr!("ex10.sky_bright", r)
     } else {
-        format!(
-            "too dark by ×{r:.3} under a sky of 1, where the emitting furnace passed: light from the sky is lost"
-        )
+        crate::tr!("ex10.sky_dark", r)
     }
 }

@@ -40,13 +40,9 @@ pub fn check(f: PathFn) -> Result<(), String> {
             f(&furnace, ray, Some(d), 1000, s)
         });
         let unweighted = if no_cosine_on_grey {
-            format!(
-                "your mean is about {d}·L_e, as if every bounce reflected all the light though ρ = 0.5 (and on the grey sphere your mean is 2ρ): the cosine θ_i is missing from the throughput"
-            )
+            crate::tr!("ex11.no_cosine", d)
         } else {
-            format!(
-                "your mean is {d}·L_e: every hit adds its emission unweighted — the light emitted at the k-th hit reaches the camera through the k reflections before it, and yours is not weakened by them"
-            )
+            crate::tr!("ex11.unweighted", d)
         };
         let mut named = vec![
             (series(d, -RHO), signed_cosine_message(d)),
@@ -55,11 +51,7 @@ pub fn check(f: PathFn) -> Result<(), String> {
         ];
         if d > 1 {
             named.push((series(d - 1, RHO), depth_message(d, false)));
-            named.push((
-                LE,
-                "your mean is L_e alone: only the first hit's emission is counted — the light emitted at the later hits of the path is missing"
-                    .to_string(),
-            ));
+            named.push((LE, crate::tr!("ex11.first_only")));
         }
         let advice = named
             .into_iter()
@@ -68,14 +60,16 @@ pub fn check(f: PathFn) -> Result<(), String> {
             })
             .map(|(_, why)| why);
         stats.check(
-            &format!("emitting furnace (L_e = 0.5, ρ = 0.5), max_depth {d}, no roulette: L = L_e(1 + … + ρ^(D−1))"),
+            &crate::tr!("ex11.furnace_depth", d),
             Color::splat(series(d, RHO) as f32),
             |r| {
-                advice.clone().or_else(|| Some(if r > 1.0 {
-                    format!("too bright by ×{r:.3} at max_depth {d}, without roulette: the reflected light is too strong, or the path is longer than max_depth allows")
-                } else {
-                    format!("too dark by ×{r:.3} at max_depth {d}, without roulette: light is lost along the path, or it ends too soon")
-                }))
+                advice.clone().or_else(|| {
+                    Some(if r > 1.0 {
+                        crate::tr!("ex11.brighter", r, d)
+                    } else {
+                        crate::tr!("ex11.darker", r, d)
+                    })
+                })
             },
         )?;
     }
@@ -83,36 +77,26 @@ pub fn check(f: PathFn) -> Result<(), String> {
     let stats = camera_estimates(&furnace, 95, ESTIMATES, |ray, s| {
         f(&furnace, ray, None, 1, s)
     });
-    stats.check(
-        "emitting furnace, unlimited depth, Russian roulette after 1 bounce: L = L_e/(1 − ρ)",
-        Color::ONE,
-        |r| {
-            Some(if r < 1.0 {
-                format!("too dark by ×{r:.3} only once the roulette plays (the cases without it passed): the paths that survive do not make up for those the roulette ends — their survival probability is not accounted for")
-            } else {
-                format!("too bright by ×{r:.3} only once the roulette plays (the cases without it passed): the paths that survive the roulette are weighted up too much")
-            })
-        },
-    )?;
-    grey_stats.check(
-        "grey Lambert sphere (ρ = 0.5) under a sky of 1, every camera ray on the sphere, unlimited depth: L = ρ",
-        Color::splat(GREY as f32),
-        |r| {
-            // The furnaces passed, so the cosine is there.
-            Some(if near(&grey_stats, 1.0, 0.03) {
-                "your mean is 1, the sky's radiance itself: a path that escapes adds the sky unweighted — the light of the sky reaches the camera through the sphere's reflection, and yours is not weakened by it (the white furnace, whose throughput stays 1, cannot show this)".to_string()
-            } else {
-                sky_symptom(r, grey_stats.mean()[0])
-            })
-        },
-    )?;
+    stats.check(&crate::tr!("ex11.furnace_roulette"), Color::ONE, |r| {
+        Some(if r < 1.0 {
+            crate::tr!("ex11.roulette_dark", r)
+        } else {
+            crate::tr!("ex11.roulette_bright", r)
+        })
+    })?;
+    grey_stats.check(&crate::tr!("ex11.grey"), Color::splat(GREY as f32), |r| {
+        // The furnaces passed, so the cosine is there.
+        Some(if near(&grey_stats, 1.0, 0.03) {
+            crate::tr!("ex11.sky_unweighted")
+        } else {
+            sky_symptom(r, grey_stats.mean()[0])
+        })
+    })?;
     let white = small_scene("white-furnace")?;
     let stats = camera_estimates(&white, 96, ESTIMATES, |ray, s| f(&white, ray, None, 2, s));
-    stats.check(
-        "white furnace (white Lambert under a sky of 1), roulette after 2 bounces",
-        Color::ONE,
-        |r| Some(sky_symptom(r, stats.mean()[0])),
-    )?;
+    stats.check(&crate::tr!("ex11.white"), Color::ONE, |r| {
+        Some(sky_symptom(r, stats.mean()[0]))
+    })?;
     // The Cornell box against the renderer (same expected value).
     let student = StudentPathTracer {
         path_radiance: f,

@@ -76,7 +76,7 @@ pub fn check(
         case.check(direct)?;
     }
     compare(&EX12_CORNELL_DIRECT, &StudentDirect(direct))
-        .map_err(|e| format!("direct light by your estimate_direct: {e}"))?;
+        .map_err(|e| crate::tr!("ex12.direct_what", e))?;
     check_path(path)
 }
 
@@ -86,11 +86,11 @@ pub fn check_path(path: PathRadianceFn) -> Result<(), String> {
     check_furnaces(what, path, 120)?;
     check_mirror(what, path, |got, want| {
         if got == Color::ZERO {
-            "the light seen in a mirror is missing: after a delta (mirror) bounce no light sample can find the emitter (f_r of any other direction is zero there), so the ray's hit is the only way it is counted".into()
+            crate::tr!("ex12.mirror_missing")
         } else if got.element_sum() < want.element_sum() {
-            "the light seen in a mirror is too dark: the emitter hit after a delta bounce counts fully".into()
+            crate::tr!("ex12.mirror_dark")
         } else {
-            "the light seen in a mirror is too bright: it counts once, β·L_e, with β = R after the mirror".into()
+            crate::tr!("ex12.mirror_bright")
         }
     })?;
     let student = StudentPathTracer {
@@ -98,7 +98,7 @@ pub fn check_path(path: PathRadianceFn) -> Result<(), String> {
         max_depth: Some(5),
         rr_depth: 3,
     };
-    compare(&EX12_CORNELL, &student).map_err(|e| format!("{what} at max depth 5: {e}"))
+    compare(&EX12_CORNELL, &student).map_err(|e| crate::tr!("ex12.cornell", what, e))
 }
 
 /// The furnaces of a path tracer with light sampling (exercises 12 and 13):
@@ -113,37 +113,26 @@ pub fn check_furnaces(what: &str, path: PathRadianceFn, seed: u64) -> Result<(),
     // Counted twice: L_e + 2ρL_e + 2ρ²L_e (light sample and hit at each bounce).
     let twice = LE * (1.0 + 2.0 * RHO + 2.0 * RHO * RHO);
     let named = [
-        (
-            twice,
-            "too bright by the direct light once more: the emitter that a BRDF-sampled ray hits is counted although a light sample at the same vertex already counts the light arriving from it (your mean is L_e(1 + 2ρ + 2ρ²))",
-        ),
-        (
-            LE,
-            "your mean is L_e alone: only the emitter seen by the camera counts — the light samples at the vertices are missing",
-        ),
-        (
-            LE * (1.0 + 2.0 * RHO),
-            "too bright: the light sample at the second vertex brings ρL_e, not ρ²L_e — the light samples are not weighted by the throughput β of their vertex",
-        ),
-        (
-            series(d + 1, RHO),
-            "one bounce too many: with max_depth D a path has at most D segments, and a light sample adds a segment",
-        ),
-        (
-            series(d - 1, RHO),
-            "one bounce too few: with max_depth D a path has at most D segments; the light sample at the last vertex that can still add a segment is missing",
-        ),
+        (twice, crate::tr!("ex12.twice")),
+        (LE, crate::tr!("ex12.le_only")),
+        (LE * (1.0 + 2.0 * RHO), crate::tr!("ex12.no_beta")),
+        (series(d + 1, RHO), crate::tr!("ex12.bounce_more")),
+        (series(d - 1, RHO), crate::tr!("ex12.bounce_fewer")),
     ];
     let advice = named
         .iter()
         .find(|(v, _)| stats.matches(Color::splat(*v as f32)))
         .map(|(_, why)| why.to_string());
     stats.check(
-        &format!("{what}: emitting furnace (L_e = 0.5, ρ = 0.5), max_depth {d}, no roulette: L = L_e(1 + ρ + ρ²)"),
+        &crate::tr!("ex12.furnace", what, d),
         Color::splat(series(d, RHO) as f32),
         |r| {
             advice.clone().or_else(|| {
-                Some(if r > 1.0 { "too bright" } else { "too dark" }.to_string() + ": the light of each bounce counts once, by the light sample at its vertex weighted by β")
+                Some(if r > 1.0 {
+                    crate::tr!("ex12.furnace_bright")
+                } else {
+                    crate::tr!("ex12.furnace_dark")
+                })
             })
         },
     )?;
@@ -151,35 +140,35 @@ pub fn check_furnaces(what: &str, path: PathRadianceFn, seed: u64) -> Result<(),
         path(&furnace, ray, None, 1, s)
     });
     stats.check(
-        &format!("{what}: emitting furnace, unlimited depth, Russian roulette after 1 bounce: L = L_e/(1 − ρ)"),
+        &crate::tr!("ex12.furnace_roulette", what),
         Color::ONE,
         |r| {
-            Some(if r < 1.0 {
-                "too dark with roulette: a path that survives the roulette must make up for those that end"
-            } else {
-                "too bright with roulette: the light of each bounce counts once, and a surviving path makes up exactly for those that end"
-            }
-            .to_string())
+            Some(
+                if r < 1.0 {
+                    crate::tr!("ex12.roulette_dark")
+                } else {
+                    crate::tr!("ex12.roulette_bright")
+                }
+                .to_string(),
+            )
         },
     )?;
     let white = small_scene("white-furnace")?;
     let stats = camera_estimates(&white, seed + 2, PATHS, |ray, s| {
         path(&white, ray, None, 2, s)
     });
-    stats.check(
-        &format!("{what}: white furnace (white Lambert under a sky of 1), roulette after 2 bounces: L = 1"),
-        Color::ONE,
-        |r| {
-            Some(if r > 1.2 {
-                "too bright: the sky is a light as well — a ray that escapes after a bounce brings in the sky that the light sample at its vertex has already counted"
+    stats.check(&crate::tr!("ex12.white", what), Color::ONE, |r| {
+        Some(
+            if r > 1.2 {
+                crate::tr!("ex12.sky_twice")
             } else if r < 1.0 {
-                "too dark: the sky is a light (Scene::choose_light finds it, Light::sample_li samples it: an infinitely far light, shadow ray Interaction::spawn_ray); the camera ray that escapes sees it directly"
+                crate::tr!("ex12.sky_missing")
             } else {
-                "too bright"
+                crate::tr!("ex12.too_bright")
             }
-            .to_string())
-        },
-    )
+            .to_string(),
+        )
+    })
 }
 
 /// A mirror floor (reflectance `MIRROR_R`) under a square light (facing
@@ -214,13 +203,14 @@ pub fn check_mirror(
     for i in 0..16 {
         let got = path(&scene, ray, Some(2), 1000, &mut Sampler::new(121, i, 0));
         if !(0..3).all(|k| close(got[k], want[k], 1e-4)) {
-            return Err(format!(
-                "{what}: a light seen in a mirror (reflectance R = {}, L_e = {}), max_depth 2: your estimate is {}, expected R·L_e = {} — {}",
-                fmt3(MIRROR_R),
-                fmt3(Color::new(4.0, 3.0, 2.0)),
-                fmt3(got),
-                fmt3(want),
-                why(got, want)
+            return Err(crate::tr!(
+                "ex12.mirror",
+                r = fmt3(MIRROR_R),
+                le = fmt3(Color::new(4.0, 3.0, 2.0)),
+                got = fmt3(got),
+                want = fmt3(want),
+                why = why(got, want),
+                what
             ));
         }
     }
@@ -262,23 +252,27 @@ fn check_conversion(to_solid_angle: AreaPdfFn) -> Result<(), String> {
         let d = x - y;
         let cos_y = n.dot(d.normalize()).abs();
         let why = if close(got, pdf_a, 1e-4) {
-            "that is still the density per unit AREA: a patch dA at y covers the solid angle |cos θ_y| dA / r² seen from x"
+            crate::tr!("ex12.area")
         } else if close(got, -want, 1e-4) {
-            "your density is negative: a signed cos θ_y. Here x lies behind the light (n_y points away from x), as it does for a two-sided light seen from its back, and a density is never negative"
+            crate::tr!("ex12.negative")
         } else if close(got, pdf_a * d.length() / cos_y, 1e-4) {
-            "the distance is not squared: the solid angle of a patch falls as 1/r²"
+            crate::tr!("ex12.not_squared")
         } else if close(got, pdf_a * d.length_squared(), 1e-4) {
-            "the cosine at the light is missing: a patch seen obliquely covers a smaller solid angle"
+            crate::tr!("ex12.no_cos_light")
         } else if close(got, pdf_a * cos_y / d.length_squared(), 1e-4) {
-            "upside down: p_ω dω = p_A dA with dω = |cos θ_y| dA / r²"
+            crate::tr!("ex12.upside_down")
         } else {
-            "θ_y lies between n_y and the direction from y to x; the distance is ‖x − y‖"
+            crate::tr!("ex12.theta_y")
         };
-        return Err(format!(
-            "area_pdf_to_solid_angle({pdf_a}, x = {}, y = {}, n_y = {}) is {got}, expected {want} — {why}",
-            fmt3(x),
-            fmt3(y),
-            fmt3(n)
+        return Err(crate::tr!(
+            "ex12.pdf",
+            x = fmt3(x),
+            y = fmt3(y),
+            n = fmt3(n),
+            pdf_a,
+            got,
+            want,
+            why
         ));
     }
     // The light seen edge-on: no solid angle, density 0 (not ∞ or NaN).
@@ -289,11 +283,12 @@ fn check_conversion(to_solid_angle: AreaPdfFn) -> Result<(), String> {
     );
     let got = to_solid_angle(0.5, x, y, n);
     if got != 0.0 {
-        return Err(format!(
-            "area_pdf_to_solid_angle(0.5, x = {}, y = {}, n_y = {}) is {got}: the light is seen exactly edge-on (n_y ⟂ y − x), so no solid angle corresponds to its area — return 0, as the task says",
-            fmt3(x),
-            fmt3(y),
-            fmt3(n)
+        return Err(crate::tr!(
+            "ex12.edge_on",
+            x = fmt3(x),
+            y = fmt3(y),
+            n = fmt3(n),
+            got
         ));
     }
     Ok(())
@@ -370,9 +365,7 @@ impl NeeCase {
             .find(|(value, _)| stats.matches(*value))
             .map(|(_, why)| why.clone());
         stats.check(&self.what, self.exact, |_| {
-            Some(advice.clone().unwrap_or_else(|| {
-                "compare your estimate with the integrand of the rendering equation, divided by the probability of every choice you made (the light, the point on it)".into()
-            }))
+            Some(advice.clone().unwrap_or_else(|| crate::tr!("ex12.compare")))
         })
     }
 }
@@ -543,31 +536,25 @@ pub fn cases() -> Vec<NeeCase> {
     // 1. One light.
     let (scene1, it1) = scene(&[a], None, 1.0);
     out.push(NeeCase {
-        what: "direct light at a point of a Lambertian floor under one square light (exact: Lambert's polygon formula)".into(),
+        what: crate::tr!("ex12.one_light"),
         scene: scene1,
         it: it1,
         exact: exact_a,
         named: vec![
             (
                 value(&a, &|_, r2, cy| cy / r2),
-                "the cosine at the surface is missing: the integrand of the rendering equation has cos θ_i at x".into(),
+                crate::tr!("ex12.no_cos_surface"),
             ),
             (
                 value(&a, &|w, r2, cy| w.y * cy / r2.sqrt()),
-                "you divided by r instead of r²: the solid angle of a patch of the light falls with the square of its distance".into(),
+                crate::tr!("ex12.r_not_r2"),
             ),
             (
                 value(&a, &|w, r2, _| w.y / r2),
-                "the cosine at the light is missing: a patch of the light seen obliquely covers a smaller solid angle".into(),
+                crate::tr!("ex12.no_cos_light2"),
             ),
-            (
-                value(&a, &|w, _, _| w.y),
-                "you divided by the density per unit AREA (1/A), but the integral is over directions at x: its density must be per unit solid angle (part 1)".into(),
-            ),
-            (
-                exact_a / f,
-                "the BRDF is missing: your estimate is the irradiance at x, not the radiance it reflects".into(),
-            ),
+            (value(&a, &|w, _, _| w.y), crate::tr!("ex12.area_density")),
+            (exact_a / f, crate::tr!("ex12.no_brdf")),
         ],
     });
 
@@ -587,14 +574,11 @@ pub fn cases() -> Vec<NeeCase> {
     let blocked = f * a.radiance * irradiance(X, Vec3A::Y, &shadow, 1.0) as f32;
     let (scene2, it2) = scene(&[a], Some(occluder), 1.0);
     out.push(NeeCase {
-        what: "the same light, partly hidden behind an occluder (exact: the light's irradiance minus that of the occluder's shadow on it)".into(),
+        what: crate::tr!("ex12.occluded"),
         scene: scene2,
         it: it2,
         exact: exact_a - blocked,
-        named: vec![(
-            exact_a,
-            "the occluder makes no difference to your estimate: no shadow ray tests the visibility between x and the light point".into(),
-        )],
+        named: vec![(exact_a, crate::tr!("ex12.no_shadow"))],
     });
 
     // 3. Two lights: each chosen with probability 1/2.
@@ -602,23 +586,14 @@ pub fn cases() -> Vec<NeeCase> {
     let both = exact(&[a, b]);
     let (scene3, it3) = scene(&[a, b], None, 1.0);
     out.push(NeeCase {
-        what: "two square lights (each chosen with probability 1/2)".into(),
+        what: crate::tr!("ex12.two_lights"),
         scene: scene3,
         it: it3,
         exact: both,
         named: vec![
-            (
-                both * 0.5,
-                "your estimate is half the light: the probability of choosing the light (choice.pmf = 1/2 here) is left out — each light is chosen only half the time, so what it brings must count for both halves".into(),
-            ),
-            (
-                both * 0.25,
-                "your estimate is a quarter of the light: the probability of choosing the light (choice.pmf = 1/2 here) is multiplied in where it belongs in the denominator".into(),
-            ),
-            (
-                both * 2.0,
-                "your estimate is twice the light: divide by the probability of choosing the light (choice.pmf = 1/2 with two lights)".into(),
-            ),
+            (both * 0.5, crate::tr!("ex12.half")),
+            (both * 0.25, crate::tr!("ex12.quarter")),
+            (both * 2.0, crate::tr!("ex12.double")),
         ],
     });
 
@@ -627,52 +602,37 @@ pub fn cases() -> Vec<NeeCase> {
     let (scene4, it4) = scene(&[a, d], None, 1.0);
     let d_two_sided = f * d.radiance * irradiance(X, Vec3A::Y, &d.corners(), 1.0) as f32;
     out.push(NeeCase {
-        what: "two lights, one of them turning its back to the point (it emits only on the side of its normal)".into(),
+        what: crate::tr!("ex12.back_light"),
         scene: scene4,
         it: it4,
         exact: exact_a,
-        named: vec![(
-            exact_a + d_two_sided,
-            "the light that turns its back to x lights it in your estimate: an area light emits on one side only".into(),
-        )],
+        named: vec![(exact_a + d_two_sided, crate::tr!("ex12.back_lights"))],
     });
 
     // 5. The floor seen from its back side: its normal points down, the
     // viewer and the light are above (wo.z < 0 and wi.z < 0 in the local frame).
     let (scene5, it5) = scene(&[a], None, -1.0);
     out.push(NeeCase {
-        what: "one light over a floor seen from its back side (its normal points away from the viewer and the light)".into(),
+        what: crate::tr!("ex12.back_floor"),
         scene: scene5,
         it: it5,
         exact: exact_a,
         named: vec![
-            (
-                -exact_a,
-                "your estimate is negative: a signed cos θ_i. Here the surface is seen from its back (wo.z < 0) and so is the light (wi.z < 0): the cosine is taken with the normal on the side of ω_o, |wi.z|".into(),
-            ),
-            (
-                Color::ZERO,
-                "your estimate is 0: cos θ_i clamped at 0. Here the surface is seen from its back (wo.z < 0) and so is the light (wi.z < 0): the cosine is taken with the normal on the side of ω_o, |wi.z|".into(),
-            ),
+            (-exact_a, crate::tr!("ex12.back_negative")),
+            (Color::ZERO, crate::tr!("ex12.back_zero")),
         ],
     });
 
     // 6. A two-sided light above x that faces up: x sees its back, which emits too.
     let (scene6, it6) = scene_with(&[d], None, 1.0, true);
     out.push(NeeCase {
-        what: "a two-sided light seen from its back (it emits on both sides; its normal points away from x)".into(),
+        what: crate::tr!("ex12.two_sided"),
         scene: scene6,
         it: it6,
         exact: d_two_sided,
         named: vec![
-            (
-                -d_two_sided,
-                "your estimate is negative behind a two-sided light: a signed cosine at the light (cos θ_y < 0 when x lies behind the light's normal), in part 1 or here".into(),
-            ),
-            (
-                Color::ZERO,
-                "your estimate is 0 behind a two-sided light: its back emits too (AreaLight::le knows the sides), and the density of its points seen from behind is positive — a signed cosine at the light in part 1 would give a negative density, and a sample with it dropped".into(),
-            ),
+            (-d_two_sided, crate::tr!("ex12.two_sided_negative")),
+            (Color::ZERO, crate::tr!("ex12.two_sided_zero")),
         ],
     });
     out

@@ -73,11 +73,11 @@ pub fn check(f: PathFn) -> Result<(), String> {
     }
     check_mirror("path_radiance_mis", f, |got, want| {
         if got == Color::ZERO {
-            "the light seen in a mirror is missing: after a delta (mirror) bounce the BRDF sample is the only strategy that finds the emitter (no light sample can: f_r is zero for every other direction), so it takes the whole weight".into()
+            crate::tr!("ex13.mirror_missing")
         } else if got.element_sum() < want.element_sum() {
-            "the light seen in a mirror is too dark: you applied MIS after a delta (mirror) bounce — a delta lobe's pdf is a probability, not a density per solid angle, and no light sample competes there: that hit takes the whole weight".into()
+            crate::tr!("ex13.mirror_dark")
         } else {
-            "the light seen in a mirror is too bright: it counts once, β·L_e, with β = R after the mirror".into()
+            crate::tr!("ex13.mirror_bright")
         }
     })?;
     check_furnaces("path_radiance_mis", f, 130)?;
@@ -87,7 +87,7 @@ pub fn check(f: PathFn) -> Result<(), String> {
         max_depth: Some(5),
         rr_depth: 3,
     };
-    compare(&EX13_CORNELL, &student).map_err(|e| format!("path_radiance_mis at max depth 5: {e}"))
+    compare(&EX13_CORNELL, &student).map_err(|e| crate::tr!("ex13.cornell", e))
 }
 
 /// The power heuristic with exponent `k` for two one-sample strategies.
@@ -171,42 +171,24 @@ fn check_sky(f: PathFn) -> Result<(), String> {
     let (a, b) = sky_parts(2);
     let rho = FLOOR_ALBEDO;
     let named = [
-        (
-            rho * (1.0 + a) as f32,
-            "too bright: the emitter found by the BRDF sample counts unweighted while the light sample of the same direction is weighted — the two weights of one direction do not sum to one, and the sky's light is counted more than once",
-        ),
-        (
-            rho * (1.0 + b) as f32,
-            "too bright: the light sample counts unweighted while the emitter found by the BRDF sample is weighted — the two weights of one direction do not sum to one",
-        ),
-        (
-            rho * 2.0,
-            "twice the light: both strategies count with weight 1 — the direct light is counted twice",
-        ),
-        (
-            rho * a as f32,
-            "too dark: only the light samples count (and with their weights): the emitter found by the BRDF sample is missing",
-        ),
-        (
-            rho * b as f32,
-            "too dark: only the emitter found by the BRDF sample counts: the light samples are missing",
-        ),
+        (rho * (1.0 + a) as f32, crate::tr!("ex13.brdf_unweighted")),
+        (rho * (1.0 + b) as f32, crate::tr!("ex13.light_unweighted")),
+        (rho * 2.0, crate::tr!("ex13.both_one")),
+        (rho * a as f32, crate::tr!("ex13.light_only")),
+        (rho * b as f32, crate::tr!("ex13.brdf_only")),
     ];
     let advice = named
         .iter()
         .find(|(v, _)| stats.matches(*v))
         .map(|(_, why)| why.to_string());
-    let what = "a Lambertian floor (albedo ρ) under a constant sky of radiance 1, max_depth 2 (direct light only): L = ρ";
-    stats.check(what, rho, |r| {
+    let what = crate::tr!("ex13.sky_floor");
+    stats.check(&what, rho, |r| {
         advice.clone().or_else(|| {
-            Some(
-                if r > 1.0 {
-                    "too bright: for every direction the two weights must sum to one"
-                } else {
-                    "too dark: for every direction the two weights must sum to one"
-                }
-                .to_string(),
-            )
+            Some(if r > 1.0 {
+                crate::tr!("ex13.sum_bright")
+            } else {
+                crate::tr!("ex13.sum_dark")
+            })
         })
     })?;
     let simulated = |k: i32| -> Vec<f64> {
@@ -219,9 +201,9 @@ fn check_sky(f: PathFn) -> Result<(), String> {
         return Ok(());
     }
     let why = if ks(values.clone(), simulated(1)) <= KS_MAX {
-        crate::ex13_mis::BALANCE.to_string()
+        crate::tr!("ex13.balance")
     } else if ks(values.clone(), simulated(3)) <= KS_MAX {
-        "that is the power heuristic with exponent 3 (each density cubed): a valid MIS weight, but this exercise asks for exponent 2, as the slide and the renderer use".to_string()
+        crate::tr!("ex13.power3")
     } else {
         let swapped: Vec<f64> = (0..ESTIMATES)
             .map(|i| {
@@ -237,18 +219,13 @@ fn check_sky(f: PathFn) -> Result<(), String> {
             })
             .collect();
         if ks(values, swapped) <= KS_MAX {
-            "the weights are swapped: each strategy is weighted by the other's density, so the worse strategy gets the larger weight (unbiased, but the noise of both)".to_string()
+            crate::tr!("ex13.swapped")
         } else {
-            "the spread of your estimates is not that of the power heuristic with these two strategies (the light sample from Light::sample_li, the continuation from Brdf::sample), although the mean is right: each sample's weight must grow with its own strategy's density and fall with the other's, as the power heuristic of the slide, both densities of the same direction and per unit solid angle".to_string()
+            crate::tr!("ex13.spread")
         }
     };
-    Err(format!(
-        "{what}: your mean is right, but the distribution of your single estimates differs from the power heuristic's (Kolmogorov–Smirnov √(N/2)·D = {d:.1} > {KS_MAX}) — {why}"
-    ))
+    Err(crate::tr!("ex13.distribution", what, d, KS_MAX, why))
 }
-
-/// The message of the balance heuristic.
-pub const BALANCE: &str = "that is the balance heuristic (exponent 1): a valid MIS weight, but this exercise asks for the power heuristic with exponent 2, as the slide and the renderer use — each density squared";
 
 /// A case of direct light from square lights at [`X`] (max depth 2).
 pub struct LightCase {
@@ -278,11 +255,12 @@ impl LightCase {
             .map(|(_, why)| why.clone());
         stats.check(&self.what, self.exact, |r| {
             advice.clone().or_else(|| {
-                Some(format!(
-                    "{}: for every direction the two weights must sum to one (expected {})",
-                    if r > 1.0 { "too bright" } else { "too dark" },
-                    fmt3(self.exact)
-                ))
+                let want = fmt3(self.exact);
+                Some(if r > 1.0 {
+                    crate::tr!("ex13.sum_bright_want", want)
+                } else {
+                    crate::tr!("ex13.sum_dark_want", want)
+                })
             })
         })
     }
@@ -334,27 +312,15 @@ pub fn light_cases() -> Vec<LightCase> {
     let brdf_area = over_light(&a, &|_, pb, pa| h(pb, pa));
     let r1 = ray(&scene1, it1.wo);
     out.push(LightCase {
-        what: "a Lambertian floor under one large square light close by, max_depth 2 (exact: Lambert's polygon formula)".into(),
+        what: crate::tr!("ex13.near_light"),
         scene: scene1,
         ray: r1,
         exact: exact_a,
         named: vec![
-            (
-                light_w + brdf_area,
-                "too bright: the weight of the emitter found by the BRDF sample is computed with the light's density per unit AREA (1/A), not per unit solid angle at the vertex — the two weights of one direction compare densities of the same measure, or they do not sum to one".into(),
-            ),
-            (
-                light_w + exact_a,
-                "too bright: the emitter found by the BRDF sample counts unweighted while the light sample is weighted — the weights of one direction do not sum to one: light counted twice in part".into(),
-            ),
-            (
-                exact_a + brdf_w,
-                "too bright: the light sample counts unweighted while the emitter found by the BRDF sample is weighted — the weights of one direction do not sum to one".into(),
-            ),
-            (
-                exact_a * 2.0,
-                "twice the light: both strategies count with weight 1".into(),
-            ),
+            (light_w + brdf_area, crate::tr!("ex13.area_weight")),
+            (light_w + exact_a, crate::tr!("ex13.brdf_unweighted2")),
+            (exact_a + brdf_w, crate::tr!("ex13.light_unweighted2")),
+            (exact_a * 2.0, crate::tr!("ex13.both_one2")),
         ],
     });
 
@@ -369,19 +335,13 @@ pub fn light_cases() -> Vec<LightCase> {
     let no_pmf_light = sum(&|pw, pb, _| h(pw, pb));
     let r2 = ray(&scene2, it2.wo);
     out.push(LightCase {
-        what: "the floor under two large square lights close by, each chosen with probability 1/2, max_depth 2".into(),
+        what: crate::tr!("ex13.two_lights"),
         scene: scene2,
         ray: r2,
         exact: both,
         named: vec![
-            (
-                correct_light + no_pmf_brdf,
-                "too dark: the light-choice probability P(light) is missing from the light strategy's density in the weight of the emitter found by the BRDF sample — the light strategy makes that direction with P(light)·p_ω, so with two lights your BRDF hits get too little weight".into(),
-            ),
-            (
-                no_pmf_light + correct_brdf,
-                "too bright: the light-choice probability P(light) is missing from the light strategy's density in the light sample's weight — the light strategy makes that direction with P(light)·p_ω".into(),
-            ),
+            (correct_light + no_pmf_brdf, crate::tr!("ex13.pmf_brdf")),
+            (no_pmf_light + correct_brdf, crate::tr!("ex13.pmf_light")),
         ],
     });
     out
@@ -420,23 +380,27 @@ fn check_veach(f: PathFn) -> Result<(), String> {
         max_depth: Some(2),
         rr_depth: 1000,
     };
-    compare(&EX13_VEACH, &student).map_err(|e| format!("Veach's plates (max depth 2): {e}"))?;
+    compare(&EX13_VEACH, &student).map_err(|e| crate::tr!("ex13.veach", e))?;
     let (brdf, light) = variance_ratios(f)?;
     for (ratio, alone, wins) in [
         (
             brdf,
-            "BRDF sampling alone",
-            "small lights over rough plates",
+            crate::tr!("ex13.brdf_alone"),
+            crate::tr!("ex13.brdf_wins"),
         ),
         (
             light,
-            "light sampling alone",
-            "large lights over shiny plates",
+            crate::tr!("ex13.light_alone"),
+            crate::tr!("ex13.light_wins"),
         ),
     ] {
         if ratio > MAX_VARIANCE_RATIO {
-            return Err(format!(
-                "Veach's plates: your render is right on average, but its variance is {ratio:.2} × that of {alone} (at most {MAX_VARIANCE_RATIO} expected: MIS beats each strategy where the other wins, e.g. {wins}) — your weights do not favour the strategy with the larger density"
+            return Err(crate::tr!(
+                "ex13.variance",
+                ratio,
+                alone,
+                MAX_VARIANCE_RATIO,
+                wins
             ));
         }
     }

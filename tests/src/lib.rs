@@ -47,6 +47,7 @@ pub mod ex15_bdpt;
 pub mod ex16_metropolis;
 pub mod ex17_photon_mapping;
 pub mod ex18_instant_radiosity;
+pub mod messages;
 pub mod outcome;
 pub mod pictures;
 pub mod polygon;
@@ -229,11 +230,13 @@ pub fn grade_checks(
         while running.len() < threads.max(1) && next < n {
             let (i, check, tx) = (next, checks[next], tx.clone());
             let start = Instant::now();
+            // The caller's language, also when it is a scope of its thread.
+            let language = lang::current();
             std::thread::spawn(move || {
-                let o = match check {
+                let o = lang::with(language, || match check {
                     Some(c) => grade(c),
-                    None => Outcome::Failed("the grader has no check for this exercise".into()),
-                };
+                    None => Outcome::Failed(tr!("report.no_grader")),
+                });
                 let _ = tx.send((i, o, start.elapsed().as_secs_f64()));
             });
             running.push((i, start));
@@ -255,10 +258,7 @@ pub fn grade_checks(
                 let now = Instant::now();
                 for (i, start) in running.iter().filter(|(_, s)| now >= *s + timeout) {
                     results[*i] = Some((
-                        Outcome::Failed(format!(
-                            "did not finish within {} s — an endless loop, or far too slow (a correct solution takes well under a second here; every path must end: max_depth, roulette, or a ray that escapes)",
-                            timeout.as_secs_f32()
-                        )),
+                        Outcome::Failed(tr!("report.timeout", seconds = timeout.as_secs_f32())),
                         start.elapsed().as_secs_f64(),
                     ));
                 }
@@ -270,17 +270,19 @@ pub fn grade_checks(
 }
 
 /// The progress table of graded exercises, with the summary and the next
-/// step as its last lines (`cargo test` prints it last).
+/// step as its last lines (`cargo test` prints it last), in the current
+/// language.
 pub fn progress_report(results: &[Graded]) -> String {
-    let mut out = String::from("Exercises of Lecture 11\n");
+    let mut out = tr!("report.title") + "\n";
     for g in results {
-        out.push_str(&format!(
-            "  {:>2} {:<22} {} ({:.1} s)\n",
-            g.exercise.number().unwrap_or(0),
-            g.exercise.name,
-            g.outcome,
-            g.seconds
+        out.push_str(&tr!(
+            "report.row",
+            number = g.exercise.number().unwrap_or(0),
+            name = g.exercise.name,
+            outcome = g.outcome,
+            seconds = g.seconds
         ));
+        out.push('\n');
     }
     out.push_str(&summary(results));
     out
@@ -292,24 +294,23 @@ pub fn summary(results: &[Graded]) -> String {
     let done = results.iter().filter(|g| g.outcome.is_passed()).count();
     let failing = results.iter().filter(|g| g.outcome.is_failed()).count();
     let todo = results.len() - done - failing;
-    let mut out = format!(
-        "Progress: {done}/{} done, {failing} failing, {todo} not started.\n",
-        results.len()
-    );
-    match results.iter().find(|g| !g.outcome.is_passed()) {
-        Some(g) => out.push_str(&format!(
-            "Next: exercise {} — {} (slides: {}); edit exercises/{}; hint: `{}`.\n",
-            g.exercise.number().unwrap_or(0),
-            g.exercise.title,
-            g.exercise.slide,
-            g.exercise.file,
-            g.exercise.hint_command()
-        )),
-        None if results.len() == exercises::MODULES.len() => {
-            out.push_str("All exercises pass. Well done!\n")
-        }
-        None => out.push_str("All the exercises graded here pass.\n"),
-    }
+    let total = results.len();
+    let mut out = tr!("report.progress", done, total, failing, todo) + "\n";
+    let language = lang::current();
+    let line = match results.iter().find(|g| !g.outcome.is_passed()) {
+        Some(g) => tr!(
+            "report.next",
+            number = g.exercise.number().unwrap_or(0),
+            title = g.exercise.title_in(language),
+            slides = g.exercise.slide_in(language),
+            file = g.exercise.file,
+            hint = g.exercise.hint_command()
+        ),
+        None if results.len() == exercises::MODULES.len() => tr!("report.all_pass"),
+        None => tr!("report.all_here_pass"),
+    };
+    out.push_str(&line);
+    out.push('\n');
     out
 }
 
@@ -318,37 +319,43 @@ pub fn summary(results: &[Graded]) -> String {
 /// one's outcome, then its hint command, or the next exercise once it passes.
 pub fn exercise_report(results: &[Graded]) -> String {
     let registry = exercises::registry();
+    let language = lang::current();
     let mut out = String::new();
+    let mut line = |s: String| {
+        out.push_str(&s);
+        out.push('\n');
+    };
     for g in results {
         let e = &g.exercise;
-        out.push_str(&format!(
-            "Exercise {} — {} (exercises/{})
-  {} ({:.1} s)
-",
-            e.number().unwrap_or(0),
-            e.title,
-            e.file,
-            g.outcome,
-            g.seconds
+        line(tr!(
+            "report.exercise",
+            number = e.number().unwrap_or(0),
+            title = e.title_in(language),
+            file = e.file
+        ));
+        line(tr!(
+            "report.exercise_outcome",
+            outcome = g.outcome,
+            seconds = g.seconds
         ));
         if g.outcome.is_passed() {
             // The next in the registry's order (numbers may skip).
             let next = registry.iter().skip_while(|n| n.name != e.name).nth(1);
             match next {
-                Some(n) => out.push_str(&format!(
-                    "Next: exercise {} — {} (exercises/{}).\n",
-                    n.number().unwrap_or(0),
-                    n.title,
-                    n.file
+                Some(n) => line(tr!(
+                    "report.next_alone",
+                    number = n.number().unwrap_or(0),
+                    title = n.title_in(language),
+                    file = n.file
                 )),
-                None => out.push_str("That was the last exercise.\n"),
+                None => line(tr!("report.last")),
             }
         } else {
-            out.push_str(&format!("Hint: `{}`\n", e.hint_command()));
+            line(tr!("report.hint", hint = e.hint_command()));
         }
     }
     if results.is_empty() {
-        out.push_str("No exercise matches: the names are listed by `cargo test -p grading --test exercises -- --list`.\n");
+        line(tr!("report.no_match"));
     }
     out
 }
@@ -366,11 +373,13 @@ mod tests {
         let todo: Check = || todo!();
         // Two endless exercises on two threads: the rest still get graded,
         // each endless one within its own budget.
-        let o = grade_checks(
-            vec![Some(endless), Some(endless), Some(fine), Some(todo), None],
-            2,
-            Duration::from_millis(300),
-        );
+        let o = lang::with(lang::Lang::En, || {
+            grade_checks(
+                vec![Some(endless), Some(endless), Some(fine), Some(todo), None],
+                2,
+                Duration::from_millis(300),
+            )
+        });
         for (k, (r, s)) in o.iter().take(2).enumerate() {
             assert!(
                 matches!(r, Outcome::Failed(m) if m.contains("an endless loop, or far too slow")),
@@ -432,13 +441,23 @@ mod tests {
                 seconds: 0.1,
             })
             .collect();
-        let report = progress_report(&graded);
+        let report = lang::with(lang::Lang::En, || progress_report(&graded));
         let last: Vec<&str> = report.lines().rev().take(2).collect();
         assert!(last[1].starts_with("Progress: 2/"), "{report}");
         assert!(
             last[0].starts_with("Next: exercise 3") && last[0].contains("-p hint -- 3"),
             "{report}"
         );
+        // The same in Bulgarian, with the exercise's Bulgarian title.
+        let report = lang::with(lang::Lang::Bg, || progress_report(&graded));
+        let last: Vec<&str> = report.lines().rev().take(2).collect();
+        assert!(last[1].starts_with("Напредък: 2/"), "{report}");
+        assert!(
+            last[0].starts_with("Следва: задача 3 — Ламбертова BRDF")
+                && last[0].contains("-p hint -- 3"),
+            "{report}"
+        );
+        assert!(report.contains("· не е започната"), "{report}");
         let all: Vec<Graded> = graded
             .into_iter()
             .map(|g| Graded {
@@ -447,7 +466,7 @@ mod tests {
             })
             .collect();
         assert!(
-            progress_report(&all)
+            lang::with(lang::Lang::En, || progress_report(&all))
                 .trim_end()
                 .ends_with("All exercises pass. Well done!")
         );

@@ -29,12 +29,12 @@ impl Outcome {
         matches!(self, Outcome::NotStarted(_))
     }
 
-    /// One word: "passed", "failed", "not started".
-    pub fn status(&self) -> &'static str {
+    /// One word, in the current language: "passed", "failed", "not started".
+    pub fn status(&self) -> String {
         match self {
-            Outcome::Passed => "passed",
-            Outcome::Failed(_) => "failed",
-            Outcome::NotStarted(_) => "not started",
+            Outcome::Passed => crate::tr!("report.passed"),
+            Outcome::Failed(_) => crate::tr!("report.failed"),
+            Outcome::NotStarted(_) => crate::tr!("report.not_started"),
         }
     }
 
@@ -50,12 +50,13 @@ impl Outcome {
 
 impl fmt::Display for Outcome {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Outcome::Passed => write!(f, "✓ passed"),
-            Outcome::Failed(reason) => write!(f, "✗ failed: {reason}"),
-            Outcome::NotStarted(Some(at)) => write!(f, "· not started (todo!() at {at})"),
-            Outcome::NotStarted(None) => write!(f, "· not started"),
-        }
+        let text = match self {
+            Outcome::Passed => crate::tr!("report.shown_passed"),
+            Outcome::Failed(reason) => crate::tr!("report.shown_failed", reason),
+            Outcome::NotStarted(Some(at)) => crate::tr!("report.shown_not_started_at", at),
+            Outcome::NotStarted(None) => crate::tr!("report.shown_not_started"),
+        };
+        f.write_str(&text)
     }
 }
 
@@ -115,8 +116,10 @@ pub fn grade(check: impl FnOnce() -> Result<(), String>) -> Outcome {
             if message.contains(TODO_MESSAGE) {
                 Outcome::NotStarted(at)
             } else {
-                let at = at.map(|a| format!(" at {a}")).unwrap_or_default();
-                Outcome::Failed(format!("your code panicked{at}: {message}"))
+                let at = at
+                    .map(|at| crate::tr!("report.panicked_at", at))
+                    .unwrap_or_default();
+                Outcome::Failed(crate::tr!("report.panicked", at, message))
             }
         }
     }

@@ -84,10 +84,10 @@ pub fn uses(code: &str, item: &str) -> bool {
 pub fn shortcut(e: &Exercise) -> Option<String> {
     let code = without_comments(&compiled_source(e)?);
     let item = e.forbidden.iter().find(|item| uses(&code, item))?;
-    Some(format!(
-        "your code uses the renderer's `{}`, which computes what this exercise asks you to build: take it out and write that part yourself (the grader grades your own code, not the renderer's)",
-        item.trim_start_matches("raytracer::")
-    ))
+    Some({
+        let item = item.trim_start_matches("raytracer::");
+        crate::tr!("report.shortcut", item)
+    })
 }
 
 #[cfg(test)]

@@ -81,10 +81,7 @@ impl MeanVar {
         advice: impl Fn(f64) -> Option<String>,
     ) -> Result<(), String> {
         if self.nonfinite > 0 {
-            return Err(format!(
-                "{what}: {} of your estimates are NaN or infinite (a division by a zero pdf?)",
-                self.nonfinite
-            ));
+            return Err(crate::tr!("stats.nonfinite", count = self.nonfinite, what));
         }
         let se = self.std_error();
         for k in 0..3 {
@@ -94,10 +91,8 @@ impl MeanVar {
             // an estimator with (nearly) zero variance must be exact up to it.
             let bad = d > 1e-4 * e.abs().max(1.0) && d > Z_MAX * se[k];
             if bad {
-                let mut msg = format!(
-                    "{what}: your mean is {m:.4}, expected {e:.4} ({})",
-                    deviation(m, e, se[k])
-                );
+                let mut msg =
+                    crate::tr!("stats.mean", deviation = deviation(m, e, se[k]), what, m, e);
                 if e != 0.0
                     && let Some(a) = advice(m / e)
                 {
@@ -118,15 +113,18 @@ impl MeanVar {
 /// infinite: its difference is not noise.
 pub fn deviation(m: f64, exact: f64, se: f64) -> String {
     let rel = if exact != 0.0 {
-        format!("relative error {:+.2}%", 100.0 * (m - exact) / exact.abs())
+        crate::tr!(
+            "stats.relative",
+            percent = 100.0 * (m - exact) / exact.abs()
+        )
     } else {
-        format!("error {:+.4}", m - exact)
+        crate::tr!("stats.error", difference = m - exact)
     };
     if se <= 1e-6 * exact.abs().max(m.abs()).max(1e-12) {
-        format!("{rel}; your estimates barely vary (standard error {se:.1e}), so this is no noise")
+        crate::tr!("stats.no_noise", rel, se = format!("{se:.1e}"))
     } else {
         let z = (m - exact).abs() / se;
-        format!("{rel}, {z:.1} standard errors of your own, more than the {Z_MAX} allowed")
+        crate::tr!("stats.z", rel, z, Z_MAX)
     }
 }
 

@@ -60,7 +60,9 @@ pub fn exercise_of(path: &Path, registry: &[Exercise]) -> Option<Exercise> {
 pub fn grade_command(root: &Path, filter: &str) -> Command {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let mut cmd = Command::new(cargo);
+    // The harness speaks this program's language (`lesson11 --lang`).
     cmd.current_dir(root)
+        .env(lang::ENV, lang::current().code())
         .args(["test", "-q", "-p", "grading", "--test", "exercises"]);
     if !filter.is_empty() {
         cmd.args(["--", filter]);
@@ -73,7 +75,8 @@ pub fn grade_command(root: &Path, filter: &str) -> Command {
 /// never ran — the compiler's errors.
 pub fn verdict(stdout: &[u8], stderr: &[u8]) -> String {
     let stdout = String::from_utf8_lossy(stdout);
-    if stdout.contains("Exercise") {
+    // The report names an exercise (or all of them), in either language.
+    if ["Exercise", "Задача"].iter().any(|w| stdout.contains(w)) {
         return stdout.trim_end().to_string();
     }
     let stderr = String::from_utf8_lossy(stderr);
@@ -84,7 +87,8 @@ pub fn verdict(stdout: &[u8], stderr: &[u8]) -> String {
         .unwrap_or(0);
     let shown: Vec<&str> = lines[first..].iter().take(60).copied().collect();
     format!(
-        "Your code does not compile yet (cargo test says):\n{}",
+        "{}\n{}",
+        crate::tr!("report.does_not_compile"),
         shown.join("\n")
     )
 }
@@ -144,15 +148,13 @@ pub fn run(stop: &dyn Fn() -> bool) -> std::io::Result<()> {
         .map(|e| exercises::crate_dir().join(&e.file))
         .collect();
     let mut watcher = Watcher::new(files);
-    println!("Grading every exercise once…");
+    println!("{}", crate::tr!("report.grading_all"));
     let Some(out) = output_unless(grade_command(&root, ""), stop)? else {
         return Ok(());
     };
     println!("{}", verdict(&out.stdout, &out.stderr));
     loop {
-        println!(
-            "\nWatching exercises/src/ — save an exercise's file to grade it again (Ctrl-C to stop)."
-        );
+        println!("\n{}", crate::tr!("report.watching"));
         let exercise = loop {
             for _ in 0..POLL.as_millis() / STOP_POLL.as_millis() {
                 if stop() {
@@ -170,9 +172,12 @@ pub fn run(stop: &dyn Fn() -> bool) -> std::io::Result<()> {
             }
         };
         println!(
-            "\n── exercises/{} saved: grading exercise {} ──",
-            exercise.file,
-            exercise.number().unwrap_or(0)
+            "\n{}",
+            crate::tr!(
+                "report.saved",
+                file = exercise.file,
+                number = exercise.number().unwrap_or(0)
+            )
         );
         let Some(out) = output_unless(grade_command(&root, &exercise.name), stop)? else {
             return Ok(());
@@ -214,17 +219,25 @@ mod tests {
     fn the_verdict_is_the_report_or_the_compiler_errors() {
         let v = verdict(b"Exercise 5 - x\n  passed\n", b"   Compiling exercises\n");
         assert!(v.starts_with("Exercise 5"), "{v}");
-        let v = verdict(
-            b"",
-            b"   Compiling exercises\nerror[E0308]: mismatched types\n --> exercises/src/ex05_cone_lobe.rs:3:5\n",
-        );
+        let v = verdict("Задача 5 — x\n".as_bytes(), b"");
+        assert!(v.starts_with("Задача 5"), "{v}");
+        let v = lang::with(lang::Lang::En, || {
+            verdict(
+                b"",
+                b"   Compiling exercises\nerror[E0308]: mismatched types\n --> exercises/src/ex05_cone_lobe.rs:3:5\n",
+            )
+        });
         assert!(
             v.contains("does not compile")
                 && v.contains("error[E0308]")
                 && !v.contains("Compiling"),
             "{v}"
         );
-        let cmd = grade_command(Path::new("/tmp"), "ex05_cone_lobe");
+        let cmd = lang::with(lang::Lang::Bg, || {
+            grade_command(Path::new("/tmp"), "ex05_cone_lobe")
+        });
+        let language = cmd.get_envs().find(|(k, _)| *k == lang::ENV);
+        assert_eq!(language.and_then(|(_, v)| v), Some("bg".as_ref()));
         let args: Vec<_> = cmd
             .get_args()
             .map(|a| a.to_string_lossy().into_owned())

@@ -17,7 +17,8 @@ fn passes(name: &str, r: Result<(), String>) {
     }
 }
 
-/// Fails, and the reason mentions `keyword` (case-insensitive).
+/// Fails, and the reason mentions `keyword` (case-insensitive; the reason
+/// in English).
 fn fails(name: &str, r: Result<(), String>, keyword: &str) {
     match r {
         Ok(()) => panic!("{name}: a wrong solution passed"),
@@ -31,18 +32,88 @@ fn fails(name: &str, r: Result<(), String>, keyword: &str) {
     }
 }
 
+/// The numbers of a message (`0.318`, `-2`, `90`), in order of size, to
+/// compare a message with its translation.
+fn numbers(message: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut current = String::new();
+    for c in message.chars().chain(std::iter::once(' ')) {
+        if c.is_ascii_digit() || (c == '.' && !current.is_empty()) {
+            current.push(c);
+        } else if !current.is_empty() {
+            out.push(current.trim_end_matches('.').to_string());
+            current.clear();
+        }
+    }
+    out.sort();
+    out
+}
+
+/// Fails in English with a reason that mentions `keyword` (as [`fails`]),
+/// and fails in Bulgarian naming the same mistake: the same messages (keys
+/// of `tests/messages/*.toml`) with the same numbers, in Bulgarian words,
+/// every placeholder filled. A grader whose messages are not yet keyed (the
+/// list of `bulgarian_everywhere` in check_texts) is checked in English only.
+fn fails_in_both(name: &str, run: impl Fn() -> Result<(), String>, keyword: &str) {
+    use grading::messages::{Lang, keys_used, lang};
+    let (en, en_keys) = lang::with(Lang::En, || keys_used(&run));
+    fails(name, en.clone(), keyword);
+    if en_keys.is_empty() {
+        return;
+    }
+    let (bg, bg_keys) = lang::with(Lang::Bg, || keys_used(&run));
+    let (Err(en), Err(bg)) = (en, bg) else {
+        panic!("{name}: fails in English but passes in Bulgarian");
+    };
+    println!("{name} (bg): {bg}");
+    assert_eq!(
+        en_keys, bg_keys,
+        "{name}: other messages in Bulgarian:\n{en}\n{bg}"
+    );
+    assert_ne!(en, bg, "{name}: the Bulgarian message is the English one");
+    assert!(
+        bg.chars()
+            .any(|c| ('а'..='я').contains(&c.to_lowercase().next().unwrap_or(c))),
+        "{name}: no Bulgarian in {bg}"
+    );
+    let holes: Vec<String> = grading::messages::catalog(Lang::Bg)
+        .values()
+        .flat_map(|t| lang::placeholders(t))
+        .filter(|p| bg.contains(&format!("{{{p}}}")) || bg.contains(&format!("{{{p}:")))
+        .collect();
+    assert!(holes.is_empty(), "{name}: unfilled {holes:?} in {bg}");
+    assert_eq!(
+        numbers(&en),
+        numbers(&bg),
+        "{name}: the Bulgarian message has other numbers than the English one:\n{en}\n{bg}"
+    );
+}
+
+/// `f` in English, whatever the locale: for the tests that read a message.
+fn english<R>(f: impl FnOnce() -> R) -> R {
+    grading::messages::lang::with(grading::messages::Lang::En, f)
+}
+
+/// `fails!(name, check, keyword)`: [`fails_in_both`], running the check in
+/// each language.
+macro_rules! fails {
+    ($name:expr, $r:expr, $keyword:expr $(,)?) => {
+        fails_in_both($name, || $r, $keyword)
+    };
+}
+
 #[test]
 fn ex01_stereo_eyes() {
     passes(
         "recomputed rightDir",
         ex01_stereo_eyes::check(correct::stereo_eyes),
     );
-    fails(
+    fails!(
         "swapped eyes",
         ex01_stereo_eyes::check(wrong::eyes_swapped),
         "swapped",
     );
-    fails(
+    fails!(
         "full separation each side",
         ex01_stereo_eyes::check(wrong::eyes_too_far),
         "twice too far apart",
@@ -55,12 +126,12 @@ fn ex02_anaglyph() {
         "channel by channel",
         ex02_anaglyph::check(correct::anaglyph),
     );
-    fails(
+    fails!(
         "swapped channels",
         ex02_anaglyph::check(wrong::anaglyph_swapped),
         "swapped",
     );
-    fails(
+    fails!(
         "no desaturation",
         ex02_anaglyph::check(wrong::anaglyph_saturated),
         "not desaturated",
@@ -70,12 +141,12 @@ fn ex02_anaglyph() {
 #[test]
 fn ex03_lambert() {
     passes("min of cosines", ex03_lambert::check(correct::lambert_eval));
-    fails(
+    fails!(
         "missing 1/π",
         ex03_lambert::check(wrong::lambert_no_inv_pi),
         "too bright by ×π",
     );
-    fails(
+    fails!(
         "cosine in the BRDF",
         ex03_lambert::check(wrong::lambert_with_cos),
         "cosine counts twice",
@@ -87,37 +158,37 @@ fn ex04_phong() {
     let (s, f) = (correct::phong_normalization, correct::phong_eval);
     passes("1/integral, mirrored wi", ex04_phong::check(s, f));
     // Issue 12, item 2: with (n+1)/(2π) energy is LOST, not created.
-    fails(
+    fails!(
         "(n+1)/2π",
         ex04_phong::check(wrong::phong_s_without_cosine, f),
         "(n+1)/(n+2)·ρ_s < ρ_s — energy is lost",
     );
-    fails(
+    fails!(
         "unnormalized",
         ex04_phong::check(wrong::phong_unnormalized, f),
         "unnormalized",
     );
-    fails(
+    fails!(
         "S(n) for integer n only",
         ex04_phong::check(wrong::phong_s_integer, f),
         "rounded to an integer",
     );
-    fails(
+    fails!(
         "π missing from S(n)",
         ex04_phong::check(wrong::phong_s_no_pi, f),
         "missing π",
     );
-    fails(
+    fails!(
         "no clamp",
         ex04_phong::check(s, wrong::phong_eval_unclamped),
         "a negative cosine went into the power",
     );
-    fails(
+    fails!(
         "cos α from the normal",
         ex04_phong::check(s, wrong::phong_eval_from_normal),
         "angle from the normal",
     );
-    fails(
+    fails!(
         "powi",
         ex04_phong::check(s, wrong::phong_eval_integer_power),
         "integer exponents only",
@@ -134,22 +205,22 @@ fn ex05_cone_lobe() {
         "f64",
         ex05_cone_lobe::check(correct::cone_normalization_f64),
     );
-    fails(
+    fails!(
         "one over the solid angle",
         ex05_cone_lobe::check(wrong::cone_solid_angle),
         "energy is lost",
     );
-    fails(
+    fails!(
         "small-angle approximation",
         ex05_cone_lobe::check(wrong::cone_small_angle),
         "sin θ_m ≈ θ_m",
     );
-    fails(
+    fails!(
         "Lambert's constant",
         ex05_cone_lobe::check(wrong::cone_lambert),
         "Lambert's constant",
     );
-    fails(
+    fails!(
         "π missing",
         ex05_cone_lobe::check(wrong::cone_no_pi),
         "missing π",
@@ -162,23 +233,23 @@ fn ex06_mirror() {
         "tangential reflect, f in f64",
         ex06_mirror::check(correct::reflect, correct::mirror_sample),
     );
-    fails(
+    fails!(
         "f = R",
         ex06_mirror::check(correct::reflect, wrong::mirror_f_is_r),
         "too dark at grazing angles",
     );
     // The weight f·|cos θ_i|/pdf_w is right, the pdf is not a probability.
-    fails(
+    fails!(
         "f = R, pdf_w = cos θ_i",
         ex06_mirror::check(correct::reflect, wrong::mirror_pdf_is_cos),
         "it equals cos θ_i",
     );
-    fails(
+    fails!(
         "reflect inwards",
         ex06_mirror::check(wrong::reflect_inwards, correct::mirror_sample),
         "into the surface",
     );
-    fails(
+    fails!(
         "a sample at wo.z = 0",
         ex06_mirror::check(correct::reflect, wrong::mirror_at_grazing),
         "no reflected direction above the surface",
@@ -195,28 +266,28 @@ fn ex07_cosine_sampling() {
         "inversion, numbers swapped",
         ex07_cosine_sampling::check(correct::cosine_inversion, correct::cosine_pdf),
     );
-    fails(
+    fails!(
         "uniform directions",
         ex07_cosine_sampling::check(wrong::cosine_but_uniform, correct::cosine_pdf),
         "UNIFORM directions",
     );
-    fails(
+    fails!(
         "r = u",
         ex07_cosine_sampling::check(wrong::cosine_no_sqrt, correct::cosine_pdf),
         "sin θ not squared",
     );
-    fails(
+    fails!(
         "sin θ = u",
         ex07_cosine_sampling::check(wrong::cosine_sin_not_squared, correct::cosine_pdf),
         "sin θ not squared",
     );
-    fails(
+    fails!(
         "cos³ directions",
         ex07_cosine_sampling::check(wrong::cosine_cubed, correct::cosine_pdf),
         "cos³θ",
     );
     let _ = std::fs::remove_file(ex07_cosine_sampling::histogram_path());
-    fails(
+    fails!(
         "φ = π·u",
         ex07_cosine_sampling::check(wrong::cosine_half_phi, correct::cosine_pdf),
         "half a turn",
@@ -224,17 +295,17 @@ fn ex07_cosine_sampling() {
     // The histograms of the student's directions, beside the other pictures.
     let size = pictures::png_size(&ex07_cosine_sampling::histogram_path());
     assert_eq!(size.ok(), Some((512, 384)));
-    fails(
+    fails!(
         "uniform pdf",
         ex07_cosine_sampling::check(correct::cosine_concentric, wrong::pdf_uniform),
         "uniform",
     );
-    fails(
+    fails!(
         "cos³ pdf",
         ex07_cosine_sampling::check(correct::cosine_concentric, wrong::pdf_cos_cubed),
         "cos³θ",
     );
-    fails(
+    fails!(
         "π missing from the pdf",
         ex07_cosine_sampling::check(correct::cosine_concentric, wrong::pdf_no_pi),
         "missing normalization",
@@ -248,27 +319,27 @@ fn ex08_phong_lobe_pdf() {
         ex08_phong_lobe_pdf::check(correct::phong_pdf_exp),
     );
     passes("f64", ex08_phong_lobe_pdf::check(correct::phong_pdf_f64));
-    fails(
+    fails!(
         "S(n) for the density",
         ex08_phong_lobe_pdf::check(wrong::phong_pdf_is_s),
         "S(n), the BRDF's normalization",
     );
-    fails(
+    fails!(
         "density of cos α alone",
         ex08_phong_lobe_pdf::check(wrong::phong_pdf_no_2pi),
         "spread of the directions over φ is missing",
     );
-    fails(
+    fails!(
         "per dα dφ",
         ex08_phong_lobe_pdf::check(wrong::phong_pdf_per_dalpha),
         "density per dα dφ",
     );
-    fails(
+    fails!(
         "π missing",
         ex08_phong_lobe_pdf::check(wrong::phong_pdf_no_pi),
         "missing π",
     );
-    fails(
+    fails!(
         "nonzero below",
         ex08_phong_lobe_pdf::check(wrong::phong_pdf_below),
         "have density 0",
@@ -289,27 +360,27 @@ fn ex09_albedo() {
         "stratified BRDF sampling",
         ex09_albedo::check(correct::albedo_stratified),
     );
-    fails(
+    fails!(
         "missing cosine",
         ex09_albedo::check(wrong::albedo_no_cos),
         "cosine θ_i is missing",
     );
-    fails(
+    fails!(
         "cosine of ω_o",
         ex09_albedo::check(wrong::albedo_cos_o),
         "that of ω_o",
     );
-    fails(
+    fails!(
         "missing pdf",
         ex09_albedo::check(wrong::albedo_no_pdf),
         "not divided by the density",
     );
-    fails(
+    fails!(
         "N − 1",
         ex09_albedo::check(wrong::albedo_n_minus_1),
         "divided by N − 1",
     );
-    fails(
+    fails!(
         "refused draws left out",
         ex09_albedo::check(wrong::albedo_refused_left_out),
         "a refused draw (Brdf::sample returned None) still counts",
@@ -322,39 +393,40 @@ fn ex10_naive_recursive() {
         "uniform branches",
         ex10_naive_recursive::check(correct::naive_uniform),
     );
-    fails(
+    fails!(
         "branches summed",
         ex10_naive_recursive::check(wrong::naive_not_averaged),
         "summed, not averaged",
     );
-    fails(
+    fails!(
         "missing cosine",
         ex10_naive_recursive::check(wrong::naive_no_cos),
         "furnace",
     );
-    fails(
+    fails!(
         "signed cosine",
         ex10_naive_recursive::check(wrong::naive_signed_cos),
         "= 0.5 − 0.25: the sign alternates",
     );
-    fails(
+    fails!(
         "the lecture's sign with our ω_i",
         ex10_naive_recursive::check(wrong::naive_other_sign),
         "sign flipped",
     );
-    fails(
+    fails!(
         "one bounce too many",
         ex10_naive_recursive::check(wrong::naive_one_bounce_more),
         "max_depth D counts the segments",
     );
     // Both give 0.5 at max_depth 2; max_depth 3 (0.75 against 0.5) tells
     // which mistake it is.
-    fails(
+    fails!(
         "one bounce too few",
         ex10_naive_recursive::check(wrong::naive_one_bounce_fewer),
         "your mean is that of max_depth 1",
     );
-    let e = ex10_naive_recursive::check(wrong::naive_emission_only_at_camera).unwrap_err();
+    let e =
+        english(|| ex10_naive_recursive::check(wrong::naive_emission_only_at_camera)).unwrap_err();
     assert!(
         e.contains("max_depth 2") && e.contains("only the camera ray's hit adds its emission"),
         "emission only at the camera's hit: {e}"
@@ -376,39 +448,39 @@ fn ex11_path_tracing() {
         "recursive",
         ex11_path_tracing::check(correct::path_recursive),
     );
-    fails(
+    fails!(
         "roulette without 1/q",
         ex11_path_tracing::check(wrong::path_rr_no_division),
         "survival probability",
     );
-    fails(
+    fails!(
         "emission at the first hit only",
         ex11_path_tracing::check(wrong::path_first_emission_only),
         "only the first hit",
     );
     // The issue's case: 0.375 = 0.5 − 0.25 + 0.125 at max_depth 3.
-    fails(
+    fails!(
         "signed cosine",
         ex11_path_tracing::check(wrong::path_signed_cos),
         "0.3750 = 0.5 − 0.25 + 0.125: the sign alternates",
     );
-    fails(
+    fails!(
         "the lecture's sign with our ω_i",
         ex11_path_tracing::check(wrong::path_other_sign),
         "sign flipped",
     );
-    fails(
+    fails!(
         "L_e without β",
         ex11_path_tracing::check(wrong::path_le_without_beta),
         "adds its emission unweighted",
     );
     // The white furnace's throughput stays 1: only the grey sphere sees it.
-    fails(
+    fails!(
         "escaped radiance without β",
         ex11_path_tracing::check(wrong::path_escape_without_beta),
         "adds the sky unweighted",
     );
-    fails(
+    fails!(
         "no cosine",
         ex11_path_tracing::check(wrong::path_no_cos),
         "cosine θ_i is missing",
@@ -429,17 +501,17 @@ fn ex12_nee() {
             correct::path_nee_recursive,
         ),
     );
-    fails(
+    fails!(
         "pdf not converted",
         ex12_nee::check(wrong::area_pdf_unchanged, direct, path),
         "per unit AREA",
     );
-    fails(
+    fails!(
         "edge-on light",
         ex12_nee::check(wrong::area_pdf_edge_on_infinite, direct, path),
         "edge-on",
     );
-    fails(
+    fails!(
         "signed cos θ_y in the conversion",
         ex12_nee::check(wrong::area_pdf_signed, direct, path),
         "a signed cos θ_y",
@@ -482,7 +554,7 @@ fn ex12_nee() {
             "negative behind a two-sided light",
         ),
     ] {
-        fails(name, ex12_nee::check(pdf, f, path), keyword);
+        fails!(name, ex12_nee::check(pdf, f, path), keyword);
     }
     for (name, p, keyword) in [
         (
@@ -516,7 +588,7 @@ fn ex12_nee() {
             "too dark with roulette",
         ),
     ] {
-        fails(name, ex12_nee::check(pdf, direct, p), keyword);
+        fails!(name, ex12_nee::check(pdf, direct, p), keyword);
     }
 }
 
@@ -563,7 +635,7 @@ fn ex13_mis() {
         ("swapped weights", wrong::mis_swapped, "swapped"),
         ("weights 1/2", wrong::mis_half, "spread of your estimates"),
     ] {
-        fails(name, ex13_mis::check(f), keyword);
+        fails!(name, ex13_mis::check(f), keyword);
     }
 }
 
@@ -636,7 +708,7 @@ fn ex14_light_tracing() {
         ),
         ("no shadow ray", ex14::no_visibility, "shadow test"),
     ] {
-        fails(name, ex14_light_tracing::check(f), keyword);
+        fails!(name, ex14_light_tracing::check(f), keyword);
     }
 }
 
@@ -807,62 +879,62 @@ fn ex18_instant_radiosity() {
         "variant B: roulette from the mean throughput, weight from the area",
         check(generate::<B, NONE>, gather::<B, NONE>),
     );
-    fails(
+    fails!(
         "signed G",
         check(generate::<A, NONE>, gather::<A, SIGNED>),
         "signed cosines",
     );
-    fails(
+    fails!(
         "the VPL's cosine with its incoming direction",
         check(generate::<A, NONE>, gather::<A, INCOMING>),
         "cosine at the wrong end",
     );
-    fails(
+    fails!(
         "r for r²",
         check(generate::<A, NONE>, gather::<A, R>),
         "r for r²",
     );
-    fails(
+    fails!(
         "clamp on the contribution",
         check(generate::<A, NONE>, gather::<A, CLAMP_LIGHT>),
         "applied to the contribution",
     );
-    fails(
+    fails!(
         "clamp where none is asked",
         check(generate::<A, NONE>, gather::<A, CLAMP_ALWAYS>),
         "where none is asked",
     );
-    fails(
+    fails!(
         "no shadow ray",
         check(generate::<A, NONE>, gather::<A, NO_SHADOW>),
         "shadow ray",
     );
-    fails(
+    fails!(
         "no cosine at a surface VPL",
         check(generate::<A, NONE>, gather::<A, NO_COS_SURFACE>),
         "cosine at a VPL on a surface is missing",
     );
-    fails(
+    fails!(
         "no cosine at any VPL",
         check(generate::<A, NONE>, gather::<A, NO_COS_Y>),
         "the cosine at the VPL's end is missing",
     );
-    fails(
+    fails!(
         "flux not divided by N",
         check(generate::<A, NOT_SHARED>, gather::<A, NONE>),
         "1/N of its path's flux",
     );
-    fails(
+    fails!(
         "no VPL on the light",
         check(generate::<A, NO_LIGHT_VPL>, gather::<A, NONE>),
         "direct light is missing",
     );
-    fails(
+    fails!(
         "VPLs on mirrors",
         check(generate::<A, SPECULAR_VPL>, gather::<A, NONE>),
         "specular hits",
     );
-    fails(
+    fails!(
         "roulette without division",
         check(generate::<A, ROULETTE_NO_DIV>, gather::<A, NONE>),
         "roulette without division",
@@ -878,30 +950,30 @@ fn ex16_metropolis() {
         check(ex16::reservoir),
     );
     passes("list and cumulative sum in f64", check(ex16::in_f64));
-    fails("ratio upside down", check(ex16::upside_down), "upside down");
-    fails(
+    fails!("ratio upside down", check(ex16::upside_down), "upside down");
+    fails!(
         "accepted state only",
         check(ex16::accepted_only),
         "only the state the chain moves to",
     );
-    fails("splats without b", check(ex16::no_b), "normalization b̂");
-    fails(
+    fails!("splats without b", check(ex16::no_b), "normalization b̂");
+    fails!(
         "splats without 1/I",
         check(ex16::not_over_i),
         "not divided by the scalar contribution",
     );
-    fails(
+    fails!(
         "small step without wrapping",
         check(ex16::no_wrap),
         "leave [0, 1)",
     );
-    fails("uniform start", check(ex16::uniform_start), "start-up bias");
-    fails(
+    fails!("uniform start", check(ex16::uniform_start), "start-up bias");
+    fails!(
         "b over the paths that found light",
         check(ex16::b_over_nonzero),
         "found light only",
     );
-    fails("b over n - 1", check(ex16::b_over_n_minus_one), "n/(n − 1)");
+    fails!("b over n - 1", check(ex16::b_over_n_minus_one), "n/(n − 1)");
 }
 
 /// The tables of deterministic answers the grader compares with: a change
@@ -975,7 +1047,7 @@ fn failure_pictures_are_enlarged() {
     use grading::compare::{EX12_CORNELL_DIRECT, compare_into};
     let dir = std::env::temp_dir().join(format!("grading-pictures-{}", std::process::id()));
     let wrong = exercises::plug::StudentDirect(fixtures::ex12::wrong::direct_area_measure);
-    let e = compare_into(&EX12_CORNELL_DIRECT, &wrong, 5, &dir).unwrap_err();
+    let e = english(|| compare_into(&EX12_CORNELL_DIRECT, &wrong, 5, &dir)).unwrap_err();
     assert!(e.contains(&dir.display().to_string()), "{e}");
     for suffix in ["student", "reference", "z"] {
         let path = dir.join(format!("ex12_cornell_direct_{suffix}.png"));
@@ -1131,9 +1203,7 @@ fn zero_variance_failures_give_a_relative_error_not_a_z() {
         ("constant", constant(&[0.5])),
         ("f32 rounding", constant(&[0.5, near])),
     ] {
-        let e = stats
-            .check("zero variance", Color::splat(0.4), |_| None)
-            .unwrap_err();
+        let e = english(|| stats.check("zero variance", Color::splat(0.4), |_| None)).unwrap_err();
         assert!(
             e.contains("your mean is 0.5000, expected 0.4000 (relative error +25.00%")
                 && e.contains("your estimates barely vary")
@@ -1146,16 +1216,14 @@ fn zero_variance_failures_give_a_relative_error_not_a_z() {
         );
     }
     // An exact answer of 0 has no relative error: the error itself.
-    let e = constant(&[0.5])
-        .check("zero variance at 0", Color::ZERO, |_| None)
+    let e = english(|| constant(&[0.5]).check("zero variance at 0", Color::ZERO, |_| None))
         .unwrap_err();
     assert!(
         e.contains("(error +0.5000; your estimates barely vary"),
         "{e}"
     );
     // A noisy estimator keeps its |z|.
-    let e = constant(&[0.3, 0.7])
-        .check("noisy", Color::splat(0.4), |_| None)
-        .unwrap_err();
+    let e =
+        english(|| constant(&[0.3, 0.7]).check("noisy", Color::splat(0.4), |_| None)).unwrap_err();
     assert!(e.contains("standard errors of your own"), "{e}");
 }

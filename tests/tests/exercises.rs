@@ -51,7 +51,7 @@ fn main() -> ExitCode {
     let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
     let results = grading::grade_selected(keep, threads, grading::TIMEOUT);
     if exercises::SOLUTIONS {
-        println!("(graded: the reference solutions, feature `solutions`)");
+        println!("{}", grading::tr!("report.graded_solutions"));
     }
     if filters.is_empty() {
         print!("{}", grading::progress_report(&results));

@@ -13,14 +13,32 @@ Usage: cargo run -q -p hint -- N [--all]
 
   N        the exercise number (1, 2, …), as the grader lists them
   --all    show every hint of exercise N at once
-  --reset  forget how many hints were shown (for every exercise)";
+  --reset  forget how many hints were shown (for every exercise)
+
+The language is Bulgarian or English: LESSON11_LANG=bg|en, else the system
+locale (LC_ALL, LC_MESSAGES, LANG starting with `bg`: Bulgarian).";
+
+const USAGE_BG: &str = "\
+Показва следващата подсказка за задача N, по една при всяко питане.
+Подсказките вървят от идеята към формулата; формулата винаги е последна,
+така че четенето напред разваля задачата.
+
+Употреба: cargo run -q -p hint -- N [--all]
+          cargo run -q -p hint -- --reset
+
+  N        номерът на задачата (1, 2, …), както ги изброява проверката
+  --all    показва наведнъж всички подсказки за задача N
+  --reset  забравя колко подсказки са показани (за всички задачи)
+
+Езикът е български или английски: LESSON11_LANG=bg|en, иначе езикът на
+системата (LC_ALL, LC_MESSAGES, LANG, започващ с `bg`: български).";
 
 fn main() -> ExitCode {
     let (mut number, mut all, mut reset) = (None, false, false);
     for a in std::env::args().skip(1) {
         match a.as_str() {
             "-h" | "--help" => {
-                say(&format!("{USAGE}\n"));
+                say(&format!("{}\n", hint::lang::pick(USAGE, USAGE_BG)));
                 return ExitCode::SUCCESS;
             }
             "--all" => all = true,
@@ -28,7 +46,13 @@ fn main() -> ExitCode {
             n => match n.parse::<usize>() {
                 Ok(n) if number.is_none() => number = Some(n),
                 _ => {
-                    eprintln!("hint: `{n}` is not an exercise number (try --help)");
+                    eprintln!(
+                        "{}",
+                        hint::lang::pick(
+                            format!("hint: `{n}` is not an exercise number (try --help)"),
+                            format!("hint: `{n}` не е номер на задача (вижте --help)"),
+                        )
+                    );
                     return ExitCode::from(2);
                 }
             },
@@ -36,11 +60,20 @@ fn main() -> ExitCode {
     }
     if reset {
         hint::reset();
-        say("Hint counters reset.\n");
+        say(hint::lang::pick(
+            "Hint counters reset.\n",
+            "Броячите на подсказките са нулирани.\n",
+        ));
         return ExitCode::SUCCESS;
     }
     let Some(number) = number else {
-        eprintln!("hint: which exercise? `cargo run -q -p hint -- N` (try --help)");
+        eprintln!(
+            "{}",
+            hint::lang::pick(
+                "hint: which exercise? `cargo run -q -p hint -- N` (try --help)",
+                "hint: коя задача? `cargo run -q -p hint -- N` (вижте --help)",
+            )
+        );
         return ExitCode::from(2);
     };
     match hint::next_hints(number, all) {

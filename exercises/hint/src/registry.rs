@@ -1,6 +1,7 @@
 //! The registry of the exercises: `info.toml`, in lecture order, with the
 //! title, the slides and the hints of each (rustlings' `info.toml`).
 
+use lang::Lang;
 use serde::Deserialize;
 
 /// One exercise of the registry.
@@ -10,7 +11,10 @@ pub struct Exercise {
     pub name: String,
     /// The student's file, relative to the `exercises` crate.
     pub file: String,
+    /// The title in English.
     pub title: String,
+    /// The title in Bulgarian.
+    pub title_bg: String,
     /// The slides it belongs to, for messages: the English titles and, in
     /// parentheses, the Bulgarian ones (`slides` and `slides_bg` joined).
     pub slide: String,
@@ -22,6 +26,8 @@ pub struct Exercise {
     /// Hints, shown one at a time: a direction first, then the key identity,
     /// then the formula.
     pub hints: Vec<String>,
+    /// The same hints in Bulgarian, one for each English one.
+    pub hints_bg: Vec<String>,
     /// The renderer's items that compute what the exercise asks (its answer,
     /// or the whole algorithm): a solution that uses one fails, naming it.
     /// A path (`raytracer::sampling::warp::cosine_hemisphere`: found used
@@ -37,9 +43,11 @@ struct Entry {
     name: String,
     file: String,
     title: String,
+    title_bg: String,
     slides: Vec<String>,
     slides_bg: Vec<String>,
     hints: Vec<String>,
+    hints_bg: Vec<String>,
     #[serde(default)]
     forbidden: Vec<String>,
 }
@@ -48,6 +56,31 @@ impl Exercise {
     /// The number of the exercise (1-based, from the name `exNN_…`).
     pub fn number(&self) -> Option<usize> {
         self.name.get(2..4)?.parse().ok()
+    }
+
+    /// The title in `lang`.
+    pub fn title_in(&self, lang: Lang) -> &str {
+        lang.pick(&self.title, &self.title_bg)
+    }
+
+    /// The title in the current language ([`lang::current`]).
+    pub fn title_here(&self) -> &str {
+        self.title_in(lang::current())
+    }
+
+    /// The hints in `lang`.
+    pub fn hints_in(&self, lang: Lang) -> &[String] {
+        lang.pick(&self.hints, &self.hints_bg)
+    }
+
+    /// The slides it belongs to, for messages in `lang`: in English the
+    /// English titles with the Bulgarian ones in parentheses ([`Self::slide`]),
+    /// in Bulgarian the Bulgarian deck's titles alone.
+    pub fn slide_in(&self, lang: Lang) -> String {
+        match lang {
+            Lang::En => self.slide.clone(),
+            Lang::Bg => self.slides_bg.join("; "),
+        }
     }
 
     /// The path of the reference solution, relative to the `exercises` crate.
@@ -83,15 +116,25 @@ pub fn parse(text: &str) -> Result<Vec<Exercise>, String> {
                     e.name
                 ));
             }
+            if e.title_bg.trim().is_empty() || e.hints_bg.len() != e.hints.len() {
+                return Err(format!(
+                    "exercises/info.toml: {} needs its title in Bulgarian (`title_bg`) and one Bulgarian hint in `hints_bg` for each English one in `hints` ({} English, {} Bulgarian)",
+                    e.name,
+                    e.hints.len(),
+                    e.hints_bg.len()
+                ));
+            }
             let slide = format!("{} ({})", e.slides.join("; "), e.slides_bg.join("; "));
             Ok(Exercise {
                 name: e.name,
                 file: e.file,
                 title: e.title,
+                title_bg: e.title_bg,
                 slide,
                 slides: e.slides,
                 slides_bg: e.slides_bg,
                 hints: e.hints,
+                hints_bg: e.hints_bg,
                 forbidden: e.forbidden,
             })
         })
@@ -113,8 +156,19 @@ mod tests {
     #[test]
     fn malformed_registry_is_an_error() {
         assert!(parse("[[exercises]]\nname = 1").is_err());
-        let unpaired = "[[exercises]]\nname = \"ex01_a\"\nfile = \"src/ex01_a.rs\"\ntitle = \"A\"\nslides = [\"One\", \"Two\"]\nslides_bg = [\"Едно\"]\nhints = [\"h\"]\n";
-        let e = parse(unpaired).unwrap_err();
+        let entry = |slides_bg: &str, hints_bg: &str| {
+            format!(
+                "[[exercises]]\nname = \"ex01_a\"\nfile = \"src/ex01_a.rs\"\ntitle = \"A\"\ntitle_bg = \"А\"\nslides = [\"One\", \"Two\"]\nslides_bg = {slides_bg}\nhints = [\"h\", \"i\"]\nhints_bg = {hints_bg}\n"
+            )
+        };
+        let both = "[\"Едно\", \"Две\"]";
+        let e = parse(&entry("[\"Едно\"]", both)).unwrap_err();
         assert!(e.contains("ex01_a") && e.contains("slides_bg"), "{e}");
+        // A hint missing in Bulgarian fails, naming the exercise.
+        let e = parse(&entry(both, "[\"х\"]")).unwrap_err();
+        assert!(e.contains("ex01_a") && e.contains("hints_bg"), "{e}");
+        let reg = parse(&entry(both, both)).unwrap();
+        assert_eq!(reg[0].title_in(Lang::Bg), "А");
+        assert_eq!(reg[0].hints_in(Lang::Bg)[1], "Две");
     }
 }

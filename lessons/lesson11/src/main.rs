@@ -25,6 +25,7 @@
 //! engine.rs        which engine runs the path tracer: the lecture's, or the wavefront one
 //! options.rs       scene, size, samples, seed, threads and output folder of a command line
 //! page/ plots/     the HTML page and its SVG plots
+//! language.rs      --lang bg|en, and the command line's help in Bulgarian
 //! console.rs       standard output that a closed pipe or a full disk cannot crash
 //! ```
 //!
@@ -43,6 +44,7 @@ mod console;
 mod engine;
 mod equal_time;
 mod integrators;
+mod language;
 mod metropolis;
 mod options;
 mod page;
@@ -53,7 +55,7 @@ mod tour;
 
 use std::process::ExitCode;
 
-use clap::{ArgMatches, Args, FromArgMatches, Parser, Subcommand};
+use clap::{ArgMatches, Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 
 use crate::tour::{Chapter, TourArgs};
 
@@ -67,6 +69,21 @@ use crate::tour::{Chapter, TourArgs};
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
+    /// The language: bg (Bulgarian) or en (English); default: LESSON11_LANG,
+    /// else the system locale (LANG starting with bg: Bulgarian).
+    #[arg(long, global = true, value_parser = ["bg", "en"])]
+    lang: Option<String>,
+}
+
+impl Cli {
+    /// Parses the command line in the language it asks for (see
+    /// [`language`]), `--help` included.
+    fn parse_localized() -> Cli {
+        let args: Vec<String> = std::env::args().collect();
+        let language = language::choose(&args);
+        let matches = language::localize(Cli::command(), language).get_matches_from(args);
+        Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit())
+    }
 }
 
 /// The subcommands, in the order `--help` lists them: the tour, one per
@@ -124,7 +141,7 @@ impl FromArgMatches for Command {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = Cli::parse_localized();
     raytracer::render::install_interrupt_handler();
     let result = match cli.command.unwrap_or(Command::Tour(TourArgs::default())) {
         Command::Tour(args) => chapters::run(&args),
@@ -142,13 +159,42 @@ fn main() -> ExitCode {
 
 #[cfg(test)]
 mod tests {
-    use clap::CommandFactory;
-
     use super::*;
 
     #[test]
     fn the_command_line_passes_claps_own_checks() {
         Cli::command().debug_assert();
+        for l in lang::Lang::ALL {
+            language::localize(Cli::command(), l).debug_assert();
+        }
+    }
+
+    #[test]
+    fn help_speaks_bulgarian_with_lang_bg() {
+        let mut cli = language::localize(Cli::command(), lang::Lang::Bg);
+        let help = cli.render_long_help().to_string();
+        for word in [
+            "Употреба:",
+            "Команди:",
+            "Опции:",
+            "Лекция 11",
+            "Стереоскопия",
+            "Показва помощта",
+            "Езикът",
+        ] {
+            assert!(help.contains(word), "no {word:?} in:\n{help}");
+        }
+        // Every command has its Bulgarian line.
+        for sub in cli.get_subcommands() {
+            let about = sub.get_about().map(|a| a.to_string()).unwrap_or_default();
+            assert!(
+                about.chars().any(|c| ('а'..='я').contains(&c)),
+                "`{}` has no Bulgarian help: {about}",
+                sub.get_name()
+            );
+        }
+        let mut en = language::localize(Cli::command(), lang::Lang::En);
+        assert!(en.render_long_help().to_string().contains("Usage:"));
     }
 
     #[test]

@@ -4,11 +4,39 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+/// `lesson11 ARGS` in English, whatever the locale of the machine.
 fn lesson11(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_lesson11"))
+        .env("LESSON11_LANG", "en")
         .args(args)
         .output()
         .expect("lesson11 runs")
+}
+
+/// `lesson11 --help` speaks Bulgarian under a Bulgarian locale or with
+/// `--lang bg`, English under `LANG=C` or with `--lang en`.
+#[test]
+fn the_language_comes_from_lang_or_the_locale() {
+    let help = |vars: &[(&str, &str)], args: &[&str]| {
+        let mut c = Command::new(env!("CARGO_BIN_EXE_lesson11"));
+        for v in ["LESSON11_LANG", "LC_ALL", "LC_MESSAGES", "LANG"] {
+            c.env_remove(v);
+        }
+        let o = c
+            .envs(vars.iter().copied())
+            .args(args)
+            .output()
+            .expect("lesson11 runs");
+        assert!(o.status.success(), "{args:?}");
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    let bg = ("LANG", "bg_BG.UTF-8");
+    assert!(help(&[bg], &["--help"]).contains("Употреба:"));
+    assert!(help(&[("LANG", "C")], &["--help"]).contains("Usage:"));
+    assert!(help(&[("LANG", "C")], &["--lang", "bg", "--help"]).contains("Употреба:"));
+    assert!(help(&[bg], &["--lang", "en", "--help"]).contains("Usage:"));
+    assert!(help(&[bg, ("LESSON11_LANG", "en")], &["path", "--help"]).contains("Usage:"));
+    assert!(help(&[bg], &["path", "--help"]).contains("Проби на пиксел"));
 }
 
 fn temp_dir(name: &str) -> PathBuf {

@@ -150,7 +150,14 @@ fn run_alone(matches: &ArgMatches) -> Result<()> {
     let mut page = Page::new("Lecture 11: stereoscopy");
     page.sections.push(section);
     let index = page.write(&dir, "index.html")?;
-    crate::console::say!("open {} to see the pictures", index.display());
+    let index = index.display();
+    crate::console::say!(
+        "{}",
+        lang::pick(
+            format!("open {index} to see the pictures"),
+            format!("отворете {index}, за да видите картините"),
+        )
+    );
     Ok(())
 }
 

@@ -128,15 +128,25 @@ fn against_mitsuba(tour: &Tour, s: &mut ChapterOutput, ours: &Image, path: &Pict
     let reference = match mitsuba_cornell() {
         Ok(r) => r,
         Err(e) => {
-            crate::console::say!("  note: {e:#}; no comparison with Mitsuba");
+            crate::console::say!(
+                "{}",
+                lang::pick(
+                    format!("  note: {e:#}; no comparison with Mitsuba"),
+                    format!("  бележка: {e:#}; няма сравнение с Mitsuba"),
+                )
+            );
             return Ok(());
         }
     };
     let (w, h) = (ours.width, ours.height);
     let Some(mitsuba) = reference.at_size(w, h) else {
+        let (mw, mh) = (reference.mean.width, reference.mean.height);
         crate::console::say!(
-            "  note: Mitsuba's image is {}×{}, which {w}×{h} does not divide: no comparison",
-            reference.mean.width, reference.mean.height
+            "{}",
+            lang::pick(
+                format!("  note: Mitsuba's image is {mw}×{mh}, which {w}×{h} does not divide: no comparison"),
+                format!("  бележка: картината на Mitsuba е {mw}×{mh}, а {w}×{h} не я дели: няма сравнение"),
+            )
         );
         return Ok(());
     };

@@ -27,8 +27,17 @@ fn render(tour: &Tour) -> Result<Section> {
     // Said, not silently ignored (`brdf -s furnace` rendered the gallery).
     if let Some(other) = &tour.overrides.scene {
         eprintln!(
-            "note: --scene {other} does not apply to the BRDF chapter: it shows the BRDF gallery \
-             (brdf-gallery) and plots the lobes"
+            "{}",
+            lang::pick(
+                format!(
+                    "note: --scene {other} does not apply to the BRDF chapter: it shows the BRDF gallery \
+                     (brdf-gallery) and plots the lobes"
+                ),
+                format!(
+                    "бележка: --scene {other} не важи за главата за BRDF: тя показва галерията от BRDF-и \
+                     (brdf-gallery) и рисува лобовете"
+                ),
+            )
         );
     }
     let mut s = tour.chapter(

@@ -78,10 +78,13 @@ pub fn run_chapters(args: &TourArgs, only: Option<&str>) -> Result<()> {
     }
     let file = only.map_or_else(|| "index.html".to_string(), |name| format!("{name}.html"));
     let index = page.write(&tour.out, &file)?;
+    let (seconds, index) = (start.elapsed().as_secs_f64(), index.display());
     crate::console::say!(
-        "\nThat took {:.1} s. Open {} to see the pictures.",
-        start.elapsed().as_secs_f64(),
-        index.display()
+        "{}",
+        lang::pick(
+            format!("\nThat took {seconds:.1} s. Open {index} to see the pictures."),
+            format!("\nОтне {seconds:.1} s. Отворете {index}, за да видите картините."),
+        )
     );
     Ok(())
 }

@@ -55,7 +55,11 @@ pub fn run_exercises(args: &ExercisesArgs) -> Result<()> {
     let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
     let results = grading::grade_all(threads, grading::TIMEOUT);
     crate::console::say!(
-        "Grade: `cargo test -p grading --test exercises` · on every save: `lesson11 exercises --watch` · hints: `cargo run -q -p hint -- N` · a solution once it passes: `lesson11 solution N`"
+        "{}",
+        lang::pick(
+            "Grade: `cargo test -p grading --test exercises` · on every save: `lesson11 exercises --watch` · hints: `cargo run -q -p hint -- N` · a solution once it passes: `lesson11 solution N`",
+            "Проверка: `cargo test -p grading --test exercises` · при всяко записване: `lesson11 exercises --watch` · подсказки: `cargo run -q -p hint -- N` · решението, щом вашето минава: `lesson11 solution N`",
+        )
     );
     crate::console::say_inline!("{}", grading::progress_report(&results));
     Ok(())
@@ -66,7 +70,13 @@ pub fn run_exercises(args: &ExercisesArgs) -> Result<()> {
 pub fn run_hint(args: &HintArgs) -> Result<()> {
     if args.reset {
         hint::reset();
-        crate::console::say!("Hint counters reset.");
+        crate::console::say!(
+            "{}",
+            lang::pick(
+                "Hint counters reset.",
+                "Броячите на подсказките са нулирани."
+            )
+        );
         return Ok(());
     }
     let text = hint::next_hints(args.number, args.all).map_err(|e| anyhow!(e))?;
@@ -81,19 +91,30 @@ pub fn run_solution(args: &SolutionArgs) -> Result<()> {
             let path = exercises::crate_dir().join(e.solution_file());
             let text = std::fs::read_to_string(&path)
                 .with_context(|| format!("cannot read {}", path.display()))?;
+            let (number, path) = (args.number, path.display());
             crate::console::say!(
-                "Your exercise {} passes. The reference solution ({}):\n",
-                args.number,
-                path.display()
+                "{}",
+                lang::pick(
+                    format!("Your exercise {number} passes. The reference solution ({path}):\n"),
+                    format!("Задача {number} при вас минава. Еталонното решение ({path}):\n"),
+                )
             );
             crate::console::say_inline!("{text}");
             Ok(())
         }
-        other => bail!(
-            "exercise {} is {}: the solution is shown once it passes (`cargo test`, hints: `cargo run -q -p hint -- {}`)",
-            args.number,
-            other.status(),
-            args.number
-        ),
+        other => {
+            let (number, status) = (args.number, other.status());
+            bail!(
+                "{}",
+                lang::pick(
+                    format!(
+                        "exercise {number} is {status}: the solution is shown once it passes (`cargo test`, hints: `cargo run -q -p hint -- {number}`)"
+                    ),
+                    format!(
+                        "задача {number}: {status}; решението се показва, щом тя минава (`cargo test`, подсказки: `cargo run -q -p hint -- {number}`)"
+                    ),
+                )
+            )
+        }
     }
 }

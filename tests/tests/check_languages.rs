@@ -1,0 +1,212 @@
+//! Both languages of the toolkit, checked: every message of the grader
+//! exists in English and in Bulgarian with the same placeholders (a missing
+//! one is named), every key the grader uses exists, the graders whose
+//! messages are still English only are listed, and the Bulgarian texts use
+//! the glossary's words (`lang/glossary.toml`). That a Bulgarian failure
+//! names the same mistake as the English one is checked on the wrong
+//! fixtures, in `check_grader.rs` (`fails_in_both`).
+
+use std::collections::BTreeSet;
+
+use grading::messages::{Lang, catalog, keys_in_source, mismatches};
+use grading::texts::repo_root;
+
+/// The grader's sources (`tests/src/*.rs`), name and text.
+fn grader_sources() -> Vec<(String, String)> {
+    sources_in("src")
+}
+
+/// The Rust files of `tests/{folder}`, name and text.
+fn sources_in(folder: &str) -> Vec<(String, String)> {
+    let dir = repo_root().join("tests").join(folder);
+    let mut out: Vec<(String, String)> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
+        .map(|p| {
+            let name = p
+                .file_name()
+                .unwrap_or_default()
+                .to_string_lossy()
+                .into_owned();
+            (name, std::fs::read_to_string(&p).unwrap_or_default())
+        })
+        .collect();
+    out.sort();
+    out
+}
+
+#[test]
+fn messages_exist_in_both_languages() {
+    let (en, bg) = (catalog(Lang::En), catalog(Lang::Bg));
+    let problems = mismatches(en, bg);
+    assert!(
+        problems.is_empty(),
+        "the messages of the two languages differ:\n{}",
+        problems.join("\n")
+    );
+    let mut used = BTreeSet::new();
+    for (file, source) in grader_sources().into_iter().chain(sources_in("tests")) {
+        for key in keys_in_source(&source) {
+            assert!(
+                en.contains_key(&key),
+                "tests/src/{file}: message `{key}` is in neither tests/messages/en.toml nor bg.toml"
+            );
+            used.insert(key);
+        }
+    }
+    let unused: Vec<&String> = en.keys().filter(|k| !used.contains(*k)).collect();
+    assert!(unused.is_empty(), "messages no grader uses: {unused:?}");
+}
+
+/// The graders whose messages are still written in English in their code
+/// (a `format!("…")` of English prose, or an English literal made a
+/// `String`), not keyed in `tests/messages/`: what remains to translate.
+/// The list must stay exact, so it only shrinks.
+const ENGLISH_ONLY: &[&str] = &[
+    "ex14_light_tracing.rs",
+    "ex15_bdpt.rs",
+    "ex16_metropolis.rs",
+    "ex17_photon_mapping.rs",
+    "ex18_instant_radiosity.rs",
+];
+
+/// Sources whose messages are for the instructor (the checks of the texts
+/// and of the messages themselves), not the student.
+const INSTRUCTOR_ONLY: &[&str] = &["messages.rs", "texts.rs"];
+
+/// Whether a string literal's text reads as English prose (three words;
+/// not a scene file written in the grader, `[camera]\nposition = …`).
+fn english_prose(text: &str) -> bool {
+    !text.starts_with('[')
+        && text.contains(' ')
+        && text
+            .split(|c: char| !c.is_ascii_alphabetic())
+            .filter(|w| w.len() >= 2 && w.chars().all(|c| c.is_ascii_lowercase()))
+            .count()
+            >= 3
+}
+
+/// The English prose a source makes into messages (outside its tests).
+fn english_messages(source: &str) -> Vec<String> {
+    let code = source.split("#[cfg(test)]").next().unwrap_or_default();
+    let mut out = Vec::new();
+    let mut rest = code;
+    while let Some(i) = rest.find('"') {
+        let before = rest[..i].trim_end();
+        let after = &rest[i + 1..];
+        let mut end = 0;
+        let bytes = after.as_bytes();
+        while end < bytes.len() && (bytes[end] != b'"' || (end > 0 && bytes[end - 1] == b'\\')) {
+            end += 1;
+        }
+        let text = &after[..end.min(after.len())];
+        let next = after.get(end + 1..).unwrap_or_default().trim_start();
+        let made = before.ends_with("format!(")
+            || next.starts_with(".to_string()")
+            || next.starts_with(".into()")
+            || before.ends_with("Failed(")
+            || before.ends_with("Err(");
+        if made && english_prose(text) {
+            out.push(text.chars().take(60).collect());
+        }
+        rest = after.get(end + 1..).unwrap_or_default();
+    }
+    out
+}
+
+#[test]
+fn bulgarian_everywhere_the_list_says() {
+    let english: Vec<String> = grader_sources()
+        .into_iter()
+        .filter(|(name, _)| !INSTRUCTOR_ONLY.contains(&name.as_str()))
+        .filter(|(name, source)| {
+            let found = english_messages(source);
+            if !found.is_empty() {
+                println!(
+                    "{name}: {} English message(s), e.g. {:?}",
+                    found.len(),
+                    found[0]
+                );
+            }
+            !found.is_empty()
+        })
+        .map(|(name, _)| name)
+        .collect();
+    assert_eq!(
+        english, ENGLISH_ONLY,
+        "the graders whose messages are English only (left) and the list ENGLISH_ONLY (right) differ"
+    );
+    assert!(english_messages("Err(format!(\"your code is wrong\"))").len() == 1);
+    assert!(english_messages("tr!(\"ex03.albedo\", x = format!(\"{x:.3}\"))").is_empty());
+}
+
+/// The glossary's terms: (English, Bulgarian, words to avoid).
+fn glossary() -> Vec<(String, String, Vec<String>)> {
+    let table: toml::Table = toml::from_str(lang::GLOSSARY).expect("lang/glossary.toml parses");
+    let terms = table["term"].as_array().expect("[[term]] entries");
+    terms
+        .iter()
+        .map(|t| {
+            let s = |k: &str| {
+                t.get(k)
+                    .and_then(|v| v.as_str())
+                    .unwrap_or_default()
+                    .to_string()
+            };
+            let avoid = t
+                .get("avoid")
+                .and_then(|v| v.as_array())
+                .map(|a| {
+                    a.iter()
+                        .filter_map(|w| w.as_str().map(str::to_string))
+                        .collect()
+                })
+                .unwrap_or_default();
+            (s("en"), s("bg"), avoid)
+        })
+        .collect()
+}
+
+#[test]
+fn bulgarian_texts_use_the_glossary_words() {
+    let terms = glossary();
+    assert!(
+        terms.len() > 20
+            && terms
+                .iter()
+                .all(|(en, bg, _)| !en.is_empty() && !bg.is_empty())
+    );
+    let mut texts: Vec<(String, String)> = catalog(Lang::Bg)
+        .iter()
+        .map(|(k, v)| (format!("tests/messages/bg.toml {k}"), v.clone()))
+        .collect();
+    for e in exercises::registry() {
+        texts.push((
+            format!("exercises/info.toml {} title_bg", e.name),
+            e.title_bg.clone(),
+        ));
+        for (i, h) in e.hints_bg.iter().enumerate() {
+            texts.push((
+                format!("exercises/info.toml {} hint {}", e.name, i + 1),
+                h.clone(),
+            ));
+        }
+    }
+    let mut found = Vec::new();
+    for (place, text) in &texts {
+        let lower = text.to_lowercase();
+        for (en, bg, avoid) in &terms {
+            for w in avoid.iter().filter(|w| lower.contains(&w.to_lowercase())) {
+                found.push(format!(
+                    "{place}: \"{w}\" for {en} (the glossary says \"{bg}\")"
+                ));
+            }
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "words the glossary avoids:\n{}",
+        found.join("\n")
+    );
+}
