@@ -5,6 +5,7 @@
 //! ends with an error saying that the figures above are all it measured.
 
 mod biased;
+mod interrupted;
 mod mitsuba;
 mod rays;
 
@@ -13,19 +14,11 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use clap::Args;
 use raytracer::integrator::{Bdpt, Direct, DirectStrategy, Integrator, LightTracer, PathTracer};
-use raytracer::render::{Metropolis, RenderOptions, interrupted, render, render_metropolis};
+use raytracer::render::{Metropolis, RenderOptions, render, render_metropolis};
 use raytracer::scene::Scene;
 use raytracer::wavefront::WavefrontPathTracer;
 
-/// The error of an interrupted benchmark, once `cut_short` (a measurement
-/// that Ctrl-C ended early) or the interrupt flag says so: nothing after
-/// it is measured, and its figure is not printed.
-fn stop_if_interrupted(cut_short: bool) -> Result<()> {
-    if cut_short || interrupted() {
-        bail!("interrupted: the figures above are all that was measured");
-    }
-    Ok(())
-}
+use interrupted::stop_if_interrupted;
 
 /// Measure primary-ray throughput on large meshes, direct-lighting and path
 /// tracing samples per second on the Cornell box (256×256) with the ratio to

@@ -16,7 +16,7 @@ use raytracer::render::sppm::render_sppm_with_stop;
 use raytracer::render::{RenderOptions, interrupt_flag, render};
 use raytracer::scene::Scene;
 
-use super::stop_if_interrupted;
+use super::interrupted::stop_if_interrupted;
 
 /// Light paths traced for the photon figures.
 const PHOTON_PATHS: u64 = 400_000;

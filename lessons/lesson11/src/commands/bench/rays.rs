@@ -21,7 +21,7 @@ use raytracer::geometry::{Geometry, Hit, Mesh, Shape};
 use raytracer::math::{Ray, Vec3A};
 use raytracer::render::interrupted;
 
-use super::stop_if_interrupted;
+use super::interrupted::stop_if_interrupted;
 
 const RES: usize = 1000;
 const REPS: usize = 5;
