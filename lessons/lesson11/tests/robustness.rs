@@ -173,7 +173,7 @@ fn images_too_big_for_memory_are_refused() {
     refused(
         "light-field",
         &args,
-        "a light field of 100000×100000 views of 16×16 needs about",
+        "a light field of 100000×100000 views of 32×32 needs about",
     );
 }
 
