@@ -94,6 +94,9 @@ struct Target<'a> {
     pixel: &'a dyn Fn(f64) -> usize,
     bad: Cell<Option<String>>,
     calls: Cell<u64>,
+    /// Numbers evaluated that lie exactly on the edge of [0, 1): 0, or
+    /// within 1e-5 of 1 (where a clamped step stops).
+    on_edge: Cell<u64>,
 }
 
 impl<'a> Target<'a> {
@@ -103,6 +106,7 @@ impl<'a> Target<'a> {
             pixel,
             bad: Cell::new(None),
             calls: Cell::new(0),
+            on_edge: Cell::new(0),
         }
     }
 
@@ -119,6 +123,11 @@ impl<'a> Target<'a> {
                 "your chain evaluated a state whose number {d} is {v} (evaluation {call}): the numbers leave [0, 1), the unit hypercube of primary sample space — a small step near 0 or 1 must stay inside it, and symmetric"
             ));
         }
+        let edge = u
+            .iter()
+            .filter(|&&v| v == 0.0 || (EDGE..1.0).contains(&v))
+            .count();
+        self.on_edge.set(self.on_edge.get() + edge as u64);
         let u0 = (u.first().copied().unwrap_or(0.0) as f64).clamp(0.0, 1.0 - 1e-9);
         let value = (self.f)(u0);
         PathSample {
@@ -183,12 +192,45 @@ fn half(u: f64) -> usize {
 
 pub fn check(chain: MetropolisChainFn) -> Result<(), String> {
     check_constant(chain)?;
+    check_symmetric_steps(chain)?;
     check_black(chain)?;
     check_half_dark(chain)?;
     check_expected_values(chain)?;
     check_chain(chain)?;
     check_start(chain)?;
     check_door(chain)
+}
+
+/// Where a clamped small step stops below 1: `1 − 1e-5` and above.
+const EDGE: f32 = 1.0 - 1e-5;
+
+/// Proposals on the edge of [0, 1) that the check allows: a fresh uniform
+/// number lands within 1e-5 of 1 (or at 0) with probability about 1e-5, and
+/// the check draws about 1,300 of them, so 0.013 are expected and 5 or more
+/// come with probability below 1e-10. A step clamped at the edge puts
+/// hundreds there.
+const EDGE_ALLOWED: u64 = 4;
+
+/// A target whose light sits near both ends of [0, 1), where small steps
+/// cross the edge often: a step that stops at the edge (clamped) is not
+/// symmetric, and shows as proposals exactly on it.
+pub fn check_symmetric_steps(chain: MetropolisChainFn) -> Result<(), String> {
+    let near_edges = |u: f64| {
+        if !(0.05..0.95).contains(&u) {
+            1.0
+        } else {
+            0.02
+        }
+    };
+    let target = Target::new(&near_edges, &half);
+    run(chain, &target, &settings(16, 4000, 0.1, 0.1), 2, 40)?;
+    let on_edge = target.on_edge.get();
+    if on_edge > EDGE_ALLOWED {
+        return Err(format!(
+            "a target whose light sits near 0 and near 1, 4000 steps: {on_edge} of the numbers your chain evaluated lie exactly on the edge of [0, 1) (0, or within 1e-5 of 1), where fresh numbers almost never fall — a small step that would leave the hypercube stops at its edge. Such a step is not symmetric: the chance of stepping from x to the edge is not the chance of stepping back, so the chain no longer visits u in proportion to f near 0 and 1"
+        ));
+    }
+    Ok(())
 }
 
 /// `f ≡ 3`: the image's total luminance is `b̂ = 3` exactly.

@@ -52,8 +52,11 @@ use raytracer::sampling::Sampler;
 use raytracer::sampling::warp::concentric_disk;
 use raytracer::scene::{Interaction, Scene};
 
+use crate::ex18_instant_radiosity::{
+    TWO_LIGHTS_FLUX, two_lights_choice_left_out, two_lights_scene,
+};
 use crate::pictures::write_enlarged;
-use crate::stats::{MeanVar, fmt3, output_dir};
+use crate::stats::{MeanVar, fmt3, output_dir, ratio_near};
 
 /// The signatures of exercise 17.
 pub use exercises::plug::{PhotonRadianceFn as RadianceFn, TracePhotonPathFn as TraceFn};
@@ -581,6 +584,52 @@ pub fn check_tracing(trace: TraceFn) -> Result<(), String> {
 // ---------------------------------------------------------------------------
 // 3. The whole photon mapper in the furnace.
 
+/// Light paths traced in the two-light box, and the N that shares their flux.
+const TWO_LIGHT_TRACED: u64 = 400;
+const TWO_LIGHT_PATHS: u64 = 16;
+
+/// Two lights of unequal power in a closed box (exercise 18's
+/// [`crate::ex18_instant_radiosity::TWO_LIGHTS_SCENE`]): the photon one
+/// segment from the light, times the N paths that share the flux, must
+/// carry the whole emitted flux, whichever light the path picked. Checked
+/// by [`MeanVar::check`] (|z| ≤ 5.5: a correct tracer fails with
+/// probability below 1e-7 per channel). Roulette from the second bounce
+/// ends the paths in the closed box; it does not touch the first photons.
+pub fn check_two_lights(trace: TraceFn) -> Result<(), String> {
+    let scene = two_lights_scene()?;
+    let choice_left_out = two_lights_choice_left_out(&scene);
+    let mut first = MeanVar::default();
+    let mut photons = Vec::new();
+    for i in 0..TWO_LIGHT_TRACED {
+        photons.clear();
+        let mut sampler = Sampler::new(17, i, photon_sample_index(0));
+        trace(&scene, TWO_LIGHT_PATHS, 2, &mut sampler, &mut photons);
+        let flux: Vec3A = photons
+            .iter()
+            .filter(|p| p.segments == 1)
+            .map(|p| Vec3A::from(p.power))
+            .sum();
+        first.add(flux * TWO_LIGHT_PATHS as f32);
+    }
+    first.check(
+        &format!(
+            "two lights of unequal power in a closed box, picked with probabilities {:.1} and {:.1}: a path's photon one segment from the light, times the N = {TWO_LIGHT_PATHS} paths that share the flux, should carry the whole emitted flux π A (L₁ + L₂) = {TWO_LIGHTS_FLUX:.3} W",
+            scene.light_pmf(0),
+            scene.light_pmf(1)
+        ),
+        Color::splat(TWO_LIGHTS_FLUX),
+        |r| {
+            Some(if ratio_near(r, choice_left_out) {
+                format!(
+                    "×{r:.3}: each light's flux arrives weighted by how often that light is picked — the choice of the light is part of how the path was made"
+                )
+            } else {
+                format!("×{r:.3}; no usual mistake gives this mean")
+            })
+        },
+    )
+}
+
 /// Layer 3: L = 1 in the furnace, with the k nearest and with a radius.
 pub fn check_furnace(trace: TraceFn, radiance: RadianceFn) -> Result<(), String> {
     let mut furnace = builtin("furnace")?;
@@ -935,6 +984,7 @@ pub fn compare_caustic_z(
 pub fn check(trace: TraceFn, radiance: RadianceFn) -> Result<(), String> {
     check_estimate(radiance)?;
     check_tracing(trace)?;
+    check_two_lights(trace)?;
     check_furnace(trace, radiance)?;
     compare_caustic(trace, radiance, 11)
 }

@@ -38,7 +38,7 @@ use raytracer::scene::{Interaction, Scene, SceneOrigin, load_str};
 
 use crate::compare::{EX18_CORNELL, EX18_CORNELL_CLAMPED, compare};
 use crate::ex10_naive_recursive::{LE, RHO, series, small_scene};
-use crate::stats::{MeanVar, Mistake, fmt3, recognise};
+use crate::stats::{MeanVar, Mistake, fmt3, ratio_near, recognise};
 
 /// The bound on G of the clamped Cornell comparison (the slides' g_max).
 pub const CLAMP: f32 = 0.5;
@@ -70,6 +70,7 @@ pub fn check(generate: GenerateVplsFn, gather: GatherFn) -> Result<(), String> {
     check_gather(gather)?;
     check_furnace(generate, gather)?;
     check_mirror(generate)?;
+    check_two_lights(generate)?;
     compare(&EX18_CORNELL, &student(generate, gather, None)).map_err(|e| {
         format!("instant radiosity without clamping (max_depth {MAX_DEPTH}), against the path tracer: {e}")
     })?;
@@ -671,6 +672,201 @@ fn check_mirror(generate: GenerateVplsFn) -> Result<(), String> {
         ));
     }
     Ok(())
+}
+
+// ---------------------------------------------------------------------------
+// Two lights.
+
+/// Two lights of unequal power in a closed box of grey Lambertian walls
+/// (one-sided quad lights of 0.5 m × 0.5 m: the upper one emits 8 and faces
+/// down, the lower one emits 2 and faces up), so the scene picks them, by
+/// power, with probabilities 0.8 and 0.2. Every other scene of the grader
+/// has one light, picked with probability 1: there a flux or a weight that
+/// leaves out the light's choice is right by chance. Exercise 17 uses it too.
+pub const TWO_LIGHTS_SCENE: &str = r#"
+[camera]
+position = [0, 0, 0.5]
+look_at = [0, 0, -1]
+up = [0, 1, 0]
+fov = 60
+
+[render]
+width = 8
+height = 8
+
+[materials.grey]
+type = "lambert"
+albedo = 0.5
+
+[[shapes]]
+name = "floor"
+type = "quad"
+origin = [-1, -1, -1]
+edge1 = [0, 0, 2]
+edge2 = [2, 0, 0]
+material = "grey"
+
+[[shapes]]
+name = "ceiling"
+type = "quad"
+origin = [-1, 1, -1]
+edge1 = [2, 0, 0]
+edge2 = [0, 0, 2]
+material = "grey"
+
+[[shapes]]
+name = "left"
+type = "quad"
+origin = [-1, -1, -1]
+edge1 = [0, 2, 0]
+edge2 = [0, 0, 2]
+material = "grey"
+
+[[shapes]]
+name = "right"
+type = "quad"
+origin = [1, -1, -1]
+edge1 = [0, 0, 2]
+edge2 = [0, 2, 0]
+material = "grey"
+
+[[shapes]]
+name = "back"
+type = "quad"
+origin = [-1, -1, -1]
+edge1 = [2, 0, 0]
+edge2 = [0, 2, 0]
+material = "grey"
+
+[[shapes]]
+name = "front"
+type = "quad"
+origin = [-1, -1, 1]
+edge1 = [0, 2, 0]
+edge2 = [2, 0, 0]
+material = "grey"
+
+[[shapes]]
+name = "upper light"
+type = "quad"
+origin = [-0.25, 0.9, -0.25]
+edge1 = [0.5, 0, 0]
+edge2 = [0, 0, 0.5]
+material = "grey"
+emission = 8
+
+[[shapes]]
+name = "lower light"
+type = "quad"
+origin = [-0.25, -0.9, -0.25]
+edge1 = [0, 0, 0.5]
+edge2 = [0.5, 0, 0]
+material = "grey"
+emission = 2
+"#;
+
+/// The area of each light of [`TWO_LIGHTS_SCENE`] (m²).
+pub const TWO_LIGHTS_AREA: f32 = 0.25;
+
+/// The flux the two lights of [`TWO_LIGHTS_SCENE`] emit together: a
+/// one-sided Lambertian emitter of area A and radiance L emits π A L, so
+/// π · 0.25 · (8 + 2) W. The box is closed and has no mirror: all of it
+/// lands on a surface after one segment.
+pub const TWO_LIGHTS_FLUX: f32 = std::f32::consts::PI * TWO_LIGHTS_AREA * 10.0;
+
+/// [`TWO_LIGHTS_SCENE`], built.
+pub fn two_lights_scene() -> Result<Scene, String> {
+    let scene = text_scene("grader-two-lights", TWO_LIGHTS_SCENE)?;
+    if scene.lights.len() != 2 {
+        return Err(format!(
+            "grader: {} lights in the two-light box",
+            scene.lights.len()
+        ));
+    }
+    Ok(scene)
+}
+
+/// The mean ratio that leaving out the light's choice gives in the
+/// two-light box: each light's share comes with the probability of picking
+/// it, P_l, and nothing divides it out: Σ_l P_l Φ_l / Σ_l Φ_l.
+pub fn two_lights_choice_left_out(scene: &Scene) -> f64 {
+    let (p0, p1) = (scene.light_pmf(0) as f64, scene.light_pmf(1) as f64);
+    let power = |i: usize| scene.lights[i].power().max_element() as f64;
+    let (f0, f1) = (power(0), power(1));
+    (p0 * f0 + p1 * f1) / (f0 + f1)
+}
+
+/// Independent VPL sets of the two-light check, and light paths per set.
+const TWO_LIGHT_SETS: u64 = 800;
+const TWO_LIGHT_PATHS: u32 = 8;
+
+/// The VPLs on each light and the first bounce's flux in the two-light box.
+/// Each light's VPLs must weigh, summed over a set, the light's area on
+/// average (each stands for its light over all the paths, whichever light
+/// they picked); the VPLs one segment from the lights must carry the whole
+/// emitted flux. Both are checked by [`MeanVar::check`] (|z| ≤ 5.5: a
+/// correct solution fails with probability below 1e-7 per channel).
+fn check_two_lights(generate: GenerateVplsFn) -> Result<(), String> {
+    let scene = two_lights_scene()?;
+    let choice_left_out = two_lights_choice_left_out(&scene);
+    let mut on_light = [MeanVar::default(), MeanVar::default()];
+    let mut first = MeanVar::default();
+    for i in 0..TWO_LIGHT_SETS {
+        let mut sampler = Sampler::new(186, i, 0);
+        let vpls = generate(&scene, TWO_LIGHT_PATHS, Some(3), 1000, &mut sampler);
+        let mut weights = [0.0f32; 2];
+        let mut flux = Color::ZERO;
+        for v in &vpls {
+            match v {
+                Vpl::Light { light, weight, .. } if (*light as usize) < 2 => {
+                    weights[*light as usize] += weight;
+                }
+                Vpl::Surface {
+                    power, segments: 1, ..
+                } => flux += *power,
+                _ => {}
+            }
+        }
+        for (stats, w) in on_light.iter_mut().zip(weights) {
+            stats.add(Color::splat(w));
+        }
+        first.add(flux);
+    }
+    for (l, stats) in on_light.iter().enumerate() {
+        let pick = scene.light_pmf(l as u32) as f64;
+        stats.check(
+            &format!(
+                "two lights of unequal power in a closed box, picked with probabilities {:.1} and {:.1}: the weights of the VPLs on light {l}, summed over a set of {TWO_LIGHT_PATHS} light paths, should average its area, {TWO_LIGHTS_AREA} m²",
+                scene.light_pmf(0),
+                scene.light_pmf(1)
+            ),
+            Color::splat(TWO_LIGHTS_AREA),
+            |r| {
+                Some(if ratio_near(r, pick) {
+                    format!(
+                        "they average ×{r:.3}, the probability of picking this light: a light picked more often gets heavier VPLs — the choice of the light is part of how the path was made"
+                    )
+                } else {
+                    format!("×{r:.3}; no usual mistake gives this mean")
+                })
+            },
+        )?;
+    }
+    first.check(
+        &format!(
+            "two lights of unequal power in a closed box: the VPLs one segment from the lights, summed over a set of {TWO_LIGHT_PATHS} light paths, should carry the whole emitted flux π A (L₁ + L₂) = {TWO_LIGHTS_FLUX:.3} W"
+        ),
+        Color::splat(TWO_LIGHTS_FLUX),
+        |r| {
+            Some(if ratio_near(r, choice_left_out) {
+                format!(
+                    "×{r:.3}: each light's flux arrives weighted by how often that light is picked — the choice of the light is part of how the path was made"
+                )
+            } else {
+                format!("×{r:.3}; no usual mistake gives this mean")
+            })
+        },
+    )
 }
 
 // ---------------------------------------------------------------------------

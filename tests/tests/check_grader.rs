@@ -793,6 +793,11 @@ fn ex17_photon_mapping() {
             "cosine at the light",
         ),
         (
+            "the flux without the light's probability",
+            check(trace::<NO_PICK>, r),
+            "weighted by how often that light is picked",
+        ),
+        (
             "no π in the kernel",
             check(t, radiance::<NO_PI>),
             "misses the π",
@@ -920,6 +925,16 @@ fn ex18_instant_radiosity() {
         "the cosine at the VPL's end is missing",
     );
     fails!(
+        "the VPL on the light without the light's probability",
+        check(generate::<A, NO_PICK_WEIGHT>, gather::<A, NONE>),
+        "a light picked more often gets heavier VPLs",
+    );
+    fails!(
+        "the light path's flux without the light's probability",
+        check(generate::<A, NO_PICK_FLUX>, gather::<A, NONE>),
+        "weighted by how often that light is picked",
+    );
+    fails!(
         "flux not divided by N",
         check(generate::<A, NOT_SHARED>, gather::<A, NONE>),
         "1/N of its path's flux",
@@ -966,6 +981,11 @@ fn ex16_metropolis() {
         "small step without wrapping",
         check(ex16::no_wrap),
         "leave [0, 1)",
+    );
+    fails!(
+        "small step clamped at the edges",
+        check(ex16::clamped),
+        "not symmetric",
     );
     fails!("uniform start", check(ex16::uniform_start), "start-up bias");
     fails!(
