@@ -161,7 +161,7 @@ fn ex04_phong() {
     fails!(
         "(n+1)/2π",
         ex04_phong::check(wrong::phong_s_without_cosine, f),
-        "(n+1)/(n+2)·ρ_s < ρ_s — energy is lost",
+        "falls short of ρ_s, the more the smaller n is — energy is lost",
     );
     fails!(
         "unnormalized",
