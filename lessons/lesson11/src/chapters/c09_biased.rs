@@ -72,7 +72,7 @@ fn effort(quality: Quality) -> Effort {
             size: Some(128),
             budget: 0.2,
             seeds: 16,
-            seed_share: 4.0,
+            seed_share: 6.0,
             blur_photons: 100_000,
             caustic_photons: 50_000,
             knobs: knobs(1_500, 5_000, 32),
