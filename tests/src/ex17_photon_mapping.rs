@@ -53,10 +53,10 @@ use raytracer::sampling::warp::concentric_disk;
 use raytracer::scene::{Interaction, Scene};
 
 use crate::ex18_instant_radiosity::{
-    TWO_LIGHTS_FLUX, two_lights_choice_left_out, two_lights_scene,
+    TWO_LIGHTS_FLUX, flux_without_the_choice, two_lights_choice_left_out, two_lights_scene,
 };
 use crate::pictures::write_enlarged;
-use crate::stats::{MeanVar, fmt3, output_dir, ratio_near};
+use crate::stats::{MeanVar, fmt3, output_dir};
 
 /// The signatures of exercise 17.
 pub use exercises::plug::{PhotonRadianceFn as RadianceFn, TracePhotonPathFn as TraceFn};
@@ -618,15 +618,7 @@ pub fn check_two_lights(trace: TraceFn) -> Result<(), String> {
             scene.light_pmf(1)
         ),
         Color::splat(TWO_LIGHTS_FLUX),
-        |r| {
-            Some(if ratio_near(r, choice_left_out) {
-                format!(
-                    "×{r:.3}: each light's flux arrives weighted by how often that light is picked — the choice of the light is part of how the path was made"
-                )
-            } else {
-                format!("×{r:.3}; no usual mistake gives this mean")
-            })
-        },
+        |r| flux_without_the_choice(r, choice_left_out),
     )
 }
 

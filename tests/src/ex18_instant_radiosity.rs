@@ -796,6 +796,22 @@ pub fn two_lights_choice_left_out(scene: &Scene) -> f64 {
     (p0 * f0 + p1 * f1) / (f0 + f1)
 }
 
+/// The advice for a flux in the two-light box off by the ratio `r`, where
+/// leaving out the light's choice gives `left_out` (exercises 17 and 18).
+pub fn flux_without_the_choice(r: f64, left_out: f64) -> Option<String> {
+    Some(if ratio_near(r, left_out) {
+        format!(
+            "×{r:.3}: each light's flux arrives weighted by how often that light is picked — the choice of the light is part of how the path was made"
+        )
+    } else {
+        no_usual_mistake(r)
+    })
+}
+
+fn no_usual_mistake(r: f64) -> String {
+    format!("×{r:.3}; no usual mistake gives this mean")
+}
+
 /// Independent VPL sets of the two-light check, and light paths per set.
 const TWO_LIGHT_SETS: u64 = 800;
 const TWO_LIGHT_PATHS: u32 = 8;
@@ -847,7 +863,7 @@ fn check_two_lights(generate: GenerateVplsFn) -> Result<(), String> {
                         "they average ×{r:.3}, the probability of picking this light: a light picked more often gets heavier VPLs — the choice of the light is part of how the path was made"
                     )
                 } else {
-                    format!("×{r:.3}; no usual mistake gives this mean")
+                    no_usual_mistake(r)
                 })
             },
         )?;
@@ -857,15 +873,7 @@ fn check_two_lights(generate: GenerateVplsFn) -> Result<(), String> {
             "two lights of unequal power in a closed box: the VPLs one segment from the lights, summed over a set of {TWO_LIGHT_PATHS} light paths, should carry the whole emitted flux π A (L₁ + L₂) = {TWO_LIGHTS_FLUX:.3} W"
         ),
         Color::splat(TWO_LIGHTS_FLUX),
-        |r| {
-            Some(if ratio_near(r, choice_left_out) {
-                format!(
-                    "×{r:.3}: each light's flux arrives weighted by how often that light is picked — the choice of the light is part of how the path was made"
-                )
-            } else {
-                format!("×{r:.3}; no usual mistake gives this mean")
-            })
-        },
+        |r| flux_without_the_choice(r, choice_left_out),
     )
 }
 
