@@ -39,8 +39,8 @@
 //! Arrows point down: a module uses only modules on lower layers, never one
 //! on its own layer or above, so each can be read (and tested) knowing only
 //! what lies below it. `tests/layering.rs` reads the sources and fails on an
-//! import against this order, which it takes from the block below (test code,
-//! `#[cfg(test)]`, may use the whole crate: a scene test may render):
+//! import against this order, which it takes from the block below (the tests,
+//! all in `tests/` — the unit tests in `tests/unit/` — may use the whole crate):
 //!
 //! ```text
 //! 8 stereo metrics wavefront

@@ -21,4 +21,5 @@ mod record;
 mod scale;
 mod scene_fuzz;
 mod shading_normals;
+mod unit;
 mod wavefront;

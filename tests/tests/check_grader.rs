@@ -7,6 +7,7 @@
 //! progress table comes last.
 
 mod fixtures;
+mod unit;
 
 use fixtures::{correct, wrong};
 use grading::*;

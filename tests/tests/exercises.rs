@@ -3,9 +3,9 @@
 //! time), then — last — the summary and the next step. It exits with
 //! success even when an exercise fails, so that cargo adds no "test failed"
 //! lines below the summary: the verdict is the report. The gate that makes
-//! `cargo test --workspace` red while an exercise fails is the grading
-//! crate's unit test `every_exercise_you_started_passes`, which this target
-//! (`--test exercises`) does not run. Stubs that still say `todo!()` are
+//! `cargo test --workspace` red while an exercise fails is the test
+//! `unit::root::every_exercise_you_started_passes` of `check_grader`, which
+//! this target (`--test exercises`) does not run. Stubs that still say `todo!()` are
 //! "not started", so the pristine course is green.
 //!
 //! `cargo test -p grading --test exercises` runs this alone (a few seconds);

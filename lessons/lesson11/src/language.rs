@@ -240,20 +240,3 @@ pub fn localize(command: clap::Command, language: Lang) -> clap::Command {
         .mut_arg("version", |a| a.help("Показва версията"))
         .mut_subcommand("help", |sub| sub.about(help))
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn words(s: &str) -> Vec<String> {
-        s.split_whitespace().map(str::to_string).collect()
-    }
-
-    #[test]
-    fn lang_is_read_from_the_arguments_before_parsing() {
-        assert_eq!(from_args(&words("lesson11 --lang bg path")), Some(Lang::Bg));
-        assert_eq!(from_args(&words("lesson11 path --lang=en")), Some(Lang::En));
-        assert_eq!(from_args(&words("lesson11 path")), None);
-        assert_eq!(from_args(&words("lesson11 render -- --lang bg")), None);
-    }
-}

@@ -1,5 +1,5 @@
 //! Arrows point down inside `lesson11`: the layers listed in the crate doc of
-//! `src/main.rs` hold for every source file. The sources are read as text:
+//! `src/lib.rs` hold for every source file. The sources are read as text:
 //! each `crate::…`, `super::…` and `self::…` path names the file it imports.
 //! Test modules (`#[cfg(test)]` to the end of a file) are left out: a test may
 //! look at the whole program.
@@ -24,7 +24,7 @@ impl Source {
             .split('/')
             .map(String::from)
             .collect();
-        if rel == "main.rs" || module.last().is_some_and(|m| m == "mod") {
+        if rel == "main.rs" || rel == "lib.rs" || module.last().is_some_and(|m| m == "mod") {
             module.pop();
         }
         let code = text
@@ -209,7 +209,7 @@ fn violations(layers: &[Vec<String>], sources: &[Source]) -> Vec<String> {
                 place.insert(&s.rel, one);
             }
             [] => wrong.push(format!(
-                "{} is on no line of the layers in src/main.rs",
+                "{} is on no line of the layers in src/lib.rs",
                 s.rel
             )),
             _ => wrong.push(format!("{} is on more than one line of the layers", s.rel)),
@@ -292,16 +292,16 @@ fn violations(layers: &[Vec<String>], sources: &[Source]) -> Vec<String> {
 #[test]
 fn every_file_imports_only_files_below_it_in_the_documented_order() {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
-    let main_rs = std::fs::read_to_string(src.join("main.rs")).unwrap();
-    let layers = layers(&main_rs);
-    assert!(layers.len() >= 5, "the layers in main.rs: {layers:?}");
+    let lib_rs = std::fs::read_to_string(src.join("lib.rs")).unwrap();
+    let layers = layers(&lib_rs);
+    assert!(layers.len() >= 5, "the layers in lib.rs: {layers:?}");
     let mut sources = Vec::new();
     read_sources(&src, &src, &mut sources);
     assert!(sources.len() >= 20, "read only {} files", sources.len());
     let wrong = violations(&layers, &sources);
     assert!(
         wrong.is_empty(),
-        "the layers of src/main.rs do not hold:\n{}",
+        "the layers of src/lib.rs do not hold:\n{}",
         wrong.join("\n")
     );
 }
@@ -388,4 +388,42 @@ fn upward_sideways_and_circular_imports_are_reported() {
         );
     }
     assert_eq!(wrong.len(), expect.len(), "{wrong:#?}");
+}
+
+/// The libraries of the renderer, the program and the grader are built with
+/// `test = false` (their unit tests are in `tests/unit/`, so that a cold `cargo
+/// test` compiles each once): a `#[test]` left in their sources would never run.
+#[test]
+fn no_test_is_left_in_a_library_that_cargo_does_not_test() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let mut found = Vec::new();
+    for (crate_dir, manifest) in [
+        ("raytracer/src", "raytracer/Cargo.toml"),
+        ("lessons/lesson11/src", "lessons/lesson11/Cargo.toml"),
+        ("tests/src", "tests/Cargo.toml"),
+    ] {
+        let toml = std::fs::read_to_string(root.join(manifest)).unwrap();
+        assert!(
+            toml.contains("[lib]") && toml.contains("test = false"),
+            "{manifest} no longer says `test = false`: then this check is not needed there"
+        );
+        let src = root.join(crate_dir);
+        let mut sources = Vec::new();
+        read_sources(&src, &src, &mut sources);
+        assert!(!sources.is_empty(), "no sources under {crate_dir}");
+        for s in &sources {
+            let text = std::fs::read_to_string(src.join(&s.rel)).unwrap();
+            for (n, line) in text.lines().enumerate() {
+                let code = line.split("//").next().unwrap_or_default();
+                if code.contains("#[cfg(test)]") || code.contains("#[test]") {
+                    found.push(format!("{crate_dir}/{}:{}: {}", s.rel, n + 1, line.trim()));
+                }
+            }
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "tests in a library that `cargo test` does not build for tests (move them to its tests/unit/):\n{}",
+        found.join("\n")
+    );
 }

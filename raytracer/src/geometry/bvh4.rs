@@ -25,7 +25,7 @@ use super::bvh::{Bvh, BvhNode};
 use crate::math::{Vec3A, Vec4};
 
 /// Set in a child reference that points to a leaf.
-pub(super) const LEAF: u32 = 1 << 31;
+pub const LEAF: u32 = 1 << 31;
 /// A leaf reference is `LEAF | first << COUNT_BITS | count`.
 const COUNT_BITS: u32 = 4;
 /// Traversal stack size (enough: pending subtrees are siblings of the nodes
@@ -209,7 +209,7 @@ impl Bvh4 {
 
 /// First primitive and count of a leaf reference.
 #[inline(always)]
-pub(super) fn leaf_range(reference: u32) -> (u32, u32) {
+pub fn leaf_range(reference: u32) -> (u32, u32) {
     (
         (reference & !LEAF) >> COUNT_BITS,
         reference & ((1 << COUNT_BITS) - 1),
@@ -222,7 +222,7 @@ pub(super) fn leaf_range(reference: u32) -> (u32, u32) {
 /// maximum: picking the planes once per ray saves the min/max of the two
 /// plane distances per box. The side comes from the sign of 1/d, so a −0.0
 /// component picks the planes its −1e30 needs.
-pub(super) struct SlabRay {
+pub struct SlabRay {
     o: [Vec4; 3],
     inv_d: [Vec4; 3],
     negative: [usize; 3],
@@ -358,14 +358,4 @@ fn collapse(bin: &[BvhNode], at: usize, out: &mut Vec<Bvh4Node>) -> u32 {
     }
     out[me] = node;
     me as u32
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn node_is_two_cache_lines() {
-        assert_eq!(std::mem::size_of::<Bvh4Node>(), 128);
-    }
 }

@@ -16,7 +16,7 @@
 pub mod aabb;
 pub mod bvh;
 pub mod bvh4;
-mod interaction;
+pub mod interaction;
 pub mod mesh;
 mod packet;
 pub mod primitive;
@@ -25,9 +25,6 @@ pub mod sphere;
 pub mod stream;
 pub mod transform;
 pub mod triangle;
-
-#[cfg(test)]
-mod tests;
 
 use std::sync::Arc;
 
@@ -113,8 +110,8 @@ pub struct Geometry {
     bounds: Aabb,
     /// The binary tree (its `order` dropped), traversed by ray packets.
     binary: Bvh,
-    bvh: Bvh4,
-    prims: Vec<primitive::PrimRecord>,
+    pub bvh: Bvh4,
+    pub prims: Vec<primitive::PrimRecord>,
     sources: Vec<PrimSource>,
 }
 
@@ -122,7 +119,7 @@ pub struct Geometry {
 /// accept edge parameters a hair outside `[0, 1]` (see `QUAD_EPS`), a quad's
 /// corners `origin + e1 + e2` are rounded, and slab tests round too; hits
 /// near the edges must still lie inside the boxes traversal tests.
-fn padded_bounds(r: &primitive::PrimRecord) -> Aabb {
+pub fn padded_bounds(r: &primitive::PrimRecord) -> Aabb {
     let a = Vec3A::from_vec4(r.a);
     let b = Vec3A::from_vec4(r.b);
     let c = Vec3A::from_vec4(r.c);

@@ -65,7 +65,7 @@ pub mod grid;
 pub mod irradiance_cache;
 mod light_tracing;
 pub mod mis_weight;
-mod naive;
+pub mod naive;
 pub mod nee;
 mod path;
 pub mod photon;

@@ -162,7 +162,7 @@ fn run_alone(matches: &ArgMatches) -> Result<()> {
 }
 
 /// The composites `--mode` names, in order, without repeats.
-fn parse_modes(names: &[String]) -> Result<Vec<Composite>> {
+pub fn parse_modes(names: &[String]) -> Result<Vec<Composite>> {
     let mut modes: Vec<Composite> = Vec::new();
     for name in names {
         let found = if name.trim().eq_ignore_ascii_case("all") {
@@ -686,7 +686,7 @@ fn section_text(args: &StereoArgs, convergence: f32) -> String {
 /// The fewest decimals (at least 2) that give every refocus depth a name of
 /// its own: `--refocus 2.001,2.004` wrote both to `refocus-2.00.*`, the
 /// second over the first.
-fn refocus_digits(depths: &[f32]) -> usize {
+pub fn refocus_digits(depths: &[f32]) -> usize {
     (2..=9)
         .find(|&d| {
             let mut names: Vec<String> = depths.iter().map(|x| format!("{x:.d$}")).collect();
@@ -695,26 +695,4 @@ fn refocus_digits(depths: &[f32]) -> usize {
             names.len() == depths.len()
         })
         .unwrap_or(9)
-}
-
-#[cfg(test)]
-mod tests {
-
-    #[test]
-    fn refocus_depths_get_names_of_their_own() {
-        assert_eq!(refocus_digits(&[0.5, 1.0, 3.0]), 2);
-        assert_eq!(refocus_digits(&[2.001, 2.004]), 3);
-        assert_eq!(refocus_digits(&[1.0, 1.000_01]), 5);
-    }
-    use super::*;
-
-    #[test]
-    fn modes_are_parsed_with_all_and_without_repeats() {
-        let all = parse_modes(&["all".into()]).unwrap();
-        assert_eq!(all, Composite::all());
-        let two = parse_modes(&["dubois".into(), "cross".into(), "dubois".into()]).unwrap();
-        assert_eq!(two.len(), 2);
-        let err = parse_modes(&["nope".into()]).unwrap_err().to_string();
-        assert!(err.contains("nope"), "{err}");
-    }
 }

@@ -30,7 +30,7 @@ pub const CHAPTER: Chapter = Chapter::new(
 );
 
 /// How hard the chapter works at each quality.
-struct Effort {
+pub struct Effort {
     /// The Cornell box's size (the caustic scene's is its reference's,
     /// 128 × 96, or half that at tiny).
     size: Option<u32>,
@@ -38,7 +38,7 @@ struct Effort {
     budget: f64,
     /// Independent seeds for the bias–variance split, each run at
     /// `budget / seed_share` seconds.
-    seeds: u64,
+    pub seeds: u64,
     seed_share: f64,
     /// Light paths of the photon maps that show the blur (little noise).
     blur_photons: u64,
@@ -48,7 +48,7 @@ struct Effort {
     knobs: Knobs,
 }
 
-fn effort(quality: Quality) -> Effort {
+pub fn effort(quality: Quality) -> Effort {
     let knobs = |photons, sppm_photons, vpl_paths| Knobs {
         photons,
         photon_k: PHOTON_K,
@@ -493,7 +493,7 @@ fn measure(
 
 /// Whether a curve has flattened: its last doubling of work (or more)
 /// lowered the error by less than a fifth (an unbiased one falls by 29%).
-fn flattens(curve: &[(f64, f64)]) -> bool {
+pub fn flattens(curve: &[(f64, f64)]) -> bool {
     let Some(&(t1, e1)) = curve.last() else {
         return false;
     };
@@ -627,7 +627,7 @@ fn equal_time(
 /// per pixel either hit it or miss it: its error is that edge's
 /// anti-aliasing noise, the same for every algorithm and larger than all
 /// else.
-fn off_the_light(reference: &Image) -> Vec<bool> {
+pub fn off_the_light(reference: &Image) -> Vec<bool> {
     let (w, h) = (reference.width as i64, reference.height as i64);
     let bright = |x: i64, y: i64| {
         (0..w).contains(&x) && (0..h).contains(&y) && luminance(reference.get(x as u32, y as u32)) >= 1.0
@@ -804,49 +804,4 @@ fn irradiance_records(
         ));
     }
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The slides say how many seeds the default quality averages.
-    #[test]
-    fn the_slides_state_the_default_seed_count() {
-        let seeds = effort(Quality::Quick).seeds;
-        let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../../slides");
-        for (lang, phrase) in [
-            ("en", format!("The mean of {seeds} runs with independent seeds (at the default quality)")),
-            ("bg", format!("Средното от {seeds} рендерирания с независими seed-ове (при качеството по подразбиране)")),
-        ] {
-            let text = std::fs::read_to_string(format!("{root}/{lang}/09-biased.md")).unwrap();
-            assert!(text.contains(&phrase), "{lang}: `{phrase}` missing");
-            assert!(text.contains(&format!("√{seeds}")), "{lang}: √{seeds} missing");
-        }
-    }
-
-    /// The lamp and its one-pixel rim are left out; the rest counts.
-    #[test]
-    fn the_lamp_and_its_rim_are_not_counted() {
-        let reference = Image::from_fn(5, 4, |x, y| {
-            Color::splat(if (x, y) == (2, 1) { 18.6 } else { 0.5 })
-        });
-        let counted = off_the_light(&reference);
-        let at = |x: usize, y: usize| counted[y * 5 + x];
-        assert!(!at(2, 1) && !at(1, 0) && !at(3, 2) && !at(2, 2));
-        assert!(at(0, 0) && at(4, 1) && at(2, 3) && at(0, 3));
-        assert_eq!(counted.iter().filter(|&&c| !c).count(), 9);
-    }
-
-    #[test]
-    fn a_curve_flattens_when_doubling_the_work_no_longer_helps() {
-        let unbiased: Vec<(f64, f64)> = (0..6).map(|i| (2f64.powi(i), 2f64.powf(-i as f64 / 2.0))).collect();
-        assert!(!flattens(&unbiased), "t^-1/2 falls by 29% per doubling");
-        let biased: Vec<(f64, f64)> = (0..9)
-            .map(|i| (2f64.powi(i), (0.01 + 2f64.powi(-i)).sqrt()))
-            .collect();
-        assert!(flattens(&biased));
-        assert!(!flattens(&biased[..2]), "not yet at its floor");
-        assert!(!flattens(&[]));
-    }
 }

@@ -18,7 +18,7 @@ use crate::tour::{Chapter, Tour, TourArgs};
 /// Declares the chapter modules and lists their `CHAPTER`s in the same order.
 macro_rules! chapters {
     ($($chapter:ident),* $(,)?) => {
-        $(mod $chapter;)*
+        $(pub mod $chapter;)*
 
         /// The chapters in lecture order.
         pub const CHAPTERS: &[Chapter] = &[$($chapter::CHAPTER),*];

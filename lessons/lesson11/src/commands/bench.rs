@@ -4,10 +4,10 @@
 //! printed (it would measure the stop, not the renderer), and the command
 //! ends with an error saying that the figures above are all it measured.
 
-mod biased;
-mod interrupted;
-mod mitsuba;
-mod rays;
+pub mod biased;
+pub mod interrupted;
+pub mod mitsuba;
+pub mod rays;
 
 use std::path::PathBuf;
 

@@ -26,17 +26,17 @@
 //! - `lab/preview.rs`: the coarse preview of an incomplete first pass;
 //! - `lab/assets/`: the page.
 
-mod brdf;
-mod job;
-mod pages;
-mod paths;
-mod preview;
-mod query;
-mod race;
-mod server;
-mod settings;
-mod stereo;
-mod student;
+pub mod brdf;
+pub mod job;
+pub mod pages;
+pub mod paths;
+pub mod preview;
+pub mod query;
+pub mod race;
+pub mod server;
+pub mod settings;
+pub mod stereo;
+pub mod student;
 
 use std::net::{IpAddr, SocketAddr, ToSocketAddrs};
 use std::path::PathBuf;
@@ -152,6 +152,3 @@ fn open_browser(url: &str) {
         );
     }
 }
-
-#[cfg(test)]
-mod tests;

@@ -3,13 +3,13 @@
 //! exercises, the instructor's references and slides. One file each; a new command is one more file and
 //! one more variant below.
 
-mod bench;
-mod exercises;
-mod lab;
-mod references;
-mod render;
-mod scenes;
-mod slides;
+pub mod bench;
+pub mod exercises;
+pub mod lab;
+pub mod references;
+pub mod render;
+pub mod scenes;
+pub mod slides;
 
 use anyhow::Result;
 use clap::Subcommand;

@@ -1,6 +1,6 @@
 //! `lesson11 render`: one scene, one integrator, PNG and EXR out.
 
-pub(crate) mod student;
+pub mod student;
 
 use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};

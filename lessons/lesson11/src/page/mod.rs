@@ -1,8 +1,8 @@
 //! The page that shows the lesson's pictures: one self-contained HTML file,
 //! no scripts and no network.
 
-mod figure;
-mod table;
+pub mod figure;
+pub mod table;
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};

@@ -35,14 +35,14 @@ const RIGHT: f64 = 22.0;
 const TOP: f64 = 40.0;
 const BOTTOM: f64 = 56.0;
 /// Font sizes of the ticks, labels and legend, and of the title.
-pub(super) const FONT: f64 = 15.0;
-pub(super) const TITLE_FONT: f64 = 17.0;
+pub const FONT: f64 = 15.0;
+pub const TITLE_FONT: f64 = 17.0;
 
 /// The legend under the plot area, in as many columns as the longest label
 /// lets fit in the chart's width: `(columns, column width, rows)`. A
 /// character of the sans-serif font is taken as 0.6 of the font size wide,
 /// more than most glyphs need, so that no label runs off the chart.
-pub(super) fn legend_layout(labels: &[&str], width: f64) -> (usize, f64, usize) {
+pub fn legend_layout(labels: &[&str], width: f64) -> (usize, f64, usize) {
     let longest = labels.iter().map(|l| l.chars().count()).max().unwrap_or(0);
     let entry = 30.0 + 0.6 * FONT * longest as f64;
     let columns = ((width - 20.0) / entry).floor().max(1.0) as usize;
@@ -54,7 +54,7 @@ pub(super) fn legend_layout(labels: &[&str], width: f64) -> (usize, f64, usize) 
 /// Tick positions covering `[lo, hi]` (in the axis' own units: log10 for logs).
 /// A log axis gets at least three labelled ticks: the decades, then 2 and 5
 /// times them, then every integer multiple, as the range narrows.
-fn ticks(lo: f64, hi: f64, scale: Scale) -> Vec<f64> {
+pub fn ticks(lo: f64, hi: f64, scale: Scale) -> Vec<f64> {
     if scale == Scale::Log {
         let inside = |t: &f64| *t >= lo - 1e-9 && *t <= hi + 1e-9;
         let all: [&[f64]; 3] = [
@@ -93,7 +93,7 @@ fn ticks(lo: f64, hi: f64, scale: Scale) -> Vec<f64> {
     out
 }
 
-fn tick_label(t: f64, scale: Scale) -> String {
+pub fn tick_label(t: f64, scale: Scale) -> String {
     match scale {
         Scale::Log => {
             let v = 10f64.powf(t);
@@ -267,56 +267,5 @@ impl Chart {
     pub fn write(&self, path: &Path) -> Result<()> {
         raytracer::film::output::write_file(path, self.to_svg())
             .with_context(|| format!("cannot write {}", path.display()))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn ticks_cover_the_range_with_round_steps() {
-        assert_eq!(
-            ticks(0.0, 1.0, Scale::Linear),
-            vec![0.0, 0.2, 0.4, 0.6000000000000001, 0.8, 1.0]
-        );
-        assert_eq!(ticks(-1.3, 2.0, Scale::Log), vec![-1.0, 0.0, 1.0, 2.0]);
-        // Less than a decade: 2 and 5 times the decades join in, or every multiple.
-        let labels = |lo: f64, hi: f64| -> Vec<String> {
-            ticks(lo, hi, Scale::Log)
-                .into_iter()
-                .map(|t| tick_label(t, Scale::Log))
-                .collect()
-        };
-        assert_eq!(labels(-2.5, -1.2), ["0.005", "0.01", "0.02", "0.05"]);
-        assert_eq!(labels(0.1, 0.65), ["2", "3", "4"]);
-        assert_eq!(labels(-7.0, -5.0), ["1e-7", "1e-6", "1e-5"]);
-    }
-
-    #[test]
-    fn svg_has_every_series_and_axis_label() {
-        let chart = Chart {
-            title: "t".into(),
-            x_label: "seconds".into(),
-            y_label: "RMSE".into(),
-            x_scale: Scale::Log,
-            y_scale: Scale::Log,
-            series: vec![
-                Series {
-                    label: "path".into(),
-                    points: vec![(0.1, 0.5), (1.0, 0.15)],
-                },
-                Series {
-                    label: "bdpt".into(),
-                    points: vec![(0.1, 0.2), (1.0, 0.06)],
-                },
-            ],
-        };
-        let svg = chart.to_svg();
-        assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
-        assert_eq!(svg.matches("<polyline").count(), 2);
-        for text in ["path", "bdpt", "seconds", "RMSE"] {
-            assert!(svg.contains(text), "{text}");
-        }
     }
 }

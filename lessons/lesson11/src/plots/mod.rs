@@ -7,17 +7,17 @@
 //! z-map of two renders. Path figures, and signed pictures with their
 //! numbered colour bars, are SVG drawn over a picture, which they embed.
 
-mod bars;
-mod chart;
-mod data_uri;
-mod hemisphere;
-mod palette;
-mod path_figure;
-mod polar;
-mod series;
-mod signed_map;
-mod solid_angle;
-mod zmap;
+pub mod bars;
+pub mod chart;
+pub mod data_uri;
+pub mod hemisphere;
+pub mod palette;
+pub mod path_figure;
+pub mod polar;
+pub mod series;
+pub mod signed_map;
+pub mod solid_angle;
+pub mod zmap;
 
 pub use bars::Bars;
 pub use chart::{Chart, Scale};

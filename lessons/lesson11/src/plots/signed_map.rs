@@ -38,7 +38,7 @@ pub fn round_scale(v: f64) -> f64 {
 
 /// A number as the bar prints it: `−0.05`, `0`, `+0.025`, with as few
 /// digits as the bar's ticks (at halves of `scale`) need.
-fn label(v: f64, scale: f64) -> String {
+pub fn label(v: f64, scale: f64) -> String {
     if v == 0.0 {
         return "0".into();
     }
@@ -124,42 +124,4 @@ pub fn signed_map_svg(
     }
     svg.push_str("</svg>\n");
     Ok(svg)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn scales_are_round_and_at_least_the_value() {
-        assert_eq!(round_scale(0.03), 0.05);
-        assert_eq!(round_scale(0.05), 0.05);
-        assert_eq!(round_scale(0.11), 0.2);
-        assert_eq!(round_scale(7.0), 10.0);
-        assert_eq!(round_scale(0.0), 1.0);
-        assert_eq!(round_scale(f64::NAN), 1.0);
-    }
-
-    #[test]
-    fn the_bar_is_numbered_with_signs_and_zero() {
-        let svg = signed_map_svg(&[0.0, 0.1, -0.1, 0.05], 2, 2, 0.1).unwrap();
-        for text in [">−0.10<", ">−0.05<", ">0<", ">+0.05<", ">+0.10<"] {
-            assert!(svg.contains(text), "{text} missing");
-        }
-        assert!(svg.contains("data:image/png;base64,"));
-        assert!(
-            svg.contains("width=\"256\" height=\"256\""),
-            "drawn 256 wide"
-        );
-        let svg = signed_map_svg(&[0.0; 300 * 2], 300, 2, 0.1).unwrap();
-        assert!(
-            svg.contains("width=\"600\" height=\"4\""),
-            "at twice its size at least"
-        );
-        assert_eq!(label(0.2, 0.2), "+0.2");
-        assert_eq!(label(-0.002, 0.004), "−0.002");
-        assert_eq!(label(0.025, 0.05), "+0.025", "the half-scale tick exactly");
-        assert_eq!(label(0.05, 0.05), "+0.050");
-        assert_eq!(label(-5.0, 10.0), "−5");
-    }
 }

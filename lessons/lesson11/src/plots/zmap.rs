@@ -80,36 +80,3 @@ pub fn zmap_image(z: &ZTest, width: u32, height: u32, scale: f32, threshold: f32
         diverging(2.0 * x as f32 / (width - 1).max(1) as f32 - 1.0)
     })
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use raytracer::math::UVec2;
-
-    #[test]
-    fn the_map_runs_from_blue_through_white_to_red() {
-        let (b, m, r) = (diverging(-1.0), diverging(0.0), diverging(1.0));
-        assert!(b.z > b.x && r.x > r.z, "{b} {r}");
-        assert!((m.x - m.y).abs() < 1e-6 && (m.y - m.z).abs() < 1e-6);
-        assert_eq!(diverging(-5.0), b, "clamped");
-    }
-
-    #[test]
-    fn each_tile_shows_its_largest_z_with_its_sign() {
-        let z = ZTest {
-            tile: 2,
-            grid: UVec2::new(2, 1),
-            z: vec![Color::new(0.5, -3.0, 1.0), Color::new(0.0, 0.0, 4.0)],
-            max_abs_z: 4.0,
-            worst_tile: UVec2::new(1, 0),
-        };
-        let img = zmap_image(&z, 4, 2, 4.0, 3.5);
-        assert_eq!(img.get(0, 0), diverging(-0.75));
-        assert_eq!(img.get(3, 1), diverging(1.0));
-        assert!(img.height > 2, "a colour bar below");
-        // The bar's middle is white-grey, its ends the extremes.
-        let last = img.height - 1;
-        assert_eq!(img.get(0, last), diverging(-1.0));
-        assert_eq!(img.get(3, last), diverging(1.0));
-    }
-}

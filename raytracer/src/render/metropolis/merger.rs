@@ -12,7 +12,7 @@ use crate::math::{Color, UVec2};
 use std::collections::VecDeque;
 
 /// Merges finished chains into the film in chain order.
-pub(super) struct Merger {
+pub struct Merger {
     pub(super) film: Film,
     tile: u32,
     b: f64,

@@ -265,7 +265,7 @@ fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
 }
 
 /// Why the inspector has nothing to show for SPPM.
-pub(super) const SPPM_NO_SAMPLES: &str = "sppm's picture is made of passes of visible points and photons, \
+pub const SPPM_NO_SAMPLES: &str = "sppm's picture is made of passes of visible points and photons, \
      not of pixel samples, so there are no paths of one sample to show (photon mapping does not \
      record its paths either; path, direct, naive, light and bdpt do)";
 

@@ -9,7 +9,7 @@ use std::time::Duration;
 
 use serde_json::Value;
 
-use super::{Lab, LabConfig};
+use lesson11::commands::lab::{Lab, LabConfig};
 
 fn start() -> Lab {
     Lab::start(SocketAddr::from(([127, 0, 0, 1], 0)), LabConfig::default()).unwrap()
@@ -151,7 +151,9 @@ fn a_biased_integrator_is_built_on_the_jobs_thread() {
             .is_some_and(|t| t.contains("does not record its paths")),
         "{r}"
     );
-    assert!(super::job::SPPM_NO_SAMPLES.contains("photon mapping does not record"));
+    assert!(
+        lesson11::commands::lab::job::SPPM_NO_SAMPLES.contains("photon mapping does not record")
+    );
     lab.stop();
 }
 
@@ -200,23 +202,23 @@ fn student_job(
     page: &str,
     student: Box<dyn raytracer::integrator::Integrator + Send>,
     spp: u32,
-) -> std::sync::Arc<super::job::Job> {
+) -> std::sync::Arc<lesson11::commands::lab::job::Job> {
     use raytracer::integrator::PathTracer;
     let mut scene = raytracer::scene::Scene::builtin("cornell").unwrap();
     scene.set_resolution(64, 64);
-    let spec = super::job::JobSpec {
+    let spec = lesson11::commands::lab::job::JobSpec {
         kind: "student",
         command: String::new(),
         eyes: vec![scene.clone(), scene],
         build_for: None,
-        plan: crate::integrators::IntegratorPlan::Ready(Box::new(PathTracer::default())),
+        plan: lesson11::integrators::IntegratorPlan::Ready(Box::new(PathTracer::default())),
         options: raytracer::render::RenderOptions {
             spp,
             progress: false,
             ..Default::default()
         },
         wavefront: None,
-        student: Some(super::job::StudentPair {
+        student: Some(lesson11::commands::lab::job::StudentPair {
             exercise: "ex13_mis",
             make: Box::new(move || (student, Box::new(PathTracer::default()))),
         }),
@@ -231,7 +233,12 @@ fn student_job(
     job
 }
 
-fn faulty_job(lab: &Lab, page: &str, fault: Fault, spp: u32) -> std::sync::Arc<super::job::Job> {
+fn faulty_job(
+    lab: &Lab,
+    page: &str,
+    fault: Fault,
+    spp: u32,
+) -> std::sync::Arc<lesson11::commands::lab::job::Job> {
     student_job(lab, page, Box::new(Faulty { fault }), spp)
 }
 
@@ -243,7 +250,7 @@ fn the_z_map_shows_where_a_wrong_integrator_differs() {
     let lab = start();
     let job = faulty_job(&lab, "z", Fault::HalfOnTheLeft, 64);
     assert_eq!(job.status().error, None);
-    let map = super::student::ZMap::of(&job).expect("both pictures");
+    let map = lesson11::commands::lab::student::ZMap::of(&job).expect("both pictures");
     assert!(!map.consistent(), "{}", map.verdict());
     let grid = map.test.grid;
     assert_eq!((grid.x, grid.y), (4, 4));
@@ -274,7 +281,7 @@ fn the_z_map_of_a_right_integrator_is_consistent() {
     let lab = start();
     let right = Box::new(raytracer::integrator::PathTracer::default());
     let job = student_job(&lab, "ok", right, 64);
-    let map = super::student::ZMap::of(&job).unwrap();
+    let map = lesson11::commands::lab::student::ZMap::of(&job).unwrap();
     assert!(map.consistent(), "{}", map.verdict());
     lab.stop();
 }

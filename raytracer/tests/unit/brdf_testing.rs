@@ -3,10 +3,10 @@
 //! directional albedo `ρ(ω_o) = ∫ f_r cos θ_i dω_i` estimated with a model's
 //! own sampling, with the check that a BRDF conserves energy.
 
-use super::{Brdf, BrdfSample, TransportMode};
-use crate::math::{Color, Vec2, Vec3A};
-use crate::sampling::chi2::{Chi2Report, Chi2Test, check_sample_pdfs, uniforms};
-use crate::sampling::warp::uniform_sphere;
+use raytracer::brdf::{Brdf, BrdfSample, TransportMode};
+use raytracer::math::{Color, Vec2, Vec3A};
+use raytracer::sampling::chi2::{Chi2Report, Chi2Test, check_sample_pdfs, uniforms};
+use raytracer::sampling::warp::uniform_sphere;
 
 /// Number of chi-square tests of correct samplers in the brdf suite, the
 /// Šidák family: Lambert 4, Phong 13, glass frequencies 6. The whole suite

@@ -3,9 +3,16 @@
 
 use std::sync::Arc;
 
-use super::*;
-use crate::math::{PI, RayEnd, Vec3};
-use crate::sampling::Sampler;
+use aabb::Aabb;
+use bvh::Bvh;
+use mesh::Mesh;
+use quad::Quad;
+use raytracer::geometry::*;
+use raytracer::math::{PI, RayEnd, Vec3};
+use raytracer::math::{Ray, Vec2, Vec3A};
+use raytracer::sampling::Sampler;
+use sphere::Sphere;
+use transform::Transform;
 
 fn uniform_sphere(s: &mut Sampler) -> Vec3A {
     let z = 1.0 - 2.0 * s.next_1d();

@@ -1,0 +1,59 @@
+//! Unit tests of `chapters/c09_biased.rs`.
+
+use lesson11::chapters::c09_biased::*;
+use lesson11::tour::Quality;
+use raytracer::film::Image;
+use raytracer::math::Color;
+
+/// The slides say how many seeds the default quality averages.
+#[test]
+fn the_slides_state_the_default_seed_count() {
+    let seeds = effort(Quality::Quick).seeds;
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../../slides");
+    for (lang, phrase) in [
+        (
+            "en",
+            format!("The mean of {seeds} runs with independent seeds (at the default quality)"),
+        ),
+        (
+            "bg",
+            format!(
+                "Средното от {seeds} рендерирания с независими seed-ове (при качеството по подразбиране)"
+            ),
+        ),
+    ] {
+        let text = std::fs::read_to_string(format!("{root}/{lang}/09-biased.md")).unwrap();
+        assert!(text.contains(&phrase), "{lang}: `{phrase}` missing");
+        assert!(
+            text.contains(&format!("√{seeds}")),
+            "{lang}: √{seeds} missing"
+        );
+    }
+}
+
+/// The lamp and its one-pixel rim are left out; the rest counts.
+#[test]
+fn the_lamp_and_its_rim_are_not_counted() {
+    let reference = Image::from_fn(5, 4, |x, y| {
+        Color::splat(if (x, y) == (2, 1) { 18.6 } else { 0.5 })
+    });
+    let counted = off_the_light(&reference);
+    let at = |x: usize, y: usize| counted[y * 5 + x];
+    assert!(!at(2, 1) && !at(1, 0) && !at(3, 2) && !at(2, 2));
+    assert!(at(0, 0) && at(4, 1) && at(2, 3) && at(0, 3));
+    assert_eq!(counted.iter().filter(|&&c| !c).count(), 9);
+}
+
+#[test]
+fn a_curve_flattens_when_doubling_the_work_no_longer_helps() {
+    let unbiased: Vec<(f64, f64)> = (0..6)
+        .map(|i| (2f64.powi(i), 2f64.powf(-i as f64 / 2.0)))
+        .collect();
+    assert!(!flattens(&unbiased), "t^-1/2 falls by 29% per doubling");
+    let biased: Vec<(f64, f64)> = (0..9)
+        .map(|i| (2f64.powi(i), (0.01 + 2f64.powi(-i)).sqrt()))
+        .collect();
+    assert!(flattens(&biased));
+    assert!(!flattens(&biased[..2]), "not yet at its floor");
+    assert!(!flattens(&[]));
+}

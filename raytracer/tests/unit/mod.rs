@@ -1,0 +1,73 @@
+//! The renderer's unit tests, one file per module of `src/` (`brdf_phong.rs` tests
+//! `src/brdf/phong.rs`). They live here, in the one integration-test binary, rather than
+//! in `#[cfg(test)]` blocks, because every such block makes `cargo test` compile the
+//! whole optimized crate a second time: a cold `cargo test --workspace` could not keep
+//! its budget. What they test is therefore public; items public only for them say so.
+
+mod brdf;
+mod brdf_fresnel;
+mod brdf_glass;
+mod brdf_lambert;
+mod brdf_mirror;
+mod brdf_phong;
+mod brdf_testing;
+mod brdf_texture;
+mod camera;
+mod film;
+mod film_image;
+mod film_output;
+mod film_tile;
+mod frame;
+mod geometry_aabb;
+mod geometry_bvh;
+mod geometry_bvh4;
+mod geometry_mesh;
+mod geometry_primitive;
+mod geometry_quad;
+mod geometry_sphere;
+mod geometry_stream;
+mod geometry_tests;
+mod geometry_transform;
+mod geometry_triangle;
+mod integrator_dimensions;
+mod integrator_grid;
+mod integrator_irradiance_cache;
+mod integrator_mis_weight;
+mod integrator_naive;
+mod integrator_photon;
+mod integrator_photon_map;
+mod integrator_roulette;
+mod integrator_shading_normals;
+mod integrator_sppm;
+mod integrator_stop;
+mod light;
+mod light_area;
+mod light_environment;
+mod light_point;
+mod light_test_stats;
+mod math;
+mod metrics;
+mod render;
+mod render_metropolis;
+mod render_metropolis_chain;
+mod render_metropolis_parameters;
+mod render_sppm;
+mod sampling_chi2;
+mod sampling_distribution;
+mod sampling_draw;
+mod sampling_mis;
+mod sampling_primary;
+mod sampling_rng;
+mod sampling_sincos;
+mod sampling_warp;
+mod scene;
+mod scene_builtin;
+mod scene_error;
+mod scene_load;
+mod scene_load_shape;
+mod stereo;
+mod stereo_anaglyph;
+mod stereo_crosstalk;
+mod stereo_layout;
+mod stereo_lightfield;
+mod stereo_rig;
