@@ -65,8 +65,32 @@ pub const FURNACE_TILE: u32 = 2;
 /// The student's light tracer, with every splat it pushes checked.
 struct Watched {
     inner: StudentLightTracer,
-    /// The first splat that should not have been made, in words.
-    bad: Mutex<Option<String>>,
+    /// The first splat that should not have been made.
+    bad: Mutex<Option<BadSplat>>,
+}
+
+/// A splat that should not have been made. Found on the render's threads,
+/// put in words on the grader's (whose language a test may have chosen).
+enum BadSplat {
+    /// Its raster position is not a number.
+    NotANumber(Vec2),
+    /// Off the film of this width and height.
+    OffFilm(Vec2, f32, f32),
+    /// Its value is NaN or infinite.
+    NotFinite(Color),
+    /// Its value is negative.
+    Negative(Color),
+}
+
+impl BadSplat {
+    fn message(&self) -> String {
+        match *self {
+            BadSplat::NotANumber(r) => crate::tr!("ex14.splat_nan", r),
+            BadSplat::OffFilm(r, w, h) => crate::tr!("ex14.splat_off", r, w, h),
+            BadSplat::NotFinite(value) => crate::tr!("ex14.splat_nonfinite", value),
+            BadSplat::Negative(value) => crate::tr!("ex14.splat_negative", value),
+        }
+    }
 }
 
 impl Integrator for Watched {
@@ -87,23 +111,13 @@ impl Integrator for Watched {
         for s in &splats[start..] {
             let r = s.raster;
             let why = if !(r.x.is_finite() && r.y.is_finite()) {
-                Some(format!(
-                    "a splat at the raster position {r}, not a number: a splat where the camera sees nothing (a vertex behind the camera has no raster position)"
-                ))
+                Some(BadSplat::NotANumber(r))
             } else if !(0.0..w).contains(&r.x) || !(0.0..h).contains(&r.y) {
-                Some(format!(
-                    "a splat at {r}, off the {w}×{h} film: a splat where the camera sees nothing (behind the camera or outside the field of view) — such a vertex contributes nothing"
-                ))
+                Some(BadSplat::OffFilm(r, w, h))
             } else if !s.value.is_finite() {
-                Some(format!(
-                    "a splat of value {} (NaN or infinite): a division by a zero density or distance?",
-                    s.value
-                ))
+                Some(BadSplat::NotFinite(s.value))
             } else if s.value.min_element() < 0.0 {
-                Some(format!(
-                    "a negative splat ({}): a signed cosine — a light path reaches surfaces (and leaves lights) on either side, the cosines count by their magnitude",
-                    s.value
-                ))
+                Some(BadSplat::Negative(s.value))
             } else {
                 None
             };
@@ -150,7 +164,7 @@ fn render_watched(
     };
     let result = render(scene, &watched, &options(spp, seed));
     match watched.bad.into_inner().expect("not poisoned") {
-        Some(why) => Err(format!("{}: {why}", scene.name)),
+        Some(why) => Err(format!("{}: {}", scene.name, why.message())),
         None => Ok(result),
     }
 }
@@ -175,14 +189,16 @@ fn grader_scene(name: &str, toml: &str) -> Result<Scene, String> {
 /// on the side it is lit from). `L = L_e Σ_{k<D} ρ^k` in every pixel.
 pub fn two_light_furnace(rho: f64, le: f64) -> Result<Scene, String> {
     let furnace = builtin("furnace").ok_or("grader: no built-in furnace")?;
-    let toml = format!(
-        "{}\n[[lights]]\ntype = \"point\"\nposition = [0, 0, 3]\nintensity = {}\n",
-        furnace
-            .toml
-            .replace("albedo = 0.5", &format!("albedo = {rho}"))
-            .replace("emission = 0.5", &format!("emission = {le}")),
+    let point_light = format!(
+        "[[lights]]\ntype = \"point\"\nposition = [0, 0, 3]\nintensity = {}\n",
         2.0 * std::f64::consts::PI * le
     );
+    let toml = furnace
+        .toml
+        .replace("albedo = 0.5", &format!("albedo = {rho}"))
+        .replace("emission = 0.5", &format!("emission = {le}"))
+        + "\n"
+        + &point_light;
     grader_scene("furnace-and-point-light", &toml)
 }
 
@@ -256,9 +272,14 @@ fn furnace_tiles(result: &RenderResult, exact: f32) -> (f64, Result<(), String>)
     }
     (
         m,
-        Err(format!(
-            "tile {} of {FURNACE_TILE}×{FURNACE_TILE} pixels is off by |z| = {:.1} > {threshold:.1} (mean of your image {m:.4}, expected {exact} in every pixel)",
-            z.worst_tile, z.max_abs_z
+        Err(crate::tr!(
+            "ex14.tile",
+            tile = z.worst_tile,
+            size = FURNACE_TILE,
+            z = z.max_abs_z,
+            threshold,
+            m,
+            exact
         )),
     )
 }
@@ -297,22 +318,20 @@ fn without_importance(scene: &Scene, exact: f32) -> Image {
     })
 }
 
-const NO_IMPORTANCE: &str = "the pixels at the edge of the film are too dark and those in the middle too bright, as without the camera's importance W_e (Camera::we): the camera's sensitivity to the ray is part of the splat, as L_e is part of the light";
-
 /// The usual mistakes by what the mean of the whole image converges to,
 /// relative to the right answer, in one case; `None` if none fits.
-fn recognise(ratio: f64, named: &[(f64, f64, &str)]) -> Option<String> {
+fn recognise(ratio: f64, named: &[(f64, f64, String)]) -> Option<String> {
     named
         .iter()
         .find(|(lo, hi, _)| (*lo..=*hi).contains(&ratio))
-        .map(|(_, _, why)| why.to_string())
+        .map(|(_, _, why)| why.clone())
 }
 
 fn too(ratio: f64) -> String {
     if ratio > 1.0 {
-        format!("too bright (×{ratio:.2})")
+        crate::tr!("ex14.too_bright", ratio)
     } else {
-        format!("too dark (×{ratio:.2})")
+        crate::tr!("ex14.too_dark", ratio)
     }
 }
 
@@ -324,32 +343,18 @@ pub fn check(f: LightFn) -> Result<(), String> {
 /// false-failure rate over seeds).
 pub fn check_with_seed(f: LightFn, seed: u64) -> Result<(), String> {
     // (albedo, L_e, max depth, roulette depth, the answer, the case)
-    type Case = (f64, f64, Option<u32>, u32, f64, &'static str);
+    type Case = (f64, f64, Option<u32>, u32, f64, String);
     let cases: [Case; 3] = [
-        (
-            0.5,
-            0.5,
-            Some(1),
-            1000,
-            0.5,
-            "L_e = 0.5, max_depth 1: the lights seen directly, L = L_e",
-        ),
+        (0.5, 0.5, Some(1), 1000, 0.5, crate::tr!("ex14.case_direct")),
         (
             0.5,
             0.5,
             Some(2),
             1000,
             0.75,
-            "L_e = 0.5, albedo 0.5, max_depth 2: L = L_e (1 + ρ)",
+            crate::tr!("ex14.case_bounce"),
         ),
-        (
-            0.9,
-            0.1,
-            None,
-            1,
-            1.0,
-            "L_e = 0.1, albedo 0.9, no depth limit, roulette from the first bounce: L = L_e/(1 − ρ)",
-        ),
+        (0.9, 0.1, None, 1, 1.0, crate::tr!("ex14.case_roulette")),
     ];
     // One light path here first, on this thread: a `todo!()` is reported
     // with its place (a panic inside the parallel render is not).
@@ -372,36 +377,32 @@ pub fn check_with_seed(f: LightFn, seed: u64) -> Result<(), String> {
         let (m, verdict) = furnace_tiles(&result, exact);
         let Err(why) = verdict else { continue };
         let ratio = m / exact as f64;
-        let case = format!(
-            "emitting furnace with two lights (camera inside a sphere; a point light outside it, chosen half of the time), {what}"
-        );
+        let case = crate::tr!("ex14.furnace", what);
         if agrees(&result, &without_importance(&furnace, exact)) {
-            return Err(format!("{case}: {why} — {NO_IMPORTANCE}"));
+            let advice = crate::tr!("ex14.no_importance");
+            return Err(format!("{}: {} — {}", case, why, advice));
         }
-        let no_pmf = "half the light: there are two lights, each chosen with probability 1/2, and the estimate divides by the probability of every choice it made, the light's too";
+        let no_pmf = || crate::tr!("ex14.no_pmf");
         let advice = match max_depth {
             Some(1) => recognise(
                 ratio,
                 &[
-                    (0.45, 0.55, no_pmf),
-                    (0.0, 0.02, "(almost) nothing: does the light's own point reach the lens? It is the only way the camera sees an area light in light tracing"),
+                    (0.45, 0.55, no_pmf()),
+                    (0.0, 0.02, crate::tr!("ex14.nothing")),
                 ],
             ),
             Some(_) => recognise(
                 ratio,
                 &[
-                    (0.45, 0.55, no_pmf),
-                    (1.25, 1.4, "the light after the first bounce is off, while the lights seen directly are right: the throughput that leaves the light carries the cosine at the light (its emission is cosine-distributed per unit solid angle)"),
-                    (0.62, 0.7, "the light after one bounce is missing: is every vertex of the path joined to the lens, not only the light's?"),
+                    (0.45, 0.55, no_pmf()),
+                    (1.25, 1.4, crate::tr!("ex14.cos_light")),
+                    (0.62, 0.7, crate::tr!("ex14.one_bounce")),
                 ],
             ),
-            None => recognise(
-                ratio,
-                &[(0.2, 0.9, "light is lost in long paths: with Russian roulette a path that survives with probability q must carry β/q, so that on average it brings what it would have (if you do: a fixed q far below the albedo, q < ρ², gives the estimate an infinite variance — take q from the path's throughput)")],
-            ),
+            None => recognise(ratio, &[(0.2, 0.9, crate::tr!("ex14.roulette"))]),
         }
-        .unwrap_or_else(|| format!("{} — check the throughput that leaves the light and the splat of each vertex", too(ratio)));
-        return Err(format!("{case}: {why} — {advice}"));
+        .unwrap_or_else(|| crate::tr!("ex14.unknown", too = too(ratio)));
+        return Err(format!("{}: {} — {}", case, why, advice));
     }
     caustic(f, seed)?;
     // Glass: importance transport.
@@ -411,14 +412,9 @@ pub fn check_with_seed(f: LightFn, seed: u64) -> Result<(), String> {
     let (m, verdict) = furnace_tiles(&result, exact);
     if let Err(why) = verdict {
         let ratio = m / exact as f64;
-        let advice = recognise(
-            ratio,
-            &[(0.38, 0.5, "1/η² of the answer: light entering the glass was scaled by 1/η² — radiance transport; a light path carries importance, whose refraction is the adjoint (see TransportMode)")],
-        )
-        .unwrap_or_else(|| too(ratio));
-        return Err(format!(
-            "glass furnace (camera and a white ball inside a glass ball, η = 1.5, inside a black sphere emitting L_e = 0.5: η² L_e = {exact} in every pixel): {why} — {advice}"
-        ));
+        let advice = recognise(ratio, &[(0.38, 0.5, crate::tr!("ex14.glass_radiance"))])
+            .unwrap_or_else(|| too(ratio));
+        return Err(crate::tr!("ex14.glass", exact, why, advice));
     }
     Ok(())
 }
@@ -447,21 +443,14 @@ fn caustic(f: LightFn, seed: u64) -> Result<(), String> {
     let advice = recognise(
         ratio,
         &[
-            (0.3, 0.75, "without the camera's importance W_e (Camera::we): the camera's sensitivity to the ray is part of the splat, as L_e is part of the light"),
-            (1.6, 3.2, "the splats are too bright where the surface is seen at a slant: the geometry term has a cosine at the surface, |cos θ| with its shading normal"),
-            (3.5, 8.0, "your splats fall off too slowly with distance: the change from the lens's area to the solid angle at the vertex brings 1/d², once"),
-            (12.0, 60.0, "your splats do not fall off with distance: the change from the lens's area to the solid angle at the vertex brings 1/d²"),
+            (0.3, 0.75, crate::tr!("ex14.caustic_no_importance")),
+            (1.6, 3.2, crate::tr!("ex14.caustic_cos")),
+            (3.5, 8.0, crate::tr!("ex14.caustic_slow")),
+            (12.0, 60.0, crate::tr!("ex14.caustic_flat")),
         ],
     )
-    .unwrap_or_else(|| {
-        format!(
-            "{} in the mean; if the mean is right, the difference is in where the light lands (the shadow test of the connection? the caustic?)",
-            too(ratio)
-        )
-    });
-    Err(format!(
-        "{why} — your image ×{ratio:.2} the reference's mean: {advice}"
-    ))
+    .unwrap_or_else(|| crate::tr!("ex14.caustic_unknown", too = too(ratio)));
+    Err(crate::tr!("ex14.caustic", why, ratio, advice))
 }
 
 /// Depth of the caustic comparison: the caustic needs 4 light vertices

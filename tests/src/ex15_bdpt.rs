@@ -53,11 +53,7 @@ pub fn check(geometry: GeometryFn, connect: ConnectFn, weight: BdptWeightFn) -> 
         max_depth: Some(MAX_DEPTH),
         rr_depth: 3,
     };
-    compare(&EX15_CORNELL, &student).map_err(|e| {
-        format!(
-            "{e} — your connect and mis_weight agreed with the grader's on every path of the test scene, so the difference lies in how they work together over whole subpaths of the Cornell box (a state kept between calls, or a case those paths did not reach)"
-        )
-    })
+    compare(&EX15_CORNELL, &student).map_err(|e| crate::tr!("ex15.cornell", e))
 }
 
 // ── Part 1: G ────────────────────────────────────────────────────────────
@@ -97,40 +93,26 @@ fn check_geometry(geometry: GeometryFn) -> Result<(), String> {
         let cy = |&(x, _, y, ny): &Edge| ny.dot((x - y).normalize());
         let r2 = |&(x, _, y, _): &Edge| (y - x).length_squared();
         let mistakes: [Mistake<Edge, f32>; 5] = [
-            (
-                "signed cosines: G is never negative, and the normals may face either way",
-                &|e| cx(e) * cy(e) / r2(e),
-            ),
-            (
-                "r for r²: your G falls off as 1/r, but the solid angle of a patch falls as 1/r²",
-                &|e| (cx(e) * cy(e)).abs() / r2(e).sqrt(),
-            ),
-            (
-                "the cosine at y is missing: G has one cosine at each end of the edge (dω_x = |cos θ_y| dA_y / r²)",
-                &|e| cx(e).abs() / r2(e),
-            ),
-            (
-                "the cosine at x is missing: G has one cosine at each end of the edge (|cos θ_x| dω_x)",
-                &|e| cy(e).abs() / r2(e),
-            ),
-            (
-                "your G does not fall off with distance at all: either the 1/r² is missing, or the dot products were taken with the unnormalized edge y − x and its length r² cancelled it",
-                &|e| (cx(e) * cy(e)).abs(),
-            ),
+            (&crate::tr!("ex15.g_signed"), &|e| cx(e) * cy(e) / r2(e)),
+            (&crate::tr!("ex15.g_r"), &|e| {
+                (cx(e) * cy(e)).abs() / r2(e).sqrt()
+            }),
+            (&crate::tr!("ex15.g_no_cos_y"), &|e| cx(e).abs() / r2(e)),
+            (&crate::tr!("ex15.g_no_cos_x"), &|e| cy(e).abs() / r2(e)),
+            (&crate::tr!("ex15.g_no_falloff"), &|e| (cx(e) * cy(e)).abs()),
         ];
         let (x, nx, y, ny) = cases[k];
-        let why =
-            recognise(&cases, &got, &mistakes, |g, a| close(g, a, 1e-4)).unwrap_or_else(|| {
-                "it matches none of the usual mistakes: G has a cosine at each end of the edge and the distance between them".to_string()
-            });
-        return Err(format!(
-            "geometry_term(x = {}, nx = {}, y = {}, ny = {}) is {}, expected {} — {why}",
-            fmt3(x),
-            fmt3(nx),
-            fmt3(y),
-            fmt3(ny),
-            got[k],
-            want(&cases[k])
+        let why = recognise(&cases, &got, &mistakes, |g, a| close(g, a, 1e-4))
+            .unwrap_or_else(|| crate::tr!("ex15.g_unknown"));
+        return Err(crate::tr!(
+            "ex15.g",
+            x = fmt3(x),
+            nx = fmt3(nx),
+            y = fmt3(y),
+            ny = fmt3(ny),
+            got = got[k],
+            want = want(&cases[k]),
+            why
         ));
     }
     // The irradiance at the centre below a disk light of radiance 1, radius R,
@@ -146,7 +128,7 @@ fn check_geometry(geometry: GeometryFn) -> Result<(), String> {
         ));
     }
     stats.check(
-        "irradiance under a disk light (R = 0.8, h = 1) as ∫ G dA = πR²/(h² + R²)",
+        &crate::tr!("ex15.disk"),
         Color::splat(PI * r * r / (h * h + r * r)),
         |_| None,
     )
@@ -322,68 +304,43 @@ fn check_connect(scene: &Scene, connect: ConnectFn) -> Result<(), String> {
         model(Way::LensNoCosine),
     );
     let mistakes: [Mistake<Case, Color>; 9] = [
-        (
-            "signed cosines: some of your contributions are negative where a vertex's normal faces away from the edge (the back wall of the test scene); light arrives from either side, only the cosines' magnitudes count",
-            &m1,
-        ),
-        (
-            "r for r²: your connections fall off as 1/r with the edge's length, the geometry term as 1/r²",
-            &m2,
-        ),
-        (
-            "one cosine missing in G: the cosine at the light-subpath end of the edge (y_{s−1}) is not in your contribution",
-            &m3,
-        ),
-        (
-            "one cosine missing in G: the cosine at the camera-subpath end of the edge (z_{t−1}) is not in your contribution",
-            &m4,
-        ),
-        (
-            "the BRDF at z_{t−1} is evaluated towards the wrong direction: it matters on the glossy (Phong) back wall only, where your value is off; the light arrives along the edge, from y_{s−1}",
-            &m5,
-        ),
-        (
-            "no visibility test: your edges pass through the ball and the lamp (the ends must see each other)",
-            &m6,
-        ),
-        (
-            "the light subpath's throughput β of y_{s−1} is missing: your contributions ignore what happened on the light side (its emission and density)",
-            &m7,
-        ),
-        (
-            "t = 1: the cosine at the light vertex is missing (Camera::sample_wi's density per unit solid angle holds the lens's cosine, not the vertex's)",
-            &m8,
-        ),
-        (
-            "your connections from the point light to z_{t−1} are all zero: a point light has no surface, so there is no cosine at its end of the edge (a zero normal makes one zero)",
-            &m9,
-        ),
+        (&crate::tr!("ex15.c_signed"), &m1),
+        (&crate::tr!("ex15.c_r"), &m2),
+        (&crate::tr!("ex15.c_no_cos_light"), &m3),
+        (&crate::tr!("ex15.c_no_cos_camera"), &m4),
+        (&crate::tr!("ex15.c_brdf_reversed"), &m5),
+        (&crate::tr!("ex15.c_no_visibility"), &m6),
+        (&crate::tr!("ex15.c_no_beta_light"), &m7),
+        (&crate::tr!("ex15.c_lens_no_cosine"), &m8),
+        (&crate::tr!("ex15.c_point_light"), &m9),
     ];
     let why = recognise(&cases, &values, &mistakes, same_color).unwrap_or_else(|| {
         let [s, t] = cases[k].st;
         match (s, t) {
-            (0, _) => "s = 0: the camera subpath's last vertex z_{t−1} lies on an emitter; what reaches the camera is its emission towards z_{t−2}, through the camera subpath's throughput".to_string(),
-            (_, 1) => "t = 1: the light vertex joined to the lens as in exercise 14 (splatted at its raster position)".to_string(),
-            (1, _) => "s = 1: y_0 is a light vertex: its throughput, its emission towards z_{t−1} (Vertex::f), the cosine at the light".to_string(),
-            _ => "the edge joins two scattering vertices: both throughputs, both BRDFs, G, visibility".to_string(),
+            (0, _) => crate::tr!("ex15.c_s0"),
+            (_, 1) => crate::tr!("ex15.c_t1"),
+            (1, _) => crate::tr!("ex15.c_s1"),
+            _ => crate::tr!("ex15.c_edge"),
         }
     });
     let c = &cases[k];
     let e = want(c, Way::Right);
     let raster = match (got[k].1, e.1) {
         (g, Some(r)) if g.is_none_or(|g| g.distance(r) > 1e-3) => {
-            format!("; for t = 1 it lands at raster {r:?}, yours at {g:?}")
+            crate::tr!("ex15.raster", r = format!("{r:?}"), g = format!("{g:?}"))
         }
         _ => String::new(),
     };
-    Err(format!(
-        "connect(…, s = {}, t = {}) in the test scene (camera subpath of {} vertices, light subpath of {}) is {}, expected {}{raster} — {why}",
-        c.st[0],
-        c.st[1],
-        c.camera.len(),
-        c.light.len(),
-        sci(got[k].0),
-        sci(e.0)
+    Err(crate::tr!(
+        "ex15.connect",
+        s = c.st[0],
+        t = c.st[1],
+        camera = c.camera.len(),
+        light = c.light.len(),
+        got = sci(got[k].0),
+        want = sci(e.0),
+        raster,
+        why
     ))
 }
 
@@ -544,62 +501,34 @@ fn check_weights(scene: &Scene, weight: BdptWeightFn) -> Result<(), String> {
         })
     };
     let mistakes: [Mistake<WeightCase, f32>; 8] = [
-        (
-            "that is the balance heuristic (the densities themselves, not their squares): a valid MIS weight, but the task asks for the power heuristic with exponent 2",
-            &balance,
-        ),
-        (
-            "weights divided by the largest density: they do not sum to one over the strategies (too bright wherever two strategies are both good)",
-            &by_max,
-        ),
-        (
-            "densities in the wrong measure (solid angle instead of area): the strategies' densities must all be in the area measure of the path's vertices",
-            &solid_angle,
-        ),
-        (
-            "densities in the wrong measure (solid angle instead of area) for the densities across the edge: the four you compute must be per unit area, as the stored ones are (Vertex::pdf_a)",
-            &solid_angle_edge,
-        ),
-        (
-            "your weights ignore the strategy s = 0 (the camera path that hits the light by itself): the others then sum to more than 1, too bright where a camera path finds the lamp",
-            &no_s0,
-        ),
-        (
-            "your weights ignore the strategy t = 1 (the light path joined to the lens): the others then sum to more than 1, too bright where light tracing is good (caustics, light seen in a mirror)",
-            &no_t1,
-        ),
-        (
-            "a delta vertex treated as connectable: your sums count strategies whose edge would end at the mirror; they have density 0, so the weights of the possible ones no longer sum to 1 (too dark where paths pass the mirror)",
-            &deltas_counted,
-        ),
-        (
-            "the reverse densities of the two vertices next to the edge on each side are used as stored: they are stale (they depend on the vertex across the edge), compute them for this connection",
-            &stale,
-        ),
+        (&crate::tr!("ex15.w_balance"), &balance),
+        (&crate::tr!("ex15.w_by_max"), &by_max),
+        (&crate::tr!("ex15.w_solid_angle"), &solid_angle),
+        (&crate::tr!("ex15.w_solid_angle_edge"), &solid_angle_edge),
+        (&crate::tr!("ex15.w_no_s0"), &no_s0),
+        (&crate::tr!("ex15.w_no_t1"), &no_t1),
+        (&crate::tr!("ex15.w_delta"), &deltas_counted),
+        (&crate::tr!("ex15.w_stale"), &stale),
     ];
     let c = &cases[k];
     let p = &paths[c.path];
     let n = p.n();
-    let light_name =
-        ["the quad lamp", "the sphere lamp", "the point light"][p.light_side[n - 1].light as usize];
-    let what = format!(
-        "mis_weight(s = {}, t = {}) for a path of {n} vertices ending on {light_name}{}",
-        c.s,
-        n - c.s,
-        if p.delta.iter().any(|&d| d) {
-            " with a mirror vertex"
-        } else {
-            ""
-        }
-    );
+    let light = match p.light_side[n - 1].light {
+        0 => crate::tr!("ex15.quad_lamp"),
+        1 => crate::tr!("ex15.sphere_lamp"),
+        _ => crate::tr!("ex15.point_light"),
+    };
+    let mirror = if p.delta.iter().any(|&d| d) {
+        crate::tr!("ex15.with_mirror")
+    } else {
+        String::new()
+    };
+    let what = crate::tr!("ex15.weight_what", s = c.s, t = n - c.s, n, light, mirror);
     if !p.possible(c.s) && got[k] != 0.0 {
-        return Err(format!(
-            "{what} is {}, expected 0: this strategy cannot make the path (its edge would end at a delta vertex, or hit a point light), so its weight is 0",
-            got[k]
-        ));
+        return Err(crate::tr!("ex15.impossible", what, got = got[k]));
     }
     if !got[k].is_finite() {
-        return Err(format!("{what} is {}: not a number", got[k]));
+        return Err(crate::tr!("ex15.not_a_number", what, got = got[k]));
     }
     let why = recognise(&cases, &got, &mistakes, same_weight).unwrap_or_else(|| {
         let sum: f32 = cases
@@ -608,17 +537,19 @@ fn check_weights(scene: &Scene, weight: BdptWeightFn) -> Result<(), String> {
             .filter(|(d, _)| d.path == c.path)
             .map(|(_, &g)| g)
             .sum();
-        if (sum - 1.0).abs() > 1e-3 {
-            format!(
-                "the weights of this path's strategies sum to {sum:.4}, not 1: the picture is {} where such paths carry the light",
-                if sum > 1.0 { "too bright" } else { "too dark" }
-            )
+        if (sum - 1.0).abs() > 1e-3 && sum > 1.0 {
+            crate::tr!("ex15.sum_bright", sum)
+        } else if (sum - 1.0).abs() > 1e-3 {
+            crate::tr!("ex15.sum_dark", sum)
         } else {
-            "they sum to 1, but are not the power heuristic of the strategies' densities (each the product of its vertices' area densities, camera side up to the edge, light side after it)".to_string()
+            crate::tr!("ex15.not_power")
         }
     });
-    Err(format!(
-        "{what} is {}, expected {} — {why}",
-        got[k], expected[k]
+    Err(crate::tr!(
+        "ex15.weight",
+        what,
+        got = got[k],
+        want = expected[k],
+        why
     ))
 }

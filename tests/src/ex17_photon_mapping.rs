@@ -284,7 +284,7 @@ fn search_text(s: &Search) -> String {
     match *s {
         Search::Radius(r) => format!("Search::Radius({r})"),
         Search::Nearest { k, max_radius } => {
-            format!("Search::Nearest {{ k: {k}, max_radius: {max_radius} }}")
+            format!("Search::Nearest {{ k: {}, max_radius: {} }}", k, max_radius)
         }
     }
 }
@@ -306,58 +306,19 @@ pub fn check_estimate(radiance: RadianceFn) -> Result<(), String> {
     };
     if let Some(i) = (0..cases.len()).find(|&i| !same(got[i], expected[i])) {
         let named: [(&str, V); 13] = [
-            (
-                "a plain average over the disk (a box kernel): a valid density estimate, but not the renderer's kernel — the task asks for Epanechnikov's, which falls to 0 at the disk's edge",
-                V::BoxKernel,
-            ),
-            (
-                "too dark by half: the kernel has Epanechnikov's shape but a plain disk's constant — a kernel that falls to 0 at the edge must be higher in the middle to integrate to 1 over the disk",
-                V::BoxConstant,
-            ),
-            (
-                "too bright by π: the kernel's normalization misses the π of the disk's area",
-                V::NoPi,
-            ),
-            (
-                "the disk's area uses the radius where its square belongs (PhotonMap::for_each_within hands you SQUARED distances)",
-                V::RadiusNotSquared,
-            ),
-            (
-                "the disk is half as wide as it should be: its radius is the distance of the k-th nearest photon (not half of it: a distance from x is a radius, not a diameter)",
-                V::HalfRadius,
-            ),
-            (
-                "the disk reaches one photon too far: its radius is the distance of the k-th nearest photon, not the (k+1)-th",
-                V::KPlusOne,
-            ),
-            (
-                "the disk's radius is the MEAN distance of the k nearest photons: it is the distance of the k-th nearest",
-                V::MeanDistance,
-            ),
-            (
-                "with k or fewer photons within max_radius, the disk shrank to the farthest of them: it is the whole disk of max_radius then",
-                V::FewerFarthest,
-            ),
-            (
-                "every photon within max_radius was used: only the k nearest count, the radius being the k-th's distance",
-                V::AllWithinMax,
-            ),
-            (
-                "the kernel falls linearly with the distance d: Epanechnikov's falls with d² (1 − d²/r²)",
-                V::LinearKernel,
-            ),
-            (
-                "the cosine at x is multiplied in: a photon's flux already carries it (flux through the disk = radiance · cos θ · dω · dA)",
-                V::Cosine,
-            ),
-            (
-                "f_r was evaluated with world-space directions: Brdf::eval takes them in the local frame of the hit",
-                V::WorldFrame,
-            ),
-            (
-                "f_r was evaluated with the photon's direction of travel: ω_p points from x back to where the photon came from (Photon::wi), like ω_o away from the surface",
-                V::TravelDirection,
-            ),
+            (&crate::tr!("ex17.e_box"), V::BoxKernel),
+            (&crate::tr!("ex17.e_box_constant"), V::BoxConstant),
+            (&crate::tr!("ex17.e_no_pi"), V::NoPi),
+            (&crate::tr!("ex17.e_radius"), V::RadiusNotSquared),
+            (&crate::tr!("ex17.e_half_radius"), V::HalfRadius),
+            (&crate::tr!("ex17.e_k_plus_one"), V::KPlusOne),
+            (&crate::tr!("ex17.e_mean_distance"), V::MeanDistance),
+            (&crate::tr!("ex17.e_fewer"), V::FewerFarthest),
+            (&crate::tr!("ex17.e_all_within"), V::AllWithinMax),
+            (&crate::tr!("ex17.e_linear"), V::LinearKernel),
+            (&crate::tr!("ex17.e_cosine"), V::Cosine),
+            (&crate::tr!("ex17.e_world"), V::WorldFrame),
+            (&crate::tr!("ex17.e_travel"), V::TravelDirection),
         ];
         // The mistake whose answers agree with the student's in every case.
         let known = named
@@ -371,22 +332,22 @@ pub fn check_estimate(radiance: RadianceFn) -> Result<(), String> {
             .map(|(why, _)| why.to_string());
         let why = known.unwrap_or_else(|| {
             let ratio = got[i].element_sum() / expected[i].element_sum();
-            format!(
-                "not a mistake the grader knows; your estimate is ×{ratio:.3} the expected one in this case"
-            )
+            crate::tr!("ex17.e_unknown", ratio)
         });
         let (map, _, brdf, search) = &cases[i];
-        return Err(format!(
-            "photon_radiance({} photons, a {} BRDF, {}) is {}, expected {} — {why}",
-            map.len(),
-            if matches!(brdf, Brdf::Phong(_)) {
-                "glossy"
-            } else {
-                "diffuse"
-            },
-            search_text(search),
-            fmt3(got[i]),
-            fmt3(expected[i])
+        let brdf = if matches!(brdf, Brdf::Phong(_)) {
+            crate::tr!("ex17.glossy")
+        } else {
+            crate::tr!("ex17.diffuse")
+        };
+        return Err(crate::tr!(
+            "ex17.estimate",
+            photons = map.len(),
+            brdf,
+            search = search_text(search),
+            got = fmt3(got[i]),
+            want = fmt3(expected[i]),
+            why
         ));
     }
     // No photon near x.
@@ -410,10 +371,7 @@ pub fn check_estimate(radiance: RadianceFn) -> Result<(), String> {
         },
     );
     if none != Color::ZERO {
-        return Err(format!(
-            "photon_radiance(no photon within max_radius) is {}: with no photon near x, no light is estimated",
-            fmt3(none)
-        ));
+        return Err(crate::tr!("ex17.no_photon", got = fmt3(none)));
     }
     uniform_density(radiance)
 }
@@ -451,13 +409,11 @@ fn uniform_density(radiance: RadianceFn) -> Result<(), String> {
         ));
     }
     stats.check(
-        "the k = 20 nearest of 400 photons of flux 1 spread uniformly over the unit disk around x (density 400/π), white-ish Lambert ρ = 0.5: L = ρ/π · 400/π",
+        &crate::tr!("ex17.uniform"),
         Color::splat(rho / PI * PHOTONS as f32 / PI),
         |ratio| {
-            ((ratio - K as f64 / (K - 1) as f64).abs() < 0.01).then(|| {
-                "k/(k − 1) too bright: the k-th photon, at the edge of the disk, must weigh 0"
-                    .into()
-            })
+            ((ratio - K as f64 / (K - 1) as f64).abs() < 0.01)
+                .then(|| crate::tr!("ex17.uniform_edge"))
         },
     )
 }
@@ -483,29 +439,19 @@ pub fn check_tracing(trace: TraceFn) -> Result<(), String> {
         for ph in &photons {
             let p = Vec3A::from(ph.p);
             if (p.length() - 1.0).abs() > 1e-3 {
-                return Err(format!(
-                    "furnace (a unit sphere): a photon at {} is not on the sphere — store the hit point it.p",
-                    fmt3(p)
-                ));
+                return Err(crate::tr!("ex17.not_on_sphere", p = fmt3(p)));
             }
             let wi = Vec3A::from(ph.wi);
             if (wi.length() - 1.0).abs() > 1e-3 || wi.dot(-p) <= 0.0 {
-                return Err(format!(
-                    "furnace: a photon at {} has wi = {}, which does not point back inside the sphere: wi is the unit direction from the hit back to where the photon came from",
-                    fmt3(p),
-                    fmt3(wi)
-                ));
+                return Err(crate::tr!("ex17.wi_back", p = fmt3(p), wi = fmt3(wi)));
             }
             if ph.segments == 0 {
-                return Err(
-                    "furnace: a photon with 0 segments: a photon that came straight from the light travelled 1"
-                        .into(),
-                );
+                return Err(crate::tr!("ex17.zero_segments"));
             }
             if !Vec3A::from(ph.power).is_finite() {
-                return Err(format!(
-                    "furnace: a photon's power is {}: NaN or infinite (a division by a zero density?)",
-                    fmt3(Vec3A::from(ph.power))
+                return Err(crate::tr!(
+                    "ex17.power_nonfinite",
+                    power = fmt3(Vec3A::from(ph.power))
                 ));
             }
         }
@@ -522,37 +468,31 @@ pub fn check_tracing(trace: TraceFn) -> Result<(), String> {
         let exact = FURNACE_FLUX * 0.5f32.powi(k as i32 - 1);
         let n = FLUX_PATHS as f64;
         s.check(
-            &format!(
-                "furnace (L_e = 0.5, ρ = 0.5, emitted flux Φ = 2π² W): the total flux of the photons that travelled {k} segment(s), N = {FLUX_PATHS} paths, roulette after {FLUX_RR} bounces, should be Φ·ρ^{} ",
-                k - 1
+            &crate::tr!(
+                "ex17.flux",
+                k,
+                paths = FLUX_PATHS,
+                rr = FLUX_RR,
+                exponent = k - 1
             ),
             Color::splat(exact),
             |r| {
                 Some(if (r / n - 1.0).abs() < 0.05 {
-                    "×N: each path's flux is not shared among the N paths (paths)".into()
+                    crate::tr!("ex17.flux_not_shared")
                 } else if (r - 2.0 / 3.0).abs() < 0.03 {
-                    "×2/3: the cosine at the hit is multiplied into the photon's flux: the flux arriving already carries it".into()
+                    crate::tr!("ex17.flux_cos_hit")
                 } else if k == 1 && (r - 2.0).abs() < 0.3 {
-                    format!("×{r:.2}, about 2 (the mean of 1/cos θ over cosine-distributed directions): the cosine at the light is missing (the emitted power integrates L_e cos θ)")
+                    crate::tr!("ex17.flux_cos_light", r)
                 } else if k == 1 && (r - 0.5).abs() < 0.03 {
-                    "×1/2: the light emits on both sides here; half of the emitted directions leave the sphere and carry no photon — do not count them twice, and do not drop the density of the side".into()
+                    crate::tr!("ex17.flux_sides")
                 } else if k == 1 {
-                    format!(
-                        "the photons straight from the light carry ×{r:.3} the light's power: the starting flux is L_e cos θ over the densities of the light's choice, of the point and of the direction, shared by the N paths"
-                    )
+                    crate::tr!("ex17.flux_start", r)
                 } else if k <= FLUX_RR + 1 {
-                    format!(
-                        "the photons straight from the light are right, those after {} bounce(s) carry ×{r:.3}: after a bounce the flux is multiplied by what BRDF sampling gives (f_r |cos θ_i| over the density)",
-                        k - 1
-                    )
+                    crate::tr!("ex17.flux_bounce", bounces = k - 1, r)
                 } else if r < 1.0 {
-                    format!(
-                        "×{r:.3} after Russian roulette (every photon before it is right): a survivor's flux is not divided by its survival probability (roulette)"
-                    )
+                    crate::tr!("ex17.flux_roulette_dark", r)
                 } else {
-                    format!(
-                        "×{r:.3} after Russian roulette (every photon before it is right): the survivors' flux is divided by more than their survival probability (roulette)"
-                    )
+                    crate::tr!("ex17.flux_roulette_bright", r)
                 })
             },
         )?;
@@ -567,16 +507,11 @@ pub fn check_tracing(trace: TraceFn) -> Result<(), String> {
             && it.t < 2e-3
             && caustic.brdf(&it).is_delta()
         {
-            return Err(format!(
-                "caustic scene: a photon is stored on the glass ball at {}: photons are stored at specular hits (mirrors and glass) — the camera side follows those by ray tracing, so their photons count light twice",
-                fmt3(p)
-            ));
+            return Err(crate::tr!("ex17.on_glass", p = fmt3(p)));
         }
     }
     if !photons.iter().any(|p| p.segments >= 3) {
-        return Err(
-            "caustic scene: no photon travelled 3 or more segments: the photons that go through the glass ball (the caustic) are lost — a photon goes on after a specular hit without being stored".into(),
-        );
+        return Err(crate::tr!("ex17.no_caustic_photons"));
     }
     Ok(())
 }
@@ -612,10 +547,12 @@ pub fn check_two_lights(trace: TraceFn) -> Result<(), String> {
         first.add(flux * TWO_LIGHT_PATHS as f32);
     }
     first.check(
-        &format!(
-            "two lights of unequal power in a closed box, picked with probabilities {:.1} and {:.1}: a path's photon one segment from the light, times the N = {TWO_LIGHT_PATHS} paths that share the flux, should carry the whole emitted flux π A (L₁ + L₂) = {TWO_LIGHTS_FLUX:.3} W",
-            scene.light_pmf(0),
-            scene.light_pmf(1)
+        &crate::tr!(
+            "ex17.two_lights",
+            p0 = scene.light_pmf(0),
+            p1 = scene.light_pmf(1),
+            paths = TWO_LIGHT_PATHS,
+            flux = TWO_LIGHTS_FLUX
         ),
         Color::splat(TWO_LIGHTS_FLUX),
         |r| flux_without_the_choice(r, choice_left_out),
@@ -627,8 +564,8 @@ pub fn check_furnace(trace: TraceFn, radiance: RadianceFn) -> Result<(), String>
     let mut furnace = builtin("furnace")?;
     furnace.set_resolution(8, 8);
     for (what, k, radius) in [
-        ("the k = 20 nearest photons", 20, None),
-        ("a radius of 0.25", 20, Some(0.25f32)),
+        (crate::tr!("ex17.furnace_nearest"), 20, None),
+        (crate::tr!("ex17.furnace_radius"), 20, Some(0.25f32)),
     ] {
         let mut stats = MeanVar::default();
         for m in 0..FURNACE_MAPS {
@@ -641,24 +578,25 @@ pub fn check_furnace(trace: TraceFn, radiance: RadianceFn) -> Result<(), String>
             stats.add(raytracer::metrics::mean(&r.film.image()));
         }
         stats.check(
-            &format!(
-                "the whole photon mapper in the emitting furnace ({FURNACE_MAPS} photon maps of {FURNACE_PATHS} paths, {what}): L = L_e + direct (light sample) + photons = 0.5 + 0.25 + 0.25 = 1, with no bias"
+            &crate::tr!(
+                "ex17.furnace",
+                maps = FURNACE_MAPS,
+                paths = FURNACE_PATHS,
+                what
             ),
             Color::ONE,
             |r| {
                 let f = (r - 0.75) / 0.25;
-                Some(format!(
-                    "the photons' share (0.25 of the 1) comes out ×{f:.3}{}",
-                    if (f - PI as f64).abs() < 0.1 {
-                        ": a π is missing from the kernel's normalization"
-                    } else if (f - 2.0 / 3.0).abs() < 0.05 {
-                        ": the cosine at x is multiplied in (the photon's flux already carries it)"
-                    } else if f < 0.05 {
-                        ": almost nothing comes from the photons"
-                    } else {
-                        ""
-                    }
-                ))
+                let why = if (f - PI as f64).abs() < 0.1 {
+                    crate::tr!("ex17.furnace_pi")
+                } else if (f - 2.0 / 3.0).abs() < 0.05 {
+                    crate::tr!("ex17.furnace_cos")
+                } else if f < 0.05 {
+                    crate::tr!("ex17.furnace_nothing")
+                } else {
+                    String::new()
+                };
+                Some(crate::tr!("ex17.furnace_share", f, why))
             },
         )?;
     }
@@ -804,7 +742,7 @@ pub fn render_reference(progress: bool) -> Result<PathBuf, String> {
     );
     if raytracer::render::interrupted() {
         // Some maps were cut short: the stored files stay as they were.
-        return Err("ex17_caustic: interrupted, the stored reference was left as it was".into());
+        return Err(crate::tr!("compare.interrupted", name = "ex17_caustic"));
     }
     let stats = tile_stats(&tiles);
     let grid_x = SIZE.div_ceil(TILE);
@@ -885,12 +823,7 @@ pub fn compare_caustic_z(
     let scene = caustic_scene()?;
     let (mp, vp) = reference_paths();
     let read = |p: &Path| {
-        Image::read_exr(p).map_err(|e| {
-            format!(
-                "grader: the reference {} is missing or unreadable ({e}): run `cargo run --release -p lesson11 -- references`",
-                p.display()
-            )
-        })
+        Image::read_exr(p).map_err(|e| crate::tr!("compare.missing", path = p.display(), e))
     };
     let (bi, bv) = (read(&mp)?, read(&vp)?);
     let (ai, tiles) = many_maps(
@@ -911,10 +844,7 @@ pub fn compare_caustic_z(
         .iter()
         .find(|p| !p.is_finite() || p.min_element() < 0.0)
     {
-        return Err(format!(
-            "caustic scene: a pixel of your photon mapper is {}: NaN, infinite or negative",
-            fmt3(*bad)
-        ));
+        return Err(crate::tr!("ex17.caustic_nonfinite", pixel = fmt3(*bad)));
     }
     let a = tile_stats(&tiles);
     let (mb, vb) = (
@@ -956,19 +886,27 @@ pub fn compare_caustic_z(
         write_enlarged(&zmap, &dir.join("ex17_caustic_z.png"))
     })();
     let ratio = a[t].0.element_sum() / mb[t].element_sum();
-    let mut msg = format!(
-        "caustic scene (a point light through a glass ball, {STUDENT_MAPS} photon maps of {CAUSTIC_PATHS} paths, radius {CAUSTIC_RADIUS}): your picture differs from the renderer's photon mapping in tile ({tx}, {ty}) (|z| = {:.1} > {threshold:.1}): your tile is ×{ratio:.3} the reference's",
-        worst.0
-    );
     let whole =
         raytracer::metrics::mean(&ai).element_sum() / raytracer::metrics::mean(&bi).element_sum();
-    msg.push_str(&format!("; the whole picture ×{whole:.3}"));
+    let mut msg = crate::tr!(
+        "ex17.caustic_differs",
+        maps = STUDENT_MAPS,
+        paths = CAUSTIC_PATHS,
+        radius = CAUSTIC_RADIUS,
+        tx,
+        ty,
+        z = worst.0,
+        threshold,
+        ratio,
+        whole
+    );
     match written {
-        Ok(()) => msg.push_str(&format!(
-            "; see {}/ex17_caustic_{{student,reference,z}}.png",
-            dir.display()
+        Ok(()) => msg.push_str(&crate::tr!(
+            "compare.see",
+            dir = dir.display(),
+            name = "ex17_caustic"
         )),
-        Err(e) => msg.push_str(&format!(" (could not write the images: {e})")),
+        Err(e) => msg.push_str(&crate::tr!("compare.no_images", e)),
     }
     Err(msg)
 }

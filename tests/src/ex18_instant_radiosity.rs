@@ -71,14 +71,13 @@ pub fn check(generate: GenerateVplsFn, gather: GatherFn) -> Result<(), String> {
     check_furnace(generate, gather)?;
     check_mirror(generate)?;
     check_two_lights(generate)?;
-    compare(&EX18_CORNELL, &student(generate, gather, None)).map_err(|e| {
-        format!("instant radiosity without clamping (max_depth {MAX_DEPTH}), against the path tracer: {e}")
-    })?;
-    compare(&EX18_CORNELL_CLAMPED, &student(generate, gather, Some(CLAMP))).map_err(|e| {
-        format!(
-            "instant radiosity with G clamped at {CLAMP} (max_depth {MAX_DEPTH}), against the renderer's: {e}"
-        )
-    })
+    compare(&EX18_CORNELL, &student(generate, gather, None))
+        .map_err(|e| crate::tr!("ex18.cornell", MAX_DEPTH, e))?;
+    compare(
+        &EX18_CORNELL_CLAMPED,
+        &student(generate, gather, Some(CLAMP)),
+    )
+    .map_err(|e| crate::tr!("ex18.cornell_clamped", CLAMP, MAX_DEPTH, e))
 }
 
 // ---------------------------------------------------------------------------
@@ -213,7 +212,7 @@ fn hit(scene: &Scene, from: Vec3A, to: Vec3A) -> Result<Interaction, String> {
     let ray = Ray::new(from, (to - from).normalize());
     match scene.intersect(&ray) {
         Some(it) if (it.p - to).length() < 1e-3 => Ok(it),
-        _ => Err(format!("grader: no hit at {}", fmt3(to))),
+        _ => Err(crate::tr!("ex18.grader_no_hit", to = fmt3(to))),
     }
 }
 
@@ -222,7 +221,7 @@ struct Case {
     x: Interaction,
     vpls: Vec<Vpl>,
     clamp: Option<f32>,
-    what: &'static str,
+    what: String,
     /// Whether a VPL lies close to x (G far above 1).
     near: bool,
 }
@@ -367,56 +366,56 @@ fn gather_cases(scene: &Scene) -> Result<Vec<Case>, String> {
             x: x1,
             vpls: vec![on_wall],
             clamp: None,
-            what: "a VPL on the wall lights the floor",
+            what: crate::tr!("ex18.what_wall"),
             near: false,
         },
         Case {
             x: x1,
             vpls: vec![on_wall],
             clamp: Some(100.0),
-            what: "the same, clamped at 100 (far above its G)",
+            what: crate::tr!("ex18.what_wall_clamped"),
             near: false,
         },
         Case {
             x: x2,
             vpls: vec![in_corner],
             clamp: Some(2.0),
-            what: "a VPL on the wall near the corner with the floor, clamped at 2 (G ≈ 34)",
+            what: crate::tr!("ex18.what_corner_clamped"),
             near: true,
         },
         Case {
             x: x2,
             vpls: vec![in_corner],
             clamp: None,
-            what: "the same VPL near the corner, not clamped",
+            what: crate::tr!("ex18.what_corner"),
             near: true,
         },
         Case {
             x: x3,
             vpls: vec![below],
             clamp: None,
-            what: "the floor seen from below (its normal faces away from the VPL, the VPL's faces it)",
+            what: crate::tr!("ex18.what_below"),
             near: false,
         },
         Case {
             x: x1,
             vpls: vec![light(v(-0.1, 2.0, -0.2), 0.3)],
             clamp: None,
-            what: "a VPL on the light lights the floor",
+            what: crate::tr!("ex18.what_light"),
             near: false,
         },
         Case {
             x: x4,
             vpls: vec![light(v(0.05, 2.0, 0.1), 0.5)],
             clamp: None,
-            what: "a VPL on the light behind the blocker",
+            what: crate::tr!("ex18.what_blocker"),
             near: false,
         },
         Case {
             x: x1,
             vpls: vec![on_wall, light(v(0.2, 2.0, 0.15), 0.25), in_corner],
             clamp: None,
-            what: "three VPLs at once (one on the light, two on the wall)",
+            what: crate::tr!("ex18.what_three"),
             near: false,
         },
     ])
@@ -442,72 +441,72 @@ fn check_gather(gather: GatherFn) -> Result<(), String> {
         return Ok(());
     };
     // Each usual mistake: what it is called, and the slip that makes it.
-    let slips: [(&str, Slip); 10] = [
+    let slips: [(String, Slip); 10] = [
         (
-            "signed cosines: your geometry term is negative where exactly one of the two normals faces away from the connection (the floor seen from below); G weighs how much the two surfaces see of each other, whichever way their normals point",
+            crate::tr!("ex18.s_signed"),
             Slip {
                 signed: true,
                 ..Slip::default()
             },
         ),
         (
-            "the cosine at the wrong end: at the VPL you took the cosine with the direction the light path ARRIVED from, not with the connection to x, which is where the VPL's light leaves",
+            crate::tr!("ex18.s_incoming"),
             Slip {
                 incoming: true,
                 ..Slip::default()
             },
         ),
         (
-            "r for r²: your light falls off as 1/r with distance; the geometry term changes a solid angle into area, which brings 1/‖x − y‖²",
+            crate::tr!("ex18.s_r"),
             Slip {
                 r: true,
                 ..Slip::default()
             },
         ),
         (
-            "the clamp is applied to the contribution (the light, per colour) instead of to the geometry term G: the lecture's clamping bounds G",
+            crate::tr!("ex18.s_clamp_light"),
             Slip {
                 clamp_light: true,
                 ..Slip::default()
             },
         ),
         (
-            "no clamping: with clamp = Some(g_max), your G still exceeds g_max near the corner",
+            crate::tr!("ex18.s_no_clamp"),
             Slip {
                 no_clamp: true,
                 ..Slip::default()
             },
         ),
         (
-            "no visibility: a VPL behind the blocker still lights x (the shadow ray is missing)",
+            crate::tr!("ex18.s_no_shadow"),
             Slip {
                 no_shadow: true,
                 ..Slip::default()
             },
         ),
         (
-            "the BRDF at the VPL is missing: a VPL on a surface reflects its flux with its BRDF, from its incoming direction towards x",
+            crate::tr!("ex18.s_no_f_y"),
             Slip {
                 no_f_y: true,
                 ..Slip::default()
             },
         ),
         (
-            "the BRDF at x is missing",
+            crate::tr!("ex18.s_no_f_x"),
             Slip {
                 no_f_x: true,
                 ..Slip::default()
             },
         ),
         (
-            "the cosine at a VPL on a surface is missing: the geometry term has a cosine at each end of the connection, at the VPL too (its light leaves the surface towards x)",
+            crate::tr!("ex18.s_no_cos_surface"),
             Slip {
                 no_cos_surface: true,
                 ..Slip::default()
             },
         ),
         (
-            "the cosine at the VPL's end is missing: the geometry term has a cosine at each end of the connection, at y too (its light leaves y towards x), whether y lies on a surface or on the light",
+            crate::tr!("ex18.s_no_cos_y"),
             Slip {
                 no_cos_y: true,
                 ..Slip::default()
@@ -522,7 +521,7 @@ fn check_gather(gather: GatherFn) -> Result<(), String> {
     let mistakes: Vec<Mistake<Case, Color>> = slips
         .iter()
         .zip(&answers)
-        .map(|((why, _), answer)| (*why, answer as &dyn Fn(&Case) -> Color))
+        .map(|((why, _), answer)| (why.as_str(), answer as &dyn Fn(&Case) -> Color))
         .collect();
     let c = &cases[k];
     let why = recognise(&cases, &got, &mistakes, same).unwrap_or_else(|| {
@@ -534,22 +533,20 @@ fn check_gather(gather: GatherFn) -> Result<(), String> {
                     && (got[j].cmplt(right(&cases[j]) * 0.999)).all())
         });
         if too_dark_unclamped {
-            "clamping where none is asked: with clamp = None your gather still loses light where a VPL comes close to x (near the corner); None means G as it is, however large".to_string()
+            crate::tr!("ex18.clamp_always")
         } else {
             let ratio = got[k] / right(c);
-            format!(
-                "no usual mistake explains every case; in this one your value is {} times the expected (per channel)",
-                fmt3(ratio)
-            )
+            crate::tr!("ex18.gather_unknown", ratio = fmt3(ratio))
         }
     });
-    Err(format!(
-        "gather, {} (x = {}, clamp = {:?}): your light is {}, expected {} — {why}",
-        c.what,
-        fmt3(c.x.p),
-        c.clamp,
-        fmt3(got[k]),
-        fmt3(right(c))
+    Err(crate::tr!(
+        "ex18.gather",
+        what = c.what,
+        x = fmt3(c.x.p),
+        clamp = format!("{:?}", c.clamp),
+        got = fmt3(got[k]),
+        want = fmt3(right(c)),
+        why
     ))
 }
 
@@ -588,60 +585,38 @@ fn check_furnace(generate: GenerateVplsFn, gather: GatherFn) -> Result<(), Strin
         let stats = furnace_stats(&furnace, generate, gather, Some(d), 1000, 180 + d as u64);
         let exact = series(d, RHO);
         let named = [
-            (
-                exact - LE * RHO,
-                "direct light is missing: no VPL on the light itself (y_0 must be one: it stands for the light's own emission)".to_string(),
-            ),
-            (
-                LE + n * (exact - LE),
-                format!(
-                    "the VPLs' light is {n} times too strong, as many times as there are light paths: the VPLs of N paths share the light, each carries 1/N of its path's flux"
-                ),
-            ),
-            (
-                series(d, -RHO),
-                "every VPL takes light away: your geometry term is negative inside the sphere, where both normals point outwards (signed cosines)".to_string(),
-            ),
-            (
-                series(d + 1, RHO),
-                format!("one bounce too many: max_depth {d} allows paths of {d} segments, a VPL of k segments makes k + 2"),
-            ),
-            (
-                series(d - 1, RHO),
-                format!("one bounce too few: max_depth {d} allows paths of {d} segments, a VPL of k segments makes k + 2"),
-            ),
+            (exact - LE * RHO, crate::tr!("ex18.f_no_light_vpl")),
+            (LE + n * (exact - LE), crate::tr!("ex18.f_not_shared", n)),
+            (series(d, -RHO), crate::tr!("ex18.f_signed")),
+            (series(d + 1, RHO), crate::tr!("ex18.f_more", d)),
+            (series(d - 1, RHO), crate::tr!("ex18.f_fewer", d)),
         ];
         let advice = named
             .into_iter()
             .find(|(v, _)| stats.matches(Color::splat(*v as f32)))
             .map(|(_, why)| why);
         stats.check(
-            &format!(
-                "emitting furnace (L_e = 0.5, ρ = 0.5, two-sided), max_depth {d}, {FURNACE_PATHS} light paths per VPL set, no roulette: L = L_e(1 + … + ρ^(D−1))"
-            ),
+            &crate::tr!("ex18.furnace", d, paths = FURNACE_PATHS),
             Color::splat(exact as f32),
             |ratio| {
                 advice.clone().or_else(|| {
-                    Some(format!(
-                        "{} by ×{ratio:.3}; no usual mistake gives this mean",
-                        if ratio > 1.0 { "too bright" } else { "too dark" }
-                    ))
+                    Some(if ratio > 1.0 {
+                        crate::tr!("ex18.f_bright", ratio)
+                    } else {
+                        crate::tr!("ex18.f_dark", ratio)
+                    })
                 })
             },
         )?;
     }
     let stats = furnace_stats(&furnace, generate, gather, None, 1, 185);
-    stats.check(
-        "emitting furnace, unlimited depth, Russian roulette after 1 bounce: L = L_e/(1 − ρ) = 1",
-        Color::ONE,
-        |ratio| {
-            Some(if ratio < 1.0 {
-                "too dark only when Russian roulette plays: the flux of the paths that survive must make up for those that end (roulette without division?)".to_string()
-            } else {
-                "too bright only when Russian roulette plays: is the flux divided by the survival probability of the path that went on?".to_string()
-            })
-        },
-    )
+    stats.check(&crate::tr!("ex18.furnace_roulette"), Color::ONE, |ratio| {
+        Some(if ratio < 1.0 {
+            crate::tr!("ex18.roulette_dark")
+        } else {
+            crate::tr!("ex18.roulette_bright")
+        })
+    })
 }
 
 // ---------------------------------------------------------------------------
@@ -656,20 +631,14 @@ fn check_mirror(generate: GenerateVplsFn) -> Result<(), String> {
         .filter(|v| matches!(v, Vpl::Surface { it, .. } if scene.brdf(it).is_delta()))
         .count();
     if on_mirror > 0 {
-        return Err(format!(
-            "a light over a mirror floor: {on_mirror} of your {} VPLs sit on the mirror; a mirror's BRDF is a delta, zero towards every x a connection could reach: such VPLs light nothing (VPLs stored at specular hits)",
-            vpls.len()
-        ));
+        return Err(crate::tr!("ex18.on_mirror", on_mirror, total = vpls.len()));
     }
     let on_ceiling = vpls
         .iter()
         .filter(|v| matches!(v, Vpl::Surface { it, .. } if it.p.y > 1.1))
         .count();
     if on_ceiling == 0 {
-        return Err(format!(
-            "a light over a mirror floor, 64 light paths: none of your {} VPLs is on the ceiling, where the light reflected by the mirror lands (does a path end at a mirror instead of going on?)",
-            vpls.len()
-        ));
+        return Err(crate::tr!("ex18.none_on_ceiling", total = vpls.len()));
     }
     Ok(())
 }
@@ -778,9 +747,9 @@ pub const TWO_LIGHTS_FLUX: f32 = std::f32::consts::PI * TWO_LIGHTS_AREA * 10.0;
 pub fn two_lights_scene() -> Result<Scene, String> {
     let scene = text_scene("grader-two-lights", TWO_LIGHTS_SCENE)?;
     if scene.lights.len() != 2 {
-        return Err(format!(
-            "grader: {} lights in the two-light box",
-            scene.lights.len()
+        return Err(crate::tr!(
+            "ex18.grader_two_lights",
+            count = scene.lights.len()
         ));
     }
     Ok(scene)
@@ -800,16 +769,14 @@ pub fn two_lights_choice_left_out(scene: &Scene) -> f64 {
 /// leaving out the light's choice gives `left_out` (exercises 17 and 18).
 pub fn flux_without_the_choice(r: f64, left_out: f64) -> Option<String> {
     Some(if ratio_near(r, left_out) {
-        format!(
-            "×{r:.3}: each light's flux arrives weighted by how often that light is picked — the choice of the light is part of how the path was made"
-        )
+        crate::tr!("ex18.choice_flux", r)
     } else {
         no_usual_mistake(r)
     })
 }
 
 fn no_usual_mistake(r: f64) -> String {
-    format!("×{r:.3}; no usual mistake gives this mean")
+    crate::tr!("ex18.no_usual_mistake", r)
 }
 
 /// Independent VPL sets of the two-light check, and light paths per set.
@@ -851,17 +818,18 @@ fn check_two_lights(generate: GenerateVplsFn) -> Result<(), String> {
     for (l, stats) in on_light.iter().enumerate() {
         let pick = scene.light_pmf(l as u32) as f64;
         stats.check(
-            &format!(
-                "two lights of unequal power in a closed box, picked with probabilities {:.1} and {:.1}: the weights of the VPLs on light {l}, summed over a set of {TWO_LIGHT_PATHS} light paths, should average its area, {TWO_LIGHTS_AREA} m²",
-                scene.light_pmf(0),
-                scene.light_pmf(1)
+            &crate::tr!(
+                "ex18.light_weights",
+                p0 = scene.light_pmf(0),
+                p1 = scene.light_pmf(1),
+                l,
+                paths = TWO_LIGHT_PATHS,
+                area = TWO_LIGHTS_AREA
             ),
             Color::splat(TWO_LIGHTS_AREA),
             |r| {
                 Some(if ratio_near(r, pick) {
-                    format!(
-                        "they average ×{r:.3}, the probability of picking this light: a light picked more often gets heavier VPLs — the choice of the light is part of how the path was made"
-                    )
+                    crate::tr!("ex18.choice_weight", r)
                 } else {
                     no_usual_mistake(r)
                 })
@@ -869,8 +837,10 @@ fn check_two_lights(generate: GenerateVplsFn) -> Result<(), String> {
         )?;
     }
     first.check(
-        &format!(
-            "two lights of unequal power in a closed box: the VPLs one segment from the lights, summed over a set of {TWO_LIGHT_PATHS} light paths, should carry the whole emitted flux π A (L₁ + L₂) = {TWO_LIGHTS_FLUX:.3} W"
+        &crate::tr!(
+            "ex18.first_flux",
+            paths = TWO_LIGHT_PATHS,
+            flux = TWO_LIGHTS_FLUX
         ),
         Color::splat(TWO_LIGHTS_FLUX),
         |r| flux_without_the_choice(r, choice_left_out),

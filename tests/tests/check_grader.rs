@@ -756,7 +756,7 @@ fn ex15_bdpt() {
 #[test]
 fn ex17_photon_mapping() {
     use fixtures::ex17::*;
-    use grading::ex17_photon_mapping::check;
+    use grading::ex17_photon_mapping::{RadianceFn, TraceFn, check};
     passes(
         "other order of numbers, survival 1/2, f64 flux; full sort, f64 kernel",
         check(trace::<0>, radiance::<0>),
@@ -765,86 +765,86 @@ fn ex17_photon_mapping() {
         "survival by the throughput capped at 0.9; the renderer's kernel",
         check(trace::<OTHER_ROULETTE>, radiance::<LIBRARY_KERNEL>),
     );
-    let t = trace::<0>;
-    let r = radiance::<0>;
-    for (name, result, keyword) in [
+    let t = trace::<0> as TraceFn;
+    let r = radiance::<0> as RadianceFn;
+    for (name, (tf, rf), keyword) in [
         (
             "flux not shared among the N paths",
-            check(trace::<NO_SHARE>, r),
+            (trace::<NO_SHARE> as TraceFn, r),
             "N paths",
         ),
         (
             "roulette without dividing the flux",
-            check(trace::<ROULETTE_UNDIVIDED>, r),
+            (trace::<ROULETTE_UNDIVIDED> as TraceFn, r),
             "not divided by its survival",
         ),
         (
             "photons stored on glass",
-            check(trace::<STORE_AT_SPECULAR>, r),
+            (trace::<STORE_AT_SPECULAR> as TraceFn, r),
             "specular hits",
         ),
         (
             "cosine at the hit in the stored flux",
-            check(trace::<COSINE_AT_HIT>, r),
+            (trace::<COSINE_AT_HIT> as TraceFn, r),
             "cosine at the hit",
         ),
         (
             "no cosine at the light",
-            check(trace::<NO_COSINE_AT_LIGHT>, r),
+            (trace::<NO_COSINE_AT_LIGHT> as TraceFn, r),
             "cosine at the light",
         ),
         (
             "the flux without the light's probability",
-            check(trace::<NO_PICK>, r),
+            (trace::<NO_PICK> as TraceFn, r),
             "weighted by how often that light is picked",
         ),
         (
             "no π in the kernel",
-            check(t, radiance::<NO_PI>),
+            (t, radiance::<NO_PI> as RadianceFn),
             "misses the π",
         ),
         (
             "the radius not squared",
-            check(t, radiance::<RADIUS_NOT_SQUARED>),
+            (t, radiance::<RADIUS_NOT_SQUARED> as RadianceFn),
             "its square",
         ),
         (
             "Epanechnikov's shape with a plain disk's constant",
-            check(t, radiance::<BOX_CONSTANT>),
+            (t, radiance::<BOX_CONSTANT> as RadianceFn),
             "plain disk's constant",
         ),
         (
             "half the radius",
-            check(t, radiance::<HALF_RADIUS>),
+            (t, radiance::<HALF_RADIUS> as RadianceFn),
             "half as wide",
         ),
         (
             "the (k+1)-th neighbour's distance",
-            check(t, radiance::<K_PLUS_ONE>),
+            (t, radiance::<K_PLUS_ONE> as RadianceFn),
             "(k+1)-th",
         ),
         (
             "the mean distance as the radius",
-            check(t, radiance::<MEAN_DISTANCE>),
+            (t, radiance::<MEAN_DISTANCE> as RadianceFn),
             "mean distance",
         ),
         (
             "f_r in world space",
-            check(t, radiance::<WORLD_FRAME>),
+            (t, radiance::<WORLD_FRAME> as RadianceFn),
             "local frame",
         ),
         (
             "f_r with the direction of travel",
-            check(t, radiance::<TRAVEL_DIRECTION>),
+            (t, radiance::<TRAVEL_DIRECTION> as RadianceFn),
             "direction of travel",
         ),
         (
             "the cosine at x in the estimate",
-            check(t, radiance::<COSINE_IN_ESTIMATE>),
+            (t, radiance::<COSINE_IN_ESTIMATE> as RadianceFn),
             "already carries",
         ),
     ] {
-        fails(name, result, keyword);
+        fails!(name, check(tf, rf), keyword);
     }
 }
 
