@@ -1,28 +1,45 @@
 //! Exercise 2 — red–cyan anaglyph with desaturation.
 //!
 //! Slides: "Anaglyph glasses" ("Анаглифни очила"), "Anaglyphs of saturated
-//! scenes" ("Анаглифи на картинки с наситени цветове").
+//! scenes" ("Анаглифи на картинки с наситени цветове"), "Desaturation"
+//! ("Обезцветяване (desaturation)").
 //!
 //! Each frame passes through a colour filter, the results are mixed into
 //! one frame, and glasses with the same filters let each eye see only its
 //! own frame. With saturated colours it helps to "kill" some of the colour
 //! first (desaturation).
 //!
-//! Task: mix one pixel of the left frame and the same pixel of the right
-//! frame into the pixel of a red–cyan anaglyph (red filter over the left
-//! eye, cyan over the right):
-//! 1. desaturate both colours by `d = desaturation ∈ [0, 1]`: `d = 0`
-//!    leaves a colour as it is, `d = 1` turns it into the grey of the same
-//!    luminance (`raytracer::math::luminance`), and in between the colour
-//!    changes linearly with `d` (its luminance stays the same throughout:
-//!    check that yours does);
-//! 2. each filter lets through its own channels: red for the left eye,
-//!    green and blue (cyan) for the right.
+//! **Part 1: `desaturate(c, d)`.** Design a desaturation by the amount
+//! `d ∈ [0, 1]` and show that it has these properties:
+//! - `d = 0` leaves the colour as it is; `d = 1` turns it into a grey (the
+//!   three channels equal);
+//! - for every `d` the colour keeps its luminance `Y(c)`
+//!   (`raytracer::math::luminance`, a weighted sum of the linear channels):
+//!   each eye sees a colour as bright as before, only less colourful. Which
+//!   grey can the colour end at, then?
+//! - the colour only loses colourfulness: its difference from the grey it
+//!   ends at keeps its direction (the hue does not turn) and never grows as
+//!   `d` grows.
 //!
-//! Receives: linear RGB colours `left`, `right` and `desaturation`.
-//! Returns: the anaglyph colour.
+//! The grader checks these properties, not one formula.
+//!
+//! **Part 2: `anaglyph(left, right, d)`.** Mix one pixel of the left frame
+//! and the same pixel of the right frame into the pixel of a red–cyan
+//! anaglyph (red filter over the left eye, cyan over the right): desaturate
+//! both colours by `d` with your part 1, then keep of each what its
+//! filter lets through — red for the left eye, green and blue (cyan) for
+//! the right.
+//!
+//! Receives: linear RGB colours and `d`. Returns: the desaturated colour;
+//! the anaglyph colour.
 
 use raytracer::math::Color;
+
+/// `c` desaturated by `d ∈ [0, 1]`, keeping its luminance.
+pub fn desaturate(c: Color, d: f32) -> Color {
+    // TODO: a grey with the right luminance, and a way there that keeps it.
+    todo!()
+}
 
 /// One pixel of a red–cyan anaglyph.
 pub fn anaglyph(left: Color, right: Color, desaturation: f32) -> Color {

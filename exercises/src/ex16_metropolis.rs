@@ -26,16 +26,16 @@
 //!    of `x` moved by a small random offset of size about
 //!    `settings.mutation_size`, symmetric, and wrapped around so that it
 //!    stays in `[0, 1)`: primary sample space is a torus here). Evaluate `y`
-//!    and accept it with the Metropolis probability of a symmetric proposal,
-//!    so that the chain visits vectors in proportion to `f`.
-//! 3. **The splats of both states.** Every step adds to the image the
-//!    expected value, over the accept coin, of what the next state would
-//!    add: the current state with the probability that it stays, the
-//!    proposal with the probability that it is taken. A state visited in
-//!    proportion to `f` contributes its `g` over its `f`, and the whole image
-//!    carries the factor `b / N` (the slide's estimator without its `W·H`,
-//!    which the renderer applies). Splat a state with
-//!    [`ChainImage::splat`]`(&state, weight)`.
+//!    and accept it with the probability you derive from the slide's
+//!    detailed balance: the largest acceptance with which a chain that
+//!    visits vectors in proportion to `f` keeps doing so.
+//! 3. **The splats of both states.** The slide's identity
+//!    `I_j = b · E_{f/b}[g_j / f]` says what a state visited in proportion
+//!    to `f` is worth, and the `N` steps share it. Every step adds to the
+//!    image, instead of the state the chain moves to, that state's expected
+//!    value over the accept coin: derive each state's weight from these two
+//!    facts (the factor `W·H` of the pixels is the renderer's, not yours).
+//!    Splat a state with [`ChainImage::splat`]`(&state, weight)`.
 //! 4. **The move**: keep `y` with its acceptance probability, else stay at
 //!    `x`.
 //!

@@ -75,7 +75,6 @@ pub fn check(f: LambertFn) -> Result<(), String> {
                 uv,
                 colour = fmt3(c),
                 got = fmt3(got),
-                pi_got = fmt3(got * PI),
                 why
             ));
         }

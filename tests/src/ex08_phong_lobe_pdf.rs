@@ -70,14 +70,7 @@ pub fn check(pdf: PdfFn) -> Result<(), String> {
         let (n, t) = cases[k];
         let why = recognise(&cases, &got, &mistakes, |g, a| close(g, a, 1e-4))
             .unwrap_or_else(|| crate::tr!("ex08.integral", integral = integral(pdf, n), n));
-        return Err(crate::tr!(
-            "ex08.pdf",
-            got = got[k],
-            want = expected(n, t),
-            n,
-            t,
-            why
-        ));
+        return Err(crate::tr!("ex08.pdf", got = got[k], n, t, why));
     }
     // The edge: directions the warp never produces have density 0.
     for (n, t) in [(10.0, 0.0), (10.0, -0.4), (2.5, -0.9), (0.0, -1.0)] {

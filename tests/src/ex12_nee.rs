@@ -271,7 +271,6 @@ fn check_conversion(to_solid_angle: AreaPdfFn) -> Result<(), String> {
             n = fmt3(n),
             pdf_a,
             got,
-            want,
             why
         ));
     }

@@ -74,7 +74,7 @@ pub const GRADERS: &[(&str, Check)] = &[
         ex01_stereo_eyes::check(ex::ex01_stereo_eyes::stereo_eyes)
     }),
     ("ex02_anaglyph", || {
-        ex02_anaglyph::check(ex::ex02_anaglyph::anaglyph)
+        ex02_anaglyph::check(ex::ex02_anaglyph::desaturate, ex::ex02_anaglyph::anaglyph)
     }),
     ("ex03_lambert", || {
         ex03_lambert::check(ex::ex03_lambert::lambert_eval)

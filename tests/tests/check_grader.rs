@@ -105,36 +105,70 @@ macro_rules! fails {
 
 #[test]
 fn ex01_stereo_eyes() {
+    use ex01_stereo_eyes::check;
     passes(
-        "recomputed rightDir",
-        ex01_stereo_eyes::check(correct::stereo_eyes),
+        "recomputed rightDir, look_at C ahead, slide from a projected point",
+        check(correct::stereo_eyes),
     );
-    fails!(
-        "swapped eyes",
-        ex01_stereo_eyes::check(wrong::eyes_swapped),
-        "swapped",
-    );
+    fails!("swapped eyes", check(wrong::eyes_swapped), "swapped");
     fails!(
         "full separation each side",
-        ex01_stereo_eyes::check(wrong::eyes_too_far),
+        check(wrong::eyes_too_far),
         "twice too far apart",
+    );
+    fails!("toe-in", check(wrong::eyes_toe_in), "vertical parallax");
+    fails!(
+        "no slide",
+        check(wrong::eyes_no_slide),
+        "infinitely far away"
+    );
+    fails!(
+        "slid the wrong way",
+        check(wrong::eyes_slide_wrong_way),
+        "the wrong way"
+    );
+    fails!(
+        "slide not divided by C",
+        check(wrong::eyes_slide_without_c),
+        "as if the convergence distance were 1"
+    );
+    fails!(
+        "both windows slid the same way too",
+        check(wrong::eyes_off_centre),
+        "off-centre"
     );
 }
 
 #[test]
 fn ex02_anaglyph() {
+    use ex02_anaglyph::check;
     passes(
-        "channel by channel",
-        ex02_anaglyph::check(correct::anaglyph),
+        "another schedule, channel by channel",
+        check(correct::desaturate, correct::anaglyph),
+    );
+    fails!(
+        "towards the mean of the channels",
+        check(wrong::desaturate_to_mean, correct::anaglyph),
+        "plain average",
+    );
+    fails!(
+        "Rec. 601 weights",
+        check(wrong::desaturate_rec601, correct::anaglyph),
+        "keep y at every d",
+    );
+    fails!(
+        "a hue that turns",
+        check(wrong::desaturate_turning, correct::anaglyph),
+        "the colour turns",
     );
     fails!(
         "swapped channels",
-        ex02_anaglyph::check(wrong::anaglyph_swapped),
+        check(correct::desaturate, wrong::anaglyph_swapped),
         "swapped",
     );
     fails!(
         "no desaturation",
-        ex02_anaglyph::check(wrong::anaglyph_saturated),
+        check(correct::desaturate, wrong::anaglyph_saturated),
         "not desaturated",
     );
 }
@@ -1030,10 +1064,13 @@ fn reference_tables() {
         let a = ex02_anaglyph::expected(l, r, d);
         t.push_str(&format!("  {l:.3} {r:.3} d = {d:.2} -> {a:.4}\n"));
     }
-    t.push_str("stereo eyes (left, right)\n");
-    for (c, s) in ex01_stereo_eyes::cameras() {
-        let (l, r) = ex01_stereo_eyes::expected(&c, s);
-        t.push_str(&format!("  s = {s}: {l:.4} {r:.4}\n"));
+    t.push_str("stereo eyes (left, right): position, window shift\n");
+    for (c, s, conv) in ex01_stereo_eyes::cameras() {
+        let (l, r) = ex01_stereo_eyes::expected(&c, s, conv);
+        t.push_str(&format!(
+            "  s = {s}, C = {conv}: {:.4} {:.6}, {:.4} {:.6}\n",
+            l.position, l.shift, r.position, r.shift
+        ));
     }
     insta::assert_snapshot!(t);
 }

@@ -1,24 +1,20 @@
 //! Exercises 1 and 2: the stereo pair's cameras and the anaglyph, from the
-//! student's eye positions and colour mixing.
+//! student's eye cameras and colour mixing.
 
-use raytracer::camera::{Camera, CameraParams};
+use raytracer::camera::Camera;
 use raytracer::film::Image;
 
 use crate::{ex01_stereo_eyes, ex02_anaglyph};
 
-/// The two cameras of a stereo pair ("parallel" method): each eye from
-/// exercise 1, looking in the same direction as the middle camera.
-pub fn stereo_cameras(camera: &Camera, stereo_separation: f32) -> (Camera, Camera) {
-    let (left, right) = ex01_stereo_eyes::stereo_eyes(camera, stereo_separation);
-    let eye = |p| {
-        let offset = p - camera.position();
-        let params = CameraParams {
-            position: p,
-            look_at: camera.params.look_at + offset,
-            ..camera.params
-        };
-        Camera::new(params, camera.width, camera.height)
-    };
+/// The two cameras of a stereo pair (parallel eyes, off-axis windows) from
+/// exercise 1, converged at `convergence`, at the camera's resolution.
+pub fn stereo_cameras(
+    camera: &Camera,
+    stereo_separation: f32,
+    convergence: f32,
+) -> (Camera, Camera) {
+    let (left, right) = ex01_stereo_eyes::stereo_eyes(camera, stereo_separation, convergence);
+    let eye = |params| Camera::new(params, camera.width, camera.height);
     (eye(left), eye(right))
 }
 
