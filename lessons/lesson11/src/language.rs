@@ -5,9 +5,9 @@
 //! The language is chosen before the command line is parsed, so that
 //! `--help` already speaks it: the help's texts are clap's (from the doc
 //! comments, in English); in Bulgarian this module puts the Bulgarian texts
-//! of the commands and of the common options in their place, and the
-//! headings of the help in Bulgarian. A chapter's own options keep their
-//! English help for now.
+//! of the commands and of every option in their place (the tables below,
+//! by the option's id), the headings, the usage line and clap's "default"
+//! and "possible values" in Bulgarian.
 
 use lang::Lang;
 
@@ -121,51 +121,503 @@ const ABOUT_BG: &[(&str, &str)] = &[
     ),
 ];
 
-/// The help of the options most commands share (the chapters' and the
-/// tour's scene, size, samples, seed, threads, output), in Bulgarian.
-const OPTIONS_BG: &[(&str, &str)] = &[
+/// The help of every option in Bulgarian: `(command, option, text)`, where
+/// an empty command stands for every command that has the option, and a
+/// named one overrides it (`scenes --force` is not the renders' `--force`).
+const OPTIONS_BG: &[(&str, &str, &str)] = &[
+    // The scene, size, samples, seed, threads and output of the chapters and `render`.
     (
+        "",
         "scene",
         "Име на вградена сцена (вижте `lesson11 scenes`) или път до файл със сцена (.toml). Вграденото име има предимство пред файл със същото име в текущата папка (за файла пишете ./ИМЕ)",
     ),
     (
+        "",
         "width",
         "Ширина на картината в пиксели (по подразбиране: тази на сцената)",
     ),
     (
+        "",
         "height",
         "Височина на картината в пиксели (по подразбиране: тази на сцената)",
     ),
-    ("spp", "Проби на пиксел (по подразбиране: тези на сцената)"),
     (
+        "",
+        "spp",
+        "Проби на пиксел (по подразбиране: тези на сцената)",
+    ),
+    (
+        "",
         "seed",
         "Seed на случайните числа: същият seed дава същата картина, бит по бит",
     ),
     (
+        "",
         "threads",
         "Работни нишки (по подразбиране: всички ядра; най-много 4 на ядро, а поне 64 винаги са позволени). Картината не зависи от тях",
     ),
-    ("out", "Папката за резултатите"),
+    ("", "out", "Папката за резултатите"),
     (
+        "",
         "force",
-        "Продължава, въпреки че рендерирането иска повече памет от границата (половината от физическата памет) или наивната рекурсия повече лъчи от бюджета си",
+        "Продължава, въпреки че рендерирането иска повече памет от границата (половината от физическата памет) или повече работа от бюджета (най-много 1e10 лъча, светлинни пътя или мутации)",
     ),
     (
+        "",
         "quality",
         "Колко време да отнеме: tiny, quick (по подразбиране) или full",
     ),
-    ("quick", "Кратко за --quality quick"),
-    ("full", "Кратко за --quality full"),
+    ("", "quick", "Кратко за --quality quick"),
+    ("", "full", "Кратко за --quality full"),
+    // The integrators and their options (`render`, `stereo`).
+    ("", "integrator", "Алгоритъмът, който оценява всеки пиксел"),
+    (
+        "",
+        "max_depth",
+        "Максимална дълбочина D на пътя, по конвенцията на Mitsuba: 1 = само светлините, видени направо, 2 = директна светлина, D = най-много D−1 отражения, −1 = без граница; най-много 65535, както във файл със сцена (по подразбиране: тази на сцената; за наивната рекурсия 4, освен ако тази на сцената е крайна). Не важи за direct и ao",
+    ),
+    (
+        "",
+        "rr_depth",
+        "Руската рулетка може да прекратява пътищата след толкова отражения (по подразбиране: тази на сцената). Не важи за direct и ao",
+    ),
+    (
+        "",
+        "branching",
+        "Наивна рекурсия: коефициентът на разклоняване N, по един за ниво (последният се повтаря), напр. 16,4,2 (по подразбиране: 8)",
+    ),
+    (
+        "",
+        "roulette",
+        "Наивна рекурсия: прекратяване с руска рулетка (неотместено) от --rr-depth нататък",
+    ),
+    (
+        "",
+        "cutoff",
+        "Наивна рекурсия: спиране, щом произведението на BRDF теглата падне под тази стойност (идеята от лекцията; отместено)",
+    ),
+    (
+        "",
+        "ao_distance",
+        "Ambient occlusion: дължината на лъчите за засенчване, в единиците на сцената (метри; по подразбиране 1)",
+    ),
+    (
+        "",
+        "chains",
+        "Metropolis: независими вериги на Марков, всяка с равен дял от мутациите (по подразбиране 64 или по една на мутация, ако мутациите са по-малко). Картината не зависи от --threads; разсейването на веригите е нейният EXR на дисперсията",
+    ),
+    (
+        "",
+        "bootstrap",
+        "Metropolis: независимите пътища на началната оценка (bootstrap), която оценява яркостта b и стартира веригите (по подразбиране: по един на пиксел)",
+    ),
+    (
+        "",
+        "large_step_probability",
+        "Metropolis: вероятността за голяма стъпка – нов независим път, в [0, 1] (по подразбиране 0.3)",
+    ),
+    (
+        "",
+        "mutation_size",
+        "Metropolis: стандартното отклонение на малката стъпка в пространството на първичните проби, в (0, 1] (по подразбиране 0.01)",
+    ),
+    (
+        "",
+        "photons",
+        "photon: трасирани светлинни пътища (по подразбиране 200000); sppm: фотонни пътища на преминаване (по подразбиране 50000)",
+    ),
+    (
+        "",
+        "k",
+        "photon: оценка на плътността от k-те най-близки фотона (по подразбиране 50)",
+    ),
+    (
+        "",
+        "radius",
+        "photon: фиксиран радиус на търсене вместо k-те най-близки; sppm: началният радиус (по подразбиране: 1% от диагонала на сцената). В единиците на сцената",
+    ),
+    (
+        "",
+        "final_gather",
+        "photon: final gathering с толкова BRDF лъча на видима точка (по подразбиране 0: глобалната фотонна карта се чете направо)",
+    ),
+    (
+        "",
+        "alpha",
+        "sppm: делът α от новите фотони, който се запазва при всяко преминаване, в (0, 1) (по подразбиране 2/3)",
+    ),
+    (
+        "",
+        "vpl_paths",
+        "vpl: трасирани светлинни пътища; всеки оставя VPL (виртуална точкова светлина) във всеки дифузен връх (по подразбиране 256)",
+    ),
+    (
+        "",
+        "clamp",
+        "vpl: ограничаване (clamping) на геометричния член G до тази граница (по подразбиране 0: без ограничаване, неотместено)",
+    ),
+    (
+        "",
+        "ic_error",
+        "irradiance-cache: прагът на грешката a на Ward (по подразбиране 0.3; по-малък: повече записи)",
+    ),
+    (
+        "",
+        "ic_rays",
+        "irradiance-cache: лъчи по полусферата на запис (по подразбиране 128)",
+    ),
+    (
+        "",
+        "ic_gradients",
+        "irradiance-cache: градиентите на Ward и Heckbert: записите екстраполират E_i + (n_i × n)·∇_r E_i + (x − x_i)·∇_t E_i от стратифицираните си лъчи, вместо само да усредняват",
+    ),
+    (
+        "",
+        "exposure",
+        "Експозиция в стъпки за PNG картините (+1 удвоява яркостта); EXR файловете никога не се променят",
+    ),
+    // `stereo`: the stereo rig, the anaglyphs and the light field.
+    (
+        "",
+        "separation",
+        "stereoSeparation: цялото разстояние между очите в единиците на сцената; всяко око се измества с половината (0.065 = очите на човек в сцена в метри)",
+    ),
+    (
+        "",
+        "convergence",
+        "Разстоянието на нулев паралакс по посоката на гледане: каквото лежи там, се появява в равнината на екрана (по подразбиране: фокусното разстояние на камерата)",
+    ),
+    (
+        "",
+        "mode",
+        "Кои картини да се запишат, разделени със запетая: red-cyan, half-color, grey, red-blue, red-green, amber-blue, green-magenta, dubois, side-by-side, cross-eyed, over-under, left, right или all",
+    ),
+    (
+        "",
+        "desaturate",
+        "Обезцветяване на анаглифите, от 0 (цветовете не се променят) до 1 (сиво): лекът за наситени сцени, в които едното око би виждало дупки",
+    ),
+    (
+        "",
+        "toe_in",
+        "Завърта очите към точката на конвергенция, вместо да измества пирамидите им на видимост (нарочно сбъркано: води до вертикален паралакс)",
+    ),
+    (
+        "",
+        "leakage",
+        "Пропускането на анаглифните филтри в картините на прозирането (0 = съвършени филтри); записват се като crosstalk-EYE-leakPERCENT.png",
+    ),
+    (
+        "",
+        "lf_views",
+        "Light field: изгледи по страна на решетката N×N (0 = без light field)",
+    ),
+    (
+        "",
+        "lf_aperture",
+        "Light field: страната на квадратния отвор, който изгледите покриват, в единиците на сцената",
+    ),
+    (
+        "",
+        "lf_downscale",
+        "Light field: изгледите се рендерират толкова пъти по-малки от очите (1: размерът на очите, в който слайдовете показват двойката изгледи)",
+    ),
+    (
+        "",
+        "lf_spp",
+        "Light field: проби на пиксел за всеки изглед (по подразбиране: една шестнадесета от --spp, поне 1; префокусираната картина усреднява всички изгледи, така че има изгледи × толкова)",
+    ),
+    (
+        "",
+        "refocus",
+        "Light field: дълбочини за префокусиране, разделени със запетая (по подразбиране: половината, веднъж и три пъти разстоянието на конвергенция)",
+    ),
+    // `render`.
+    (
+        "",
+        "engine",
+        "Кой двигател изпълнява --integrator path: този от лекцията (scalar) или wavefront двигателят (пътищата на едно парче вървят заедно; същата картина бит по бит, по-бързо)",
+    ),
+    (
+        "",
+        "student",
+        "Рендерира с вашия код от exercises/ (naive: задача 10, path-brdf: 11, direct и path-nee: 12, path: 13, light: 14, bdpt: 15, mlt: 16, photon: 17, vpl: 18) до интегратора на рендерера със същата оценка",
+    ),
+    // `lab`.
+    (
+        "lab",
+        "host",
+        "Адресът, на който да слуша. По подразбиране само 127.0.0.1 (тази машина); всеки друг адрес позволява на всяка машина, която го достига, да ползва лабораторията (предупреждение казва това)",
+    ),
+    ("lab", "port", "Портът (0 избира свободен)"),
+    (
+        "lab",
+        "open",
+        "Отваря страницата в браузъра по подразбиране",
+    ),
+    (
+        "lab",
+        "scenes",
+        "Папка с файлове със сцени (.toml), предлагани до вградените; чете се наново всеки път, когато страницата попита, така че новите файлове се появяват без рестарт",
+    ),
+    // `scenes`.
+    ("scenes", "write", "Записва тази вградена сцена във файл"),
+    ("scenes", "to", "Папката, в която да я запише"),
+    (
+        "scenes",
+        "force",
+        "Заменя файловете със същото име, които се различават от вградената сцена (вашите промени се губят)",
+    ),
+    // `bench`.
+    (
+        "bench",
+        "threads",
+        "Брой нишки за измерване (разделени със запетая; по подразбиране: 1 и всички ядра)",
+    ),
+    (
+        "bench",
+        "spp",
+        "Проби на пиксел при измерването върху Cornell box",
+    ),
+    (
+        "bench",
+        "no_rays",
+        "Пропуска частта за пропускателната способност на лъчите",
+    ),
+    (
+        "bench",
+        "no_biased",
+        "Пропуска частта за отместените интегратори (фотони, фотонна карта, SPPM, VPL)",
+    ),
+    (
+        "bench",
+        "equal_time",
+        "Секунди на алгоритъм при сравнението с равно време (0 го пропуска)",
+    ),
+    (
+        "bench",
+        "mitsuba",
+        "Python с инсталиран Mitsuba 3, за да се отпечата отношението на нашия path tracing към този на Mitsuba в Cornell box (по подразбиране: променливата на средата LESSON11_MITSUBA_PYTHON, иначе `python3`, ако има Mitsuba)",
+    ),
+    // `exercises`, `hint`, `solution`, `references`.
+    (
+        "exercises",
+        "watch",
+        "Следи exercises/src/: проверява задачата отново при всеки запис на файла ѝ и показва резултата и командата за следващата подсказка",
+    ),
+    (
+        "",
+        "number",
+        "Номерът на задачата (1, 2, …), както го показва `lesson11 exercises`",
+    ),
+    ("hint", "all", "Показва всички подсказки наведнъж"),
+    (
+        "hint",
+        "reset",
+        "Забравя колко подсказки са показани (за всички задачи)",
+    ),
+    (
+        "references",
+        "grader_only",
+        "Само еталонните картини на проверката (секунди), без тези на сцените door и caustic (минути)",
+    ),
+    // `slides`.
+    (
+        "slides",
+        "out",
+        "Папката с картините на обиколката; слайдовете отиват в OUT/slides/",
+    ),
+    (
+        "slides",
+        "src",
+        "Папка с по една подпапка с Markdown за всеки език (по подразбиране: ./slides, иначе папката slides/ на проекта)",
+    ),
+    (
+        "slides",
+        "quality",
+        "Качеството на картините, които се рендерират, когато някои липсват: tiny, quick или full",
+    ),
+    ("slides", "quick", "Същото като --quality quick"),
+    (
+        "slides",
+        "tiny",
+        "Същото като --quality tiny: картини от 32 пиксела за секунди, за проверка на слайдовете",
+    ),
+    (
+        "slides",
+        "render",
+        "Рендерира всяка картина наново, дори ако всички съществуват",
+    ),
+    (
+        "slides",
+        "threads",
+        "Работни нишки за рендерирането (по подразбиране: всички ядра)",
+    ),
+    (
+        "slides",
+        "lang",
+        "Езиците за сглобяване, разделени със запетая (по подразбиране: всяка подпапка на --src)",
+    ),
 ];
 
-/// `command`'s options of [`OPTIONS_BG`] with their Bulgarian help.
-fn localize_options(command: clap::Command) -> clap::Command {
-    OPTIONS_BG.iter().fold(command, |c, (id, text)| {
-        if c.get_arguments().any(|a| a.get_id() == id) {
-            c.mut_arg(*id, |a| a.help(*text).long_help(None::<&str>))
+/// The help of the values an option lists, in Bulgarian: `(option, value, text)`.
+const VALUES_BG: &[(&str, &str, &str)] = &[
+    (
+        "quality",
+        "tiny",
+        "Малки картини, малко проби: проверява, че всяка глава работи (секунди)",
+    ),
+    (
+        "quality",
+        "quick",
+        "По подразбиране: всяка картина се разчита, цялата обиколка за около минута",
+    ),
+    (
+        "quality",
+        "full",
+        "Осем пъти пробите на quick, за слайдове и материали",
+    ),
+    (
+        "engine",
+        "scalar",
+        "Path tracing от лекцията: един път от камерата до края му, после следващият",
+    ),
+    (
+        "engine",
+        "wavefront",
+        "Wavefront двигателят: пътищата на едно парче вървят заедно, по един етап наведнъж (същата картина, по-бързо)",
+    ),
+    (
+        "integrator",
+        "direct",
+        "Директно осветление: светлините, видени направо, плюс едно отражение (семплиране на светлините и по BRDF с MIS)",
+    ),
+    (
+        "integrator",
+        "ao",
+        "Ambient occlusion: отворената част от полусферата (не е физически базирано)",
+    ),
+    (
+        "integrator",
+        "path",
+        "Path tracing: по едно продължение на отражение, семплиране на светлините и по BRDF с MIS",
+    ),
+    (
+        "integrator",
+        "path-brdf",
+        "Path tracing само с BRDF семплиране (учебно сравнение: светлините се намират случайно)",
+    ),
+    (
+        "integrator",
+        "path-nee",
+        "Path tracing само със семплиране на светлините, без MIS (учебно сравнение)",
+    ),
+    (
+        "integrator",
+        "naive",
+        "Наивна рекурсия с Monte Carlo: N лъча при всяко пресичане (вижте --branching), до 1 + N + … + N^(D−1) лъча на проба",
+    ),
+    (
+        "integrator",
+        "light",
+        "Light tracing: пътищата тръгват от светлините и всеки връх се свързва с камерата",
+    ),
+    (
+        "integrator",
+        "bdpt",
+        "Bidirectional path tracing: подпътища от камерата и от светлината, всички свързвания, MIS върху всички тях",
+    ),
+    (
+        "integrator",
+        "mlt",
+        "Metropolis light transport: вериги на Марков върху bidirectional пътища; --spp брои мутациите на пиксел (вижте --chains, --bootstrap, --large-step-probability, --mutation-size)",
+    ),
+    (
+        "integrator",
+        "photon",
+        "Photon mapping (отместен): фотонни карти от светлинни пътища, оценки на плътността в пресичанията на лъчите от камерата",
+    ),
+    (
+        "integrator",
+        "sppm",
+        "Stochastic progressive photon mapping (отместен, но състоятелен): --spp преминавания, радиусите се свиват с --alpha",
+    ),
+    (
+        "integrator",
+        "vpl",
+        "Instant radiosity (отместен при ограничаване): VPL (виртуални точкови светлини) от светлинни пътища, събирани с лъчи за сянка",
+    ),
+    (
+        "integrator",
+        "irradiance-cache",
+        "Irradiance caching (отместен): индиректната irradiance (облъченост) в няколко записа, интерполирана (Ward)",
+    ),
+];
+
+/// The Bulgarian help of `command`'s option `id`, if there is one.
+fn option_bg(command: &str, id: &str) -> Option<&'static str> {
+    let find = |c: &str| {
+        OPTIONS_BG
+            .iter()
+            .find(|(cmd, i, _)| *cmd == c && *i == id)
+            .map(|(_, _, text)| *text)
+    };
+    find(command).or_else(|| find(""))
+}
+
+/// `arg` with its Bulgarian help `text`: clap's English "[default: …]" and
+/// "[possible values: …]" said in Bulgarian instead, and each listed
+/// value's help from [`VALUES_BG`] in the long help.
+fn bulgarian_arg(arg: clap::Arg, text: &str) -> clap::Arg {
+    // A flag (`--force`) lists neither values nor a default.
+    if !arg.get_action().takes_values() {
+        return arg.help(text.to_string()).long_help(None::<&str>);
+    }
+    let id = arg.get_id().as_str().to_string();
+    let (mut short, mut long) = (text.to_string(), text.to_string());
+    let values: Vec<clap::builder::PossibleValue> = arg
+        .get_possible_values()
+        .into_iter()
+        .filter(|v| !v.is_hide_set())
+        .collect();
+    if !values.is_empty() && !arg.is_hide_possible_values_set() {
+        let names: Vec<&str> = values.iter().map(|v| v.get_name()).collect();
+        short.push_str(&format!(" [възможни стойности: {}]", names.join(", ")));
+        if values.iter().any(|v| v.get_help().is_some()) {
+            long.push_str("\n\nВъзможни стойности:");
+            for name in &names {
+                let help = VALUES_BG
+                    .iter()
+                    .find(|(i, v, _)| *i == id && v == name)
+                    .map_or("", |(_, _, t)| *t);
+                long.push_str(&format!("\n- {name}: {help}"));
+            }
         } else {
-            c
+            long = short.clone();
         }
+    }
+    let defaults: Vec<String> = arg
+        .get_default_values()
+        .iter()
+        .map(|v| v.to_string_lossy().into_owned())
+        .collect();
+    if !defaults.is_empty() && !arg.is_hide_default_value_set() {
+        let default = format!("[по подразбиране: {}]", defaults.join(", "));
+        short.push_str(&format!(" {default}"));
+        long.push_str(&format!("\n\n{default}"));
+    }
+    arg.help(short)
+        .long_help(long)
+        .hide_default_value(true)
+        .hide_possible_values(true)
+}
+
+/// `command`'s options with their Bulgarian help, where [`OPTIONS_BG`] has it.
+fn localize_options(command: clap::Command) -> clap::Command {
+    let name = command.get_name().to_string();
+    command.mut_args(|arg| match option_bg(&name, arg.get_id().as_str()) {
+        Some(text) => bulgarian_arg(arg, text),
+        None => arg,
     })
 }
 
@@ -187,6 +639,39 @@ const TEMPLATE_BG_LEAF: &str = "\
 
 Опции:
 {options}{after-help}";
+
+/// The same for a command with arguments (`hint N`).
+const TEMPLATE_BG_ARGS: &str = "\
+{before-help}{about-with-newline}
+Употреба: {usage}
+
+Аргументи:
+{positionals}
+
+Опции:
+{options}{after-help}";
+
+/// The layout of `command`'s help in Bulgarian.
+fn template_bg(command: &clap::Command) -> &'static str {
+    if command.has_subcommands() {
+        TEMPLATE_BG
+    } else if command.get_positionals().next().is_some() {
+        TEMPLATE_BG_ARGS
+    } else {
+        TEMPLATE_BG_LEAF
+    }
+}
+
+/// A built command's usage line in Bulgarian: clap's, with its words
+/// (`[OPTIONS]`, `[COMMAND]`) in Bulgarian.
+fn usage_bg(command: &mut clap::Command) -> String {
+    let usage = command.render_usage().to_string();
+    let usage = usage.trim_start_matches("Usage:").trim();
+    usage
+        .replace("[OPTIONS]", "[ОПЦИИ]")
+        .replace("[COMMAND]", "[КОМАНДА]")
+        .replace("<COMMAND>", "<КОМАНДА>")
+}
 
 /// The text of `--lang` in `--help`.
 pub fn lang_help(language: Lang) -> &'static str {
@@ -215,28 +700,37 @@ pub fn localize(command: clap::Command, language: Lang) -> clap::Command {
                 .iter()
                 .find(|(name, _)| *name == sub.get_name())
                 .map(|(_, text)| *text);
-            let template = if sub.has_subcommands() {
-                TEMPLATE_BG
-            } else {
-                TEMPLATE_BG_LEAF
-            };
+            let template = template_bg(&sub);
             let sub = localize_options(sub.help_template(template));
             match about {
                 Some(text) => sub.about(text).long_about(None),
                 None => sub,
             }
-        })
-        ;
-    // clap adds --help and --version when the command is built.
+        });
+    // clap adds --help and --version when the command is built, and the
+    // global --lang to every subcommand.
     command.build();
     let help = ABOUT_BG
         .iter()
         .find(|(n, _)| *n == "help")
         .map_or("", |(_, t)| *t);
+    let usage = usage_bg(&mut command);
     command
+        .override_usage(usage)
         .mut_arg("help", |a| {
             a.help("Показва помощта").long_help(None::<&str>)
         })
         .mut_arg("version", |a| a.help("Показва версията"))
         .mut_subcommand("help", |sub| sub.about(help))
+        .mut_subcommands(|mut sub| {
+            let usage = usage_bg(&mut sub);
+            let sub = sub.override_usage(usage);
+            if sub.get_arguments().any(|a| a.get_id() == "help") {
+                sub.mut_arg("help", |a| {
+                    a.help("Показва помощта").long_help(None::<&str>)
+                })
+            } else {
+                sub
+            }
+        })
 }

@@ -269,10 +269,13 @@ impl Tour {
         let size = (scene.camera.width, scene.camera.height);
         let path = chapter.dir.join(format!("{stem}.svg"));
         raytracer::film::output::write_file(&path, path_figure_svg(record, &png, size, labels))?;
+        let (pixel, sample) = (record.pixel, record.sample);
         crate::console::say!(
-            "  {stem}: pixel {:?}, sample {} recorded",
-            record.pixel,
-            record.sample
+            "{}",
+            lang::pick(
+                format!("  {stem}: pixel {pixel:?}, sample {sample} recorded"),
+                format!("  {stem}: записах проба {sample} на пиксел {pixel:?}"),
+            )
         );
         chapter
             .section

@@ -147,7 +147,10 @@ fn run_alone(matches: &ArgMatches) -> Result<()> {
     let args = StereoArgs::from_arg_matches(matches)?;
     let dir = args.scene.out.join(CHAPTER_DIR);
     let section = render_section(&args, &dir)?;
-    let mut page = Page::new("Lecture 11: stereoscopy");
+    let mut page = Page::new(lang::pick(
+        "Lecture 11: stereoscopy",
+        "Лекция 11: стереоскопия",
+    ));
     page.sections.push(section);
     let index = page.write(&dir, "index.html")?;
     let index = index.display();
@@ -240,48 +243,90 @@ fn save(
     caption: String,
 ) -> Result<Figure> {
     let (png, exr) = write_png_and_exr(image, dir, stem, exposure)?;
-    crate::console::say!("  wrote {} and .exr", png.display());
+    let shown = png.display();
+    crate::console::say!(
+        "{}",
+        lang::pick(
+            format!("  wrote {shown} and .exr"),
+            format!("  записах {shown} и .exr"),
+        )
+    );
     Ok(Figure::image(page_root, &png, &exr, caption))
 }
 
-/// What to look for in each composite.
+/// What to look for in each composite, in the run's language.
 fn caption(mode: Composite) -> String {
-    match mode {
-        Composite::Anaglyph(Anaglyph::RedCyan) => {
-            "Red–cyan anaglyph in colour (red filter on the left eye). Saturated red or cyan objects \
-             reach one eye only and shimmer: try --desaturate 0.5."
-                .into()
+    use raytracer::stereo::Layout;
+    let (en, bg) = match mode {
+        Composite::Anaglyph(Anaglyph::RedCyan) => (
+            "Red–cyan anaglyph in colour (red filter on the left eye). Saturated red or cyan \
+             objects reach one eye only and shimmer: try --desaturate 0.5.",
+            "Червено-циан анаглиф в пълен цвят (червеният филтър е пред лявото око). Наситено \
+             червените или циан обекти стигат само до едното око и трептят: опитайте \
+             --desaturate 0.5.",
+        ),
+        Composite::Anaglyph(Anaglyph::HalfColor) => (
+            "Red–cyan half-colour: the left eye gets the luminance, so red objects no longer \
+             vanish for one eye; the right keeps some colour.",
+            "Червено-циан, полуцветен: лявото око получава яркостта, така че червените обекти \
+             вече не изчезват за едното око; дясното запазва част от цвета.",
+        ),
+        Composite::Anaglyph(Anaglyph::Grey) => (
+            "Red–cyan grey: no colour, but both eyes see the same brightness everywhere \
+             (easiest to fuse).",
+            "Червено-циан, сив: без цвят, но двете очи виждат една и съща яркост навсякъде \
+             (най-лесно се сливат).",
+        ),
+        Composite::Anaglyph(Anaglyph::Dubois) => (
+            "Dubois least-squares red–cyan: the best colour and the least ghosting of the \
+             red–cyan anaglyphs.",
+            "Червено-циан анаглиф на Dubois (метод на най-малките квадрати): най-добрият цвят и \
+             най-малко ghosting сред червено-циан анаглифите.",
+        ),
+        Composite::Anaglyph(a) => {
+            let glasses = match a {
+                Anaglyph::RedBlue => "червено (ляво) – синьо (дясно)",
+                Anaglyph::RedGreen => "червено (ляво) – зелено (дясно)",
+                Anaglyph::AmberBlue => "жълто (ляво) – синьо (дясно)",
+                Anaglyph::GreenMagenta => "зелено (ляво) – магента (дясно)",
+                _ => "червено (ляво) – циан (дясно)",
+            };
+            return lang::pick(
+                format!("Anaglyph for {} glasses.", a.glasses()),
+                format!("Анаглиф за очила {glasses}."),
+            );
         }
-        Composite::Anaglyph(Anaglyph::HalfColor) => {
-            "Red–cyan half-colour: the left eye gets the luminance, so red objects no longer vanish \
-             for one eye; the right keeps some colour."
-                .into()
-        }
-        Composite::Anaglyph(Anaglyph::Grey) => {
-            "Red–cyan grey: no colour, but both eyes see the same brightness everywhere (easiest \
-             to fuse)."
-                .into()
-        }
-        Composite::Anaglyph(Anaglyph::Dubois) => {
-            "Dubois least-squares red–cyan: the best colour and the least ghosting of the red–cyan \
-             anaglyphs."
-                .into()
-        }
-        Composite::Anaglyph(a) => format!("Anaglyph for {} glasses.", a.glasses()),
-        Composite::Layout(raytracer::stereo::Layout::SideBySide) => {
+        Composite::Layout(Layout::SideBySide) => (
             "Side by side for parallel viewing: left image on the left; look through the screen \
-             as at something far away (keep the pictures small)."
-                .into()
-        }
-        Composite::Layout(raytracer::stereo::Layout::CrossEyed) => {
+             as at something far away (keep the pictures small).",
+            "Една до друга за успореден метод: картинката за лявото око е отляво; гледайте през \
+             екрана като към нещо далечно (дръжте картинките малки).",
+        ),
+        Composite::Layout(Layout::CrossEyed) => (
             "Cross-eyed: the right eye's image on the left; cross your eyes until the two middle \
-             pictures merge into a third one in depth."
-                .into()
+             pictures merge into a third one in depth.",
+            "Кръстосан метод: картинката за дясното око е отляво; кръстосайте поглед, докато \
+             двете средни картинки се слеят в трета, обемна.",
+        ),
+        Composite::Layout(Layout::OverUnder) => (
+            "Over–under: left eye on top (for viewers and projectors).",
+            "Една над друга: лявото око е отгоре (за специални зрители и прожектори).",
+        ),
+        Composite::Eye(e) => {
+            return lang::pick(
+                format!("The {} eye's image.", e.name()),
+                format!("Картината на {} око.", eye_bg(e)),
+            );
         }
-        Composite::Layout(raytracer::stereo::Layout::OverUnder) => {
-            "Over–under: left eye on top (for viewers and projectors).".into()
-        }
-        Composite::Eye(e) => format!("The {} eye's image.", e.name()),
+    };
+    lang::pick(en, bg).into()
+}
+
+/// "лявото" or "дясното": the eye in a Bulgarian sentence.
+fn eye_bg(eye: Eye) -> &'static str {
+    match eye {
+        Eye::Left => "лявото",
+        Eye::Right => "дясното",
     }
 }
 
@@ -307,19 +352,33 @@ fn render_section(args: &StereoArgs, page_root: &Path) -> Result<Section> {
     let dir = args.scene.out.join(CHAPTER_DIR);
     create_dir(&dir)?;
     let convergence = rig.convergence_distance(&scene.camera.params);
-    crate::console::say!(
-        "01 · stereo: {} eyes {} apart, zero parallax at {convergence:.3} ({}, {} spp)",
-        if rig.toe_in {
-            "toed-in"
-        } else {
-            "parallel, off-axis"
+    let (eyes, separation, name, spp) = (
+        match (rig.toe_in, lang::current()) {
+            (true, lang::Lang::En) => "toed-in",
+            (false, lang::Lang::En) => "parallel, off-axis",
+            (true, lang::Lang::Bg) => "завъртени навътре (toe-in)",
+            (false, lang::Lang::Bg) => "успоредни, с изместени пирамиди (off-axis)",
         },
         rig.separation,
         integrator.name(),
-        options.spp
+        options.spp,
+    );
+    crate::console::say!(
+        "{}",
+        lang::pick(
+            format!(
+                "01 · stereo: {eyes} eyes {separation} apart, zero parallax at {convergence:.3} ({name}, {spp} spp)"
+            ),
+            format!(
+                "01 · стерео: очи {eyes} на {separation} една от друга, нулев паралакс на {convergence:.3} ({name}, {spp} spp)"
+            ),
+        )
     );
 
-    let mut section = Section::new("01 · Stereoscopy", &section_text(args, convergence));
+    let mut section = Section::new(
+        lang::pick("01 · Stereoscopy", "01 · Стереоскопия"),
+        &section_text(args, convergence),
+    );
 
     // The two eyes, same seed: identical random sequences.
     let mut eye_scene = scene.clone();
@@ -343,7 +402,13 @@ fn render_section(args: &StereoArgs, page_root: &Path) -> Result<Section> {
         section.figures.push(Figure::new(
             page_root,
             &picture,
-            &format!("The {} eye.", eye.name()),
+            &lang::pick(
+                format!("The {} eye.", eye.name()),
+                match eye {
+                    Eye::Left => "Лявото око.".into(),
+                    Eye::Right => "Дясното око.".into(),
+                },
+            ),
         ));
         eyes.push(image);
     }
@@ -353,7 +418,11 @@ fn render_section(args: &StereoArgs, page_root: &Path) -> Result<Section> {
         let image = mode.compose(left, right, args.desaturate);
         let mut text = caption(*mode);
         if matches!(mode, Composite::Anaglyph(_)) && args.desaturate > 0.0 {
-            text.push_str(&format!(" Desaturated by {}.", args.desaturate));
+            let d = args.desaturate;
+            text.push_str(&lang::pick(
+                format!(" Desaturated by {d}."),
+                format!(" Обезцветен с {d}."),
+            ));
         }
         section.figures.push(save(
             &image,
@@ -418,43 +487,64 @@ fn eye_views(
 ) -> Result<()> {
     let glasses = Anaglyph::RedCyan;
     let filter = |eye: Eye| match eye {
-        Eye::Left => "red",
-        Eye::Right => "cyan",
+        Eye::Left => lang::pick("red", "червен"),
+        Eye::Right => lang::pick("cyan", "циан"),
     };
     let anaglyph = glasses.compose(left, right, args.desaturate);
     let perfect = crosstalk::eye_views(&anaglyph, glasses, 0.0);
     let desaturated = crosstalk::eye_views(&glasses.compose(left, right, 0.5), glasses, 0.0);
     let leaky = crosstalk::eye_views(&anaglyph, glasses, args.leakage);
     let at = if args.desaturate > 0.0 {
-        format!(", the anaglyph desaturated by {}", args.desaturate)
+        let d = args.desaturate;
+        lang::pick(
+            format!(", the anaglyph desaturated by {d}"),
+            format!(", анаглифът обезцветен с {d}"),
+        )
     } else {
         String::new()
     };
     let pct = (100.0 * args.leakage).round() as u32;
     for (k, eye) in Eye::BOTH.into_iter().enumerate() {
-        let name = eye.name();
+        let (name, bg) = (eye.name(), eye_bg(eye));
         let red_ball = match eye {
-            Eye::Left => "the near red ball is bright",
-            Eye::Right => {
+            Eye::Left => lang::pick(
+                "the near red ball is bright",
+                "близката червена топка е светла",
+            ),
+            Eye::Right => lang::pick(
                 "the near red ball turns dark, since little of its light is green or blue: the \
-                 two eyes see it differently"
-            }
+                 two eyes see it differently",
+                "близката червена топка потъмнява, защото в светлината ѝ има малко зелено и \
+                 синьо: двете очи я виждат различно",
+            ),
         };
+        let f = filter(eye);
         section.figures.push(save(
             &perfect[k],
             dir,
             page_root,
             &format!("filtered-{name}"),
             args.exposure,
-            format!(
-                "What the {name} eye sees of the red–cyan anaglyph through a perfect {} filter \
-                 (leakage 0{at}), as brightness: {red_ball}.",
-                filter(eye)
+            lang::pick(
+                format!(
+                    "What the {name} eye sees of the red–cyan anaglyph through a perfect {f} \
+                     filter (leakage 0{at}), as brightness: {red_ball}."
+                ),
+                format!(
+                    "Какво вижда {bg} око от червено-циан анаглифа през съвършен {f} филтър \
+                     (пропускане 0{at}), като яркост: {red_ball}."
+                ),
             ),
         )?);
         let back = match eye {
-            Eye::Left => "the red ball a little dimmer",
-            Eye::Right => "the red ball brighter, closer to what the left eye sees",
+            Eye::Left => lang::pick(
+                "the red ball a little dimmer",
+                "червената топка е малко по-тъмна",
+            ),
+            Eye::Right => lang::pick(
+                "the red ball brighter, closer to what the left eye sees",
+                "червената топка е по-светла, по-близо до това, което вижда лявото око",
+            ),
         };
         section.figures.push(save(
             &desaturated[k],
@@ -462,9 +552,15 @@ fn eye_views(
             page_root,
             &format!("filtered-{name}-desat50"),
             args.exposure,
-            format!(
-                "The same for the {name} eye after desaturating both frames by 0.5 before \
-                 mixing: {back}."
+            lang::pick(
+                format!(
+                    "The same for the {name} eye after desaturating both frames by 0.5 before \
+                     mixing: {back}."
+                ),
+                format!(
+                    "Същото за {bg} око след обезцветяване на двата кадъра с 0.5 преди \
+                     смесването: {back}."
+                ),
             ),
         )?);
         section.figures.push(save(
@@ -473,9 +569,17 @@ fn eye_views(
             page_root,
             &format!("crosstalk-{name}-leak{pct}"),
             args.exposure,
-            format!(
-                "What the {name} eye sees through filters leaking {pct} % of the other colours{at}: \
-                 the faint doubled edges are ghosting, the other eye's frame showing through.",
+            lang::pick(
+                format!(
+                    "What the {name} eye sees through filters leaking {pct} % of the other \
+                     colours{at}: the faint doubled edges are ghosting, the other eye's frame \
+                     showing through."
+                ),
+                format!(
+                    "Какво вижда {bg} око през филтри, които пропускат {pct} % от чуждите \
+                     цветове{at}: бледите двойни ръбове са ghosting – кадърът на другото око \
+                     прозира."
+                ),
             ),
         )?);
     }
@@ -532,11 +636,14 @@ fn separation_sweep(
             bail!("interrupted by Ctrl-C while rendering the separation sweep");
         }
         let look = if separation < 0.05 {
-            "almost flat"
+            lang::pick("almost flat", "почти плоско")
         } else if separation < 0.1 {
-            "a person's eyes, in metres"
+            lang::pick("a person's eyes, in metres", "очите на човек, в метри")
         } else {
-            "a giant's eyes: exaggerated depth, the scene looks like a model"
+            lang::pick(
+                "a giant's eyes: exaggerated depth, the scene looks like a model",
+                "очите на великан: преувеличена дълбочина, сцената изглежда като макет",
+            )
         };
         section.figures.push(save(
             &Anaglyph::Dubois.compose(&eyes[0], &eyes[1], args.desaturate),
@@ -544,16 +651,25 @@ fn separation_sweep(
             page_root,
             &format!("separation-{separation:.3}"),
             args.exposure,
-            format!(
-                "stereoSeparation {separation}: {look}. Dubois anaglyph, zero parallax at the \
-                 same distance for every separation ({w}×{h}, {spp} spp per eye)."
+            lang::pick(
+                format!(
+                    "stereoSeparation {separation}: {look}. Dubois anaglyph, zero parallax at the \
+                     same distance for every separation ({w}×{h}, {spp} spp per eye)."
+                ),
+                format!(
+                    "stereoSeparation {separation}: {look}. Анаглиф на Dubois, нулев паралакс на \
+                     едно и също разстояние при всяко разделение ({w}×{h}, {spp} spp на око)."
+                ),
             ),
         )?);
     }
+    let (pairs, seconds) = (SWEEP.len(), start.elapsed().as_secs_f64());
     crate::console::say!(
-        "  separation sweep: {} pairs of {w}×{h} at {spp} spp in {:.1} s",
-        SWEEP.len(),
-        start.elapsed().as_secs_f64()
+        "{}",
+        lang::pick(
+            format!("  separation sweep: {pairs} pairs of {w}×{h} at {spp} spp in {seconds:.1} s"),
+            format!("  разделенията: {pairs} двойки по {w}×{h} с {spp} spp за {seconds:.1} s"),
+        )
     );
     Ok(())
 }
@@ -586,9 +702,13 @@ fn light_field(
     if raytracer::render::interrupted() {
         bail!("interrupted while rendering the light field; its pictures were not written");
     }
+    let seconds = start.elapsed().as_secs_f64();
     crate::console::say!(
-        "  light field: {n}×{n} views of {w}×{h} at {spp} spp in {:.1} s",
-        start.elapsed().as_secs_f64()
+        "{}",
+        lang::pick(
+            format!("  light field: {n}×{n} views of {w}×{h} at {spp} spp in {seconds:.1} s"),
+            format!("  light field: {n}×{n} изгледа по {w}×{h} с {spp} spp за {seconds:.1} s"),
+        )
     );
     section.figures.push(save(
         &lf.contact_sheet(2),
@@ -596,11 +716,21 @@ fn light_field(
         page_root,
         "lightfield-contact",
         args.exposure,
-        format!(
-            "The light field: {n}×{n} pinhole views across a {} × {} aperture, as seen from the \
-             front (top row = highest eye). Near objects shift most between the views.",
-            args.lf_aperture, args.lf_aperture
-        ),
+        {
+            let a = args.lf_aperture;
+            lang::pick(
+                format!(
+                    "The light field: {n}×{n} pinhole views across a {a} × {a} aperture, as seen \
+                     from the front (top row = highest eye). Near objects shift most between the \
+                     views."
+                ),
+                format!(
+                    "Light field: {n}×{n} pinhole изгледа през отвор {a} × {a}, гледани отпред \
+                     (горният ред = най-високото око). Близките обекти се изместват най-много \
+                     между изгледите."
+                ),
+            )
+        },
     )?);
     let mut depths = if args.refocus.is_empty() {
         vec![0.5 * convergence, convergence, 3.0 * convergence]
@@ -622,9 +752,16 @@ fn light_field(
             page_root,
             &format!("refocus-{depth:.digits$}"),
             args.exposure,
-            format!(
-                "Refocused at {depth:.digits$} by shift-and-add: what lies at that depth is sharp, \
-                 the rest is blurred as by a lens as wide as the aperture."
+            lang::pick(
+                format!(
+                    "Refocused at {depth:.digits$} by shift-and-add: what lies at that depth is \
+                     sharp, the rest is blurred as by a lens as wide as the aperture."
+                ),
+                format!(
+                    "Префокусирано на {depth:.digits$} чрез изместване и усредняване на изгледите: \
+                     каквото е на тази дълбочина, е рязко, останалото е размито като зад леща, \
+                     широка колкото отвора."
+                ),
             ),
         )?);
     }
@@ -637,49 +774,100 @@ fn light_field(
             page_root,
             "lightfield-pair-dubois",
             args.exposure,
-            format!(
-                "A stereo pair taken out of the light field (the outermost views of the middle \
-                 row, {} apart), converged at {convergence:.2}: Dubois red–cyan anaglyph.",
-                args.lf_aperture
-            ),
+            {
+                let a = args.lf_aperture;
+                lang::pick(
+                    format!(
+                        "A stereo pair taken out of the light field (the outermost views of the \
+                         middle row, {a} apart), converged at {convergence:.2}: Dubois red–cyan \
+                         anaglyph."
+                    ),
+                    format!(
+                        "Стерео двойка, извадена от light field-а (крайните изгледи на средния \
+                         ред, на {a} един от друг), с конвергенция на {convergence:.2}: \
+                         червено-циан анаглиф на Dubois."
+                    ),
+                )
+            },
         )?);
     }
     Ok(())
 }
 
-/// The explanation at the top of the section.
+/// The explanation at the top of the section, in the run's language.
 fn section_text(args: &StereoArgs, convergence: f32) -> String {
-    let method = if args.toe_in {
-        "These eyes are toed in: each turns towards the convergence point. Their image planes are \
-         no longer parallel, so objects near the corners sit at different heights in the two \
-         images (vertical parallax): compare the left and right images near the corners, and \
-         notice the strain when fusing them. Run without --toe-in for the correct rig."
-    } else {
-        "The eyes look in parallel and each image window is shifted sideways (an off-axis \
-         frustum), so that the two frusta meet at the convergence distance: whatever lies there \
-         appears on the screen plane with zero parallax, nearer things come out of the screen and \
-         farther ones go into it, and nothing has vertical parallax. Run with --toe-in to see \
-         the flawed alternative."
+    let method = match (args.toe_in, lang::current()) {
+        (true, lang::Lang::En) => {
+            "These eyes are toed in: each turns towards the convergence point. Their image planes \
+             are no longer parallel, so objects near the corners sit at different heights in the \
+             two images (vertical parallax): compare the left and right images near the corners, \
+             and notice the strain when fusing them. Run without --toe-in for the correct rig."
+        }
+        (false, lang::Lang::En) => {
+            "The eyes look in parallel and each image window is shifted sideways (an off-axis \
+             frustum), so that the two frusta meet at the convergence distance: whatever lies \
+             there appears on the screen plane with zero parallax, nearer things come out of the \
+             screen and farther ones go into it, and nothing has vertical parallax. Run with \
+             --toe-in to see the flawed alternative."
+        }
+        (true, lang::Lang::Bg) => {
+            "Тези очи са завъртени навътре (toe-in): всяко се обръща към точката на конвергенция. \
+             Равнините на картините им вече не са успоредни, затова обектите близо до ъглите са \
+             на различна височина в двете картини (вертикален паралакс): сравнете лявата и \
+             дясната картина край ъглите и усетете напрежението, докато ги сливате. Пуснете без \
+             --toe-in за правилната постановка."
+        }
+        (false, lang::Lang::Bg) => {
+            "Очите гледат успоредно, а прозорецът на всяка картина е изместен встрани (изместена, \
+             off-axis пирамида на видимост), така че двете пирамиди се срещат на разстоянието на \
+             конвергенция: каквото лежи там, се появява в равнината на екрана с нулев паралакс, \
+             по-близкото излиза пред екрана, по-далечното влиза зад него, а вертикален паралакс \
+             няма. Пуснете с --toe-in, за да видите сбъркания вариант."
+        }
     };
-    format!(
-        "Two eyes offset along the camera's rightDir by ±stereoSeparation/2 (separation {sep}; \
-         some of the course's C++ renderers offset by ±separation instead, which doubles the \
-         effect). {method} Zero parallax at {convergence:.2}. A larger separation makes the scene \
-         look smaller and deeper, too large looks wrong, too small looks flat: tune it for each \
-         scene. Both eyes use the same random numbers, so their noise matches and does not \
-         shimmer. The anaglyphs are mixed in linear RGB, before sRGB encoding, because filters \
-         and screens act on light, which adds linearly. Look at the near red ball: it has little \
-         green or blue, so through the cyan filter the right eye sees it dark and the left eye \
-         bright (the filtered views show what each eye gets, as brightness): the eyes see \
-         different pictures and struggle to fuse them. \
-         Desaturating both frames a little before mixing (here by 0.5) brings it back at the cost \
-         of colour; half-colour and grey anaglyphs do the same, and Dubois' matrices keep the \
-         most colour. Filters that leak let part of the other frame through: the doubled edges of \
-         ghosting. The separation sweep shows stereoSeparation 0.02, 0.065 and 0.3 with the same \
-         convergence distance: almost flat, a person's eyes, a giant's. The light field is a grid \
-         of pinhole views: averaging them shifted for one depth refocuses the picture after \
-         rendering, and any two views of a row form a stereo pair.",
-        sep = args.separation
+    let sep = args.separation;
+    lang::pick(
+        format!(
+            "Two eyes offset along the camera's rightDir by ±stereoSeparation/2 (separation {sep}; \
+             some of the course's C++ renderers offset by ±separation instead, which doubles the \
+             effect). {method} Zero parallax at {convergence:.2}. A larger separation makes the \
+             scene look smaller and deeper, too large looks wrong, too small looks flat: tune it \
+             for each scene. Both eyes use the same random numbers, so their noise matches and \
+             does not shimmer. The anaglyphs are mixed in linear RGB, before sRGB encoding, \
+             because filters and screens act on light, which adds linearly. Look at the near red \
+             ball: it has little green or blue, so through the cyan filter the right eye sees it \
+             dark and the left eye bright (the filtered views show what each eye gets, as \
+             brightness): the eyes see different pictures and struggle to fuse them. Desaturating \
+             both frames a little before mixing (here by 0.5) brings it back at the cost of \
+             colour; half-colour and grey anaglyphs do the same, and Dubois' matrices keep the \
+             most colour. Filters that leak let part of the other frame through: the doubled \
+             edges of ghosting. The separation sweep shows stereoSeparation 0.02, 0.065 and 0.3 \
+             with the same convergence distance: almost flat, a person's eyes, a giant's. The \
+             light field is a grid of pinhole views: averaging them shifted for one depth \
+             refocuses the picture after rendering, and any two views of a row form a stereo \
+             pair."
+        ),
+        format!(
+            "Две очи, изместени по посоката rightDir на камерата с ±stereoSeparation/2 \
+             (разделение {sep}; някои от C++ рендерерите на курса изместват всяко око с цялото \
+             ±stereoSeparation, което удвоява ефекта). {method} Нулев паралакс на {convergence:.2}. По-голямото разделение \
+             прави сцената да изглежда по-малка и по-дълбока; прекалено голямото изглежда \
+             сбъркано, прекалено малкото – плоско: настройва се за всяка сцена. Двете очи ползват \
+             едни и същи случайни числа, затова шумът им съвпада и не трепти. Анаглифите се \
+             смесват в линейното RGB пространство, преди sRGB кодирането, защото филтрите и \
+             екраните действат върху светлината, а светлината се събира линейно. Вижте близката \
+             червена топка: в нея има малко зелено и синьо, затова през циан филтъра дясното око \
+             я вижда тъмна, а лявото – светла (филтрираните изгледи показват какво получава всяко \
+             око, като яркост): очите виждат различни картини и трудно ги сливат. Малко \
+             обезцветяване на двата кадъра преди смесването (тук с 0.5) я връща, с цената на \
+             цветовете; полуцветните и сивите анаглифи правят същото, а матриците на Dubois пазят \
+             най-много цвят. Филтри, които пропускат, оставят част от другия кадър да прозира: \
+             двойните ръбове на ghosting. Редицата от разделения показва stereoSeparation 0.02, \
+             0.065 и 0.3 при едно и също разстояние на конвергенция: почти плоско, очите на \
+             човек, очите на великан. Light field-ът е решетка от pinhole изгледи: усреднени с \
+             изместване за една дълбочина, те префокусират картината след рендерирането, а всеки \
+             два изгледа от един ред са стерео двойка."
+        ),
     )
 }
 

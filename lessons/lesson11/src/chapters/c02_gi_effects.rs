@@ -38,7 +38,11 @@ const ALPHA: f64 = 1e-4;
 fn render(tour: &Tour) -> Result<Section> {
     let mut s = tour.chapter(
         "02-gi-effects",
-        "2 · Global illumination effects",
+        lang::pick(
+            "2 · Global illumination effects",
+            "2 · Ефекти на глобалното осветление",
+        ),
+        lang::pick(
         "Global illumination = direct illumination + indirect illumination. The same Cornell box \
          three ways. Direct light alone (max depth 2: light from the lamp after one reflection) \
          leaves the ceiling black and the shadows empty; their edges are already soft, because the \
@@ -52,6 +56,21 @@ fn render(tour: &Tour) -> Result<Section> {
          tracer at Mitsuba 3's settings beside Mitsuba's own image of the same box, and between \
          them the z of every 16 × 16 tile, the difference of the means divided by its standard \
          error.",
+        "Глобално осветление = директно осветление + индиректно осветление. Една и съща Cornell \
+         box по три начина. Само директната светлина (максимална дълбочина 2: светлината на \
+         лампата след едно отражение) оставя тавана черен, а сенките – празни; ръбовете им вече \
+         са меки, защото лампата е площна и полусенките идват от размера ѝ. Ambient occlusion \
+         затъмнява ъглите и местата на допир, но не знае нищо за това къде е светлината. \
+         Пълното глобално осветление (path tracing) добавя индиректната светлина: тя осветява \
+         тавана и запълва сенките (без да омекотява ръбовете им), а светлината, отразена от \
+         цветна стена, пренася цвета ѝ върху съседните повърхности (преливане на цветовете, \
+         color bleeding). Глобалното осветление минус директното е само индиректната светлина, \
+         където червеният и зеленият оттенък върху белите кутии се виждат ясно. Накрая – \
+         доказателството, че рендерерът смята правилната картина: нашият path tracing с \
+         настройките на Mitsuba 3 до собствената картина на Mitsuba на същата кутия, а между \
+         тях z за всяко парче 16 × 16 – разликата на средните, разделена на стандартната ѝ \
+         грешка.",
+        ),
     )?;
     let (scene, options) = tour.scene("cornell", 64)?;
     let direct = tour.picture(
@@ -60,8 +79,12 @@ fn render(tour: &Tour) -> Result<Section> {
         &Direct,
         &options,
         "cornell-direct",
-        "Direct light only (max depth 2): no light on the ceiling or in the shadows, whose soft \
-         edges come from the size of the lamp.",
+        lang::pick(
+            "Direct light only (max depth 2): no light on the ceiling or in the shadows, whose soft \
+             edges come from the size of the lamp.",
+            "Само директна светлина (максимална дълбочина 2): няма светлина по тавана и в сенките, \
+             чиито меки ръбове идват от размера на лампата.",
+        ),
     )?;
     let ao = AmbientOcclusion { distance: 0.5 };
     tour.picture(
@@ -70,7 +93,10 @@ fn render(tour: &Tour) -> Result<Section> {
         &ao,
         &options,
         "cornell-ao",
-        "Ambient occlusion (rays of 0.5 m): the open fraction of the hemisphere, not light.",
+        lang::pick(
+            "Ambient occlusion (rays of 0.5 m): the open fraction of the hemisphere, not light.",
+            "Ambient occlusion (лъчи с дължина 0.5 m): отворената част от полусферата, не светлина.",
+        ),
     )?;
     let pt = PathTracer {
         max_depth: Some(MITSUBA_MAX_DEPTH),
@@ -83,8 +109,12 @@ fn render(tour: &Tour) -> Result<Section> {
         &pt,
         &options,
         "cornell-path",
-        "Global illumination: path tracing to max depth 65 (Mitsuba's), roulette from depth 5: a \
-         lit ceiling, filled shadows, colour bleeding.",
+        lang::pick(
+            "Global illumination: path tracing to max depth 65 (Mitsuba's), roulette from depth 5: \
+             a lit ceiling, filled shadows, colour bleeding.",
+            "Глобално осветление: path tracing до максимална дълбочина 65 (тази на Mitsuba), руска \
+             рулетка от дълбочина 5: осветен таван, запълнени сенки, преливане на цветовете.",
+        ),
     )?;
     let (gi, direct_image) = (read(&path.exr)?, read(&direct.exr)?);
     let indirect = Image {
@@ -107,9 +137,14 @@ fn render(tour: &Tour) -> Result<Section> {
     s.section.figures.push(Figure::new(
         &tour.out,
         &picture,
-        "The indirect light alone: global illumination minus direct light (both pictures above, \
-         their noise added). Red on the left faces of the boxes, green on the right, light on the \
-         ceiling and in the shadows.",
+        lang::pick(
+            "The indirect light alone: global illumination minus direct light (both pictures \
+             above, their noise added). Red on the left faces of the boxes, green on the right, \
+             light on the ceiling and in the shadows.",
+            "Само индиректната светлина: глобалното осветление минус директното (двете картини \
+             отгоре, шумът им се събира). Червено по левите стени на кутиите, зелено по десните, \
+             светлина по тавана и в сенките.",
+        ),
     ));
     if tour.overrides.scene.is_none() {
         against_mitsuba(tour, &mut s, &gi, &path)?;
@@ -154,8 +189,12 @@ fn against_mitsuba(tour: &Tour, s: &mut ChapterOutput, ours: &Image, path: &Pict
     s.section.figures.push(Figure::new(
         &tour.out,
         &ours_picture,
-        "Ours: path tracing at Mitsuba's settings (max depth 65, roulette from depth 5, box \
-         filter), the picture above.",
+        lang::pick(
+            "Ours: path tracing at Mitsuba's settings (max depth 65, roulette from depth 5, box \
+             filter), the picture above.",
+            "Нашата: path tracing с настройките на Mitsuba (максимална дълбочина 65, руска рулетка \
+             от дълбочина 5, box филтър) – картината отгоре.",
+        ),
     ));
     let mitsuba_picture = write_image(
         &s.dir,
@@ -165,21 +204,29 @@ fn against_mitsuba(tour: &Tour, s: &mut ChapterOutput, ours: &Image, path: &Pict
         0.0,
         None,
     )?;
-    let size = if (reference.mean.width, reference.mean.height) == (w, h) {
+    let (mw, mh) = (reference.mean.width, reference.mean.height);
+    let size = if (mw, mh) == (w, h) {
         String::new()
     } else {
-        format!(
-            " at {}×{}, averaged down to {w}×{h}",
-            reference.mean.width, reference.mean.height
+        lang::pick(
+            format!(" at {mw}×{mh}, averaged down to {w}×{h}"),
+            format!(" с размер {mw}×{mh}, усреднена до {w}×{h}"),
         )
     };
+    let source = &reference.source;
     s.section.figures.push(Figure::new(
         &tour.out,
         &mitsuba_picture,
-        &format!(
-            "Mitsuba 3's path tracer on its own mitsuba.cornell_box(): {}{size}, the same depth, \
-             roulette and filter, tone-mapped like ours.",
-            reference.source
+        &lang::pick(
+            format!(
+                "Mitsuba 3's path tracer on its own mitsuba.cornell_box(): {source}{size}, the \
+                 same depth, roulette and filter, tone-mapped like ours."
+            ),
+            format!(
+                "Path tracing на Mitsuba 3 върху собствената ѝ mitsuba.cornell_box(): \
+                 {source}{size}, същата дълбочина, рулетка и филтър, превърната в PNG по същия \
+                 начин като нашата."
+            ),
         ),
     ));
     let z = z_test(ours, &ours_variance, &mitsuba.mean, &mitsuba.variance, TILE);
@@ -189,27 +236,56 @@ fn against_mitsuba(tour: &Tour, s: &mut ChapterOutput, ours: &Image, path: &Pict
     let map = zmap_image(&z, w, h, scale, threshold);
     let (png, exr) = write_png_and_exr(&map, &s.dir, "cornell-zmap", 0.0)?;
     let verdict = if z.max_abs_z < threshold {
-        "below the threshold: every difference is what noise explains"
+        lang::pick(
+            "below the threshold: every difference is what noise explains",
+            "под прага: всяка разлика се обяснява с шума",
+        )
     } else {
-        "above the threshold: a bias, or too few samples for the test's normal approximation"
+        lang::pick(
+            "above the threshold: a bias, or too few samples for the test's normal approximation",
+            "над прага: отместване или твърде малко проби за нормалното приближение на теста",
+        )
     };
+    let (largest, tile) = (z.max_abs_z, z.worst_tile);
     crate::console::say!(
-        "  ours against Mitsuba: largest |z| {:.2} in tile {} of {} z-scores, threshold {threshold:.2}",
-        z.max_abs_z, z.worst_tile, tests
+        "{}",
+        lang::pick(
+            format!(
+                "  ours against Mitsuba: largest |z| {largest:.2} in tile {tile} of {tests} z-scores, threshold {threshold:.2}"
+            ),
+            format!(
+                "  нашата срещу Mitsuba: най-голямото |z| {largest:.2} в парчето {tile} от {tests} стойности на z, праг {threshold:.2}"
+            ),
+        )
     );
     s.section.figures.push(Figure::image(
         &tour.out,
         &png,
         &exr,
-        format!(
-            "z = (m − m_ref)/√(v + v_ref) of every {TILE} × {TILE} tile between ours and Mitsuba's \
-             (per tile the channel with the largest |z|; m: the tile's mean, v: the variance of that \
-             mean, from both renders' variance images). Colour scale, the bar below: blue z = −{scale}, \
-             white 0, red +{scale}, a tick at every whole z and long ticks at ±{threshold:.2}, the \
-             threshold that {tests} z-scores of unbiased renders all stay within with probability \
-             1 − 10⁻⁴. Largest |z| = {:.2} (tile {}, {}): {verdict}.",
-            z.max_abs_z, z.worst_tile.x, z.worst_tile.y
-        ),
+        {
+            let (x, y) = (z.worst_tile.x, z.worst_tile.y);
+            lang::pick(
+                format!(
+                    "z = (m − m_ref)/√(v + v_ref) of every {TILE} × {TILE} tile between ours and \
+                     Mitsuba's (per tile the channel with the largest |z|; m: the tile's mean, v: \
+                     the variance of that mean, from both renders' variance images). Colour \
+                     scale, the bar below: blue z = −{scale}, white 0, red +{scale}, a tick at \
+                     every whole z and long ticks at ±{threshold:.2}, the threshold that {tests} \
+                     z-scores of unbiased renders all stay within with probability 1 − 10⁻⁴. \
+                     Largest |z| = {largest:.2} (tile {x}, {y}): {verdict}."
+                ),
+                format!(
+                    "z = (m − m_ref)/√(v + v_ref) за всяко парче {TILE} × {TILE} между нашата \
+                     картина и тази на Mitsuba (за всяко парче – каналът с най-голямо |z|; m: \
+                     средното на парчето, v: дисперсията на това средно, от картините на \
+                     дисперсията на двата рендера). Цветова скала, лентата отдолу: синьо z = \
+                     −{scale}, бяло 0, червено +{scale}, чертичка при всяко цяло z и дълги \
+                     чертички при ±{threshold:.2} – прагът, в който {tests} стойности на z от \
+                     неотместени рендери остават всички с вероятност 1 − 10⁻⁴. Най-голямото |z| = \
+                     {largest:.2} (парче {x}, {y}): {verdict}."
+                ),
+            )
+        },
     ));
     Ok(())
 }

@@ -4,6 +4,7 @@
 //! and a gallery of the lecture's BRDFs, path traced.
 
 use anyhow::Result;
+use lang::Lang;
 use raytracer::brdf::{Brdf, Lambert, Phong, Texture, TransportMode};
 use raytracer::integrator::PathTracer;
 use raytracer::math::{Color, Vec2, Vec3A};
@@ -42,7 +43,8 @@ fn render(tour: &Tour) -> Result<Section> {
     }
     let mut s = tour.chapter(
         "03-brdf",
-        "3 · BRDFs",
+        lang::pick("3 · BRDFs", "3 · BRDF-и"),
+        lang::pick(
         "A BRDF f_r(x, ω_i, ω_o) says how much of the light arriving at x from direction ω_i is \
          reflected towards ω_o. Both directions point away from x: ω_o towards the viewer, ω_i \
          towards where the light comes from (the lecture's ω_i points the other way, into the \
@@ -60,6 +62,24 @@ fn render(tour: &Tour) -> Result<Section> {
          standard error beside it and judges it against 1 with that error. The render shows \
          Lambert, normalized Phong with n = 1, 10, 100 and 1000, a perfect mirror and glass, path \
          traced: as n grows the highlight narrows and brightens.",
+        "BRDF-ът f_r(x, ω_i, ω_o) казва каква част от светлината, дошла в x от посока ω_i, се \
+         отразява към ω_o. И двете посоки сочат навън от x: ω_o – към наблюдателя, ω_i – натам, \
+         откъдето идва светлината (ω_i в лекцията сочи обратно, към повърхността, оттам и \
+         множителят ѝ (−ω_i·n) = cos θ_i); първата фигура ги показва върху полусферата над x. \
+         Лекцията описва f_r като „вероятността“ светлина от ω_i да се отрази към ω_o: добра \
+         интуиция, но точно казано това е плътност по посоките, в sr⁻¹ – отразената radiance \
+         на единица светлина, дошла от малкия конус dω_i – и може да надхвърля 1 (Phong с n = \
+         100 стига 11.09 в таблицата на симетричността по-долу и (n+2)/2π ≈ 16.2 във върха си). \
+         Не бива да надхвърля 1 интегралът ѝ, албедото по посоки ∫ f_r cos θ dω: това е \
+         запазването на енергията. Графиките показват лобове в равнината на падане, албедото \
+         по посоки на нормирания и ненормирания Phong, и симетричността. Нормировката S(n) = \
+         (n+2)/2π прави албедото точно 1 само при перпендикулярно падане: под полегати ъгли \
+         част от лоба попада под повърхността и албедото пада под 1. Таблицата на албедото е \
+         Monte Carlo оценка, затова до всяка стойност стои стандартната ѝ грешка и с нея \
+         стойността се сравнява с 1. Рендерът показва Lambert, нормиран Phong с n = 1, 10, 100 \
+         и 1000, съвършено огледало и стъкло, с path tracing: с растящо n отблясъкът се \
+         стеснява и става по-ярък.",
+        ),
     )?;
     hemisphere(&mut s, tour)?;
     plots_and_tables(&mut s, tour)?;
@@ -71,14 +91,19 @@ fn render(tour: &Tour) -> Result<Section> {
         &pt,
         &options,
         "brdf-gallery",
-        "The BRDF gallery, path traced: Lambert, normalized Phong with n = 1, 10, 100, 1000, a \
-         mirror and glass.",
+        lang::pick(
+            "The BRDF gallery, path traced: Lambert, normalized Phong with n = 1, 10, 100, 1000, \
+             a mirror and glass.",
+            "Галерията от BRDF-и, path tracing: Lambert, нормиран Phong с n = 1, 10, 100, 1000, \
+             огледало и стъкло.",
+        ),
     )?;
     Ok(s.section)
 }
 
 /// The lecture's figure of the hemisphere at x, one SVG per language of the
-/// slides (`hemisphere-en.svg`, `hemisphere-bg.svg`); the page shows the English one.
+/// slides (`hemisphere-en.svg`, `hemisphere-bg.svg`); the page shows the one
+/// of its language.
 fn hemisphere(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
     let h = Hemisphere::default();
     for lang in LANGS {
@@ -88,16 +113,25 @@ fn hemisphere(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
             hemisphere_svg(&h, &words),
         )?;
     }
+    let (i, o) = (h.theta_i_deg, h.theta_o_deg);
     c.section.figures.push(Figure::plot(
         &tour.out,
-        &c.dir.join("hemisphere-en.svg"),
-        &format!(
-            "The hemisphere Ω above a point x, drawn from the directions themselves: both unit \
-             vectors leave x, ω_i towards the light ({}° from the normal n) and ω_o towards the \
-             viewer ({}°); θ_i is the angle between ω_i and n, cos θ_i = ω_i·n; dω_i is a small \
-             cone of directions around ω_i. Dashed: the way the light travels, −ω_i, the \
-             lecture's ω_i. With Bulgarian labels: hemisphere-bg.svg.",
-            h.theta_i_deg, h.theta_o_deg
+        &c.dir.join(format!("hemisphere-{}.svg", lang::current())),
+        &lang::pick(
+            format!(
+                "The hemisphere Ω above a point x, drawn from the directions themselves: both \
+                 unit vectors leave x, ω_i towards the light ({i}° from the normal n) and ω_o \
+                 towards the viewer ({o}°); θ_i is the angle between ω_i and n, cos θ_i = ω_i·n; \
+                 dω_i is a small cone of directions around ω_i. Dashed: the way the light \
+                 travels, −ω_i, the lecture's ω_i. With Bulgarian labels: hemisphere-bg.svg."
+            ),
+            format!(
+                "Полусферата Ω над точка x, начертана по самите посоки: и двата единични вектора \
+                 излизат от x, ω_i – към светлината ({i}° от нормалата n), ω_o – към \
+                 наблюдателя ({o}°); θ_i е ъгълът между ω_i и n, cos θ_i = ω_i·n; dω_i е малък \
+                 конус от посоки около ω_i. С пунктир: посоката, в която пътува светлината, \
+                 −ω_i – ω_i в лекцията. С английски надписи: hemisphere-en.svg."
+            ),
         ),
     ));
     Ok(())
@@ -145,26 +179,47 @@ fn directional_albedo(brdf: &Brdf, wo: Vec3A, samples: u32) -> (f64, f64) {
 /// creating energy: a one-sided 4σ test, false alarm about 3·10⁻⁵ per row.
 const SIGMAS: f64 = 4.0;
 
-/// What an estimated albedo `a ± se` says about energy conservation.
-fn verdict(a: f64, se: f64) -> String {
+/// What an estimated albedo `a ± se` says about energy conservation, in `l`.
+fn verdict(l: Lang, a: f64, se: f64) -> String {
     if se == 0.0 {
         return if (a - 1.0).abs() < 1e-6 {
-            "exactly 1 in every sample (zero variance): conserves energy, none lost".into()
+            l.pick(
+                "exactly 1 in every sample (zero variance): conserves energy, none lost",
+                "точно 1 при всяка проба (нулева дисперсия): запазва енергията, без загуба",
+            )
+            .into()
         } else if a < 1.0 {
-            format!("{a:.4} in every sample: conserves energy")
+            l.pick(
+                format!("{a:.4} in every sample: conserves energy"),
+                format!("{a:.4} при всяка проба: запазва енергията"),
+            )
         } else {
-            format!("{a:.4} in every sample: creates energy")
+            l.pick(
+                format!("{a:.4} in every sample: creates energy"),
+                format!("{a:.4} при всяка проба: създава енергия"),
+            )
         };
     }
     let z = (a - 1.0) / se;
+    let lost = 100.0 * (1.0 - a);
     if z > SIGMAS {
-        format!("above 1 by {z:.0} standard errors: creates energy")
+        l.pick(
+            format!("above 1 by {z:.0} standard errors: creates energy"),
+            format!("над 1 с {z:.0} стандартни грешки: създава енергия"),
+        )
     } else if z >= -SIGMAS {
-        format!("1 within its noise (z = {z:+.1}): conserves energy, none lost")
+        l.pick(
+            format!("1 within its noise (z = {z:+.1}): conserves energy, none lost"),
+            format!("1 в рамките на шума си (z = {z:+.1}): запазва енергията, без загуба"),
+        )
     } else {
-        format!(
-            "below 1 by more than {SIGMAS} standard errors: conserves energy, loses {:.0} %",
-            100.0 * (1.0 - a)
+        l.pick(
+            format!(
+                "below 1 by more than {SIGMAS} standard errors: conserves energy, loses {lost:.0} %"
+            ),
+            format!(
+                "под 1 с повече от {SIGMAS} стандартни грешки: запазва енергията, губи {lost:.0} %"
+            ),
         )
     }
 }
@@ -268,14 +323,35 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
         }
         .write(&c.dir.join(format!("lobe-heights-{lang}.svg")))?;
     }
-    c.section.figures.push(Figure::plot(&tour.out, &c.dir.join("lobes-en.svg"), "Lobes in the plane of incidence: Phong narrows around the mirror direction as n grows; Lambert is a half circle. Each is scaled to its own peak (the shapes); the next plot shows their true heights."));
+    let here = lang::current();
     c.section.figures.push(Figure::plot(
         &tour.out,
-        &c.dir.join("lobe-heights-en.svg"),
-        &format!(
-            "The same lobes at their true heights, f_r on a log axis (values below {LOBE_FLOOR} \
-             left out): a narrower normalized lobe is taller, so that its albedo stays at most 1 — \
-             Lambert 1/π ≈ 0.318 everywhere, Phong n = 100 about 16 at the mirror direction."
+        &c.dir.join(format!("lobes-{here}.svg")),
+        lang::pick(
+            "Lobes in the plane of incidence: Phong narrows around the mirror direction as n \
+             grows; Lambert is a half circle. Each is scaled to its own peak (the shapes); the \
+             next plot shows their true heights.",
+            "Лобове в равнината на падане: с растящо n лобът на Phong се стеснява около \
+             огледалната посока; лобът на Lambert е полуокръжност. Всеки е мащабиран спрямо \
+             върха си (формите); следващата графика показва истинските им височини.",
+        ),
+    ));
+    c.section.figures.push(Figure::plot(
+        &tour.out,
+        &c.dir.join(format!("lobe-heights-{here}.svg")),
+        &lang::pick(
+            format!(
+                "The same lobes at their true heights, f_r on a log axis (values below \
+                 {LOBE_FLOOR} left out): a narrower normalized lobe is taller, so that its albedo \
+                 stays at most 1 — Lambert 1/π ≈ 0.318 everywhere, Phong n = 100 about 16 at the \
+                 mirror direction."
+            ),
+            format!(
+                "Същите лобове в истинските им височини, f_r по логаритмична ос (стойностите под \
+                 {LOBE_FLOOR} са изпуснати): по-тесният нормиран лоб е по-висок, за да остане \
+                 албедото му най-много 1 – Lambert 1/π ≈ 0.318 навсякъде, Phong с n = 100 около \
+                 16 в огледалната посока."
+            ),
         ),
     ));
 
@@ -288,31 +364,40 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
         y_scale: Scale::Linear,
         series: Vec::new(),
     };
-    let mut table = Table::new(
-        &format!(
-            "Directional albedo at normal incidence, estimated with {samples} BRDF samples each: \
-             ≤ 1 conserves energy, judged with the standard error (above 1 by more than \
-             {SIGMAS} standard errors creates energy)"
+    let mut table = Table::in_both(
+        &lang::pick(
+            format!(
+                "Directional albedo at normal incidence, estimated with {samples} BRDF samples \
+                 each: ≤ 1 conserves energy, judged with the standard error (above 1 by more than \
+                 {SIGMAS} standard errors creates energy)"
+            ),
+            format!(
+                "Албедо по посоки при перпендикулярно падане, оценено с по {samples} проби по \
+                 BRDF-а: ≤ 1 запазва енергията, преценено със стандартната грешка (над 1 с \
+                 повече от {SIGMAS} стандартни грешки създава енергия)"
+            ),
         ),
         &[
-            "BRDF",
-            "albedo (estimate)",
-            "standard error",
-            "exact",
-            "verdict",
+            ("BRDF", "BRDF"),
+            ("albedo (estimate)", "албедо (оценка)"),
+            ("standard error", "стандартна грешка"),
+            ("exact", "точно"),
+            ("verdict", "извод"),
         ],
     );
-    let mut row = |label: String, (a, se): (f64, f64), exact: f64| {
-        table.rows.push(vec![
-            label,
-            format!("{a:.4}"),
-            two_digits(se),
-            format!("{exact:.4}"),
-            verdict(a, se),
-        ]);
+    let mut row = |label: &dyn Fn(Lang) -> String, (a, se): (f64, f64), exact: f64| {
+        table.push(|l| {
+            vec![
+                label(l),
+                format!("{a:.4}"),
+                two_digits(se),
+                format!("{exact:.4}"),
+                verdict(l, a, se),
+            ]
+        });
     };
     row(
-        "Lambert ρ/π".into(),
+        &|_| "Lambert ρ/π".into(),
         directional_albedo(&lambert(), Vec3A::Z, samples),
         1.0,
     );
@@ -322,9 +407,14 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
         let unnormalize = 2.0 * std::f64::consts::PI / (n as f64 + 2.0);
         let at = |deg: f64| directional_albedo(&brdf, dir(deg.to_radians()), samples);
         let (a, se) = at(0.0);
-        row(format!("Phong n = {n}, S(n) = (n+2)/2π"), (a, se), 1.0);
+        row(&|_| format!("Phong n = {n}, S(n) = (n+2)/2π"), (a, se), 1.0);
         row(
-            format!("Phong n = {n}, unnormalized (S = 1)"),
+            &|l| {
+                l.pick(
+                    format!("Phong n = {n}, unnormalized (S = 1)"),
+                    format!("Phong n = {n}, ненормиран (S = 1)"),
+                )
+            },
             (a * unnormalize, se * unnormalize),
             unnormalize,
         );
@@ -351,14 +441,31 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
         series.label = series.label.replace("unnorm.", "ненорм.");
     }
     albedo.write(&c.dir.join("albedo-bg.svg"))?;
-    let path = c.dir.join("albedo-en.svg");
-    c.section.figures.push(Figure::plot(&tour.out, &path, "Directional albedo against the angle of ω_o: normalized Phong is 1 at normal incidence (exactly; the estimate within its standard error) and less at grazing angles, where part of the lobe falls below the surface; unnormalized Phong with n = 1 reflects more than it receives, with n = 100 far less."));
+    let path = c.dir.join(format!("albedo-{here}.svg"));
+    c.section.figures.push(Figure::plot(
+        &tour.out,
+        &path,
+        lang::pick(
+            "Directional albedo against the angle of ω_o: normalized Phong is 1 at normal \
+             incidence (exactly; the estimate within its standard error) and less at grazing \
+             angles, where part of the lobe falls below the surface; unnormalized Phong with n = 1 \
+             reflects more than it receives, with n = 100 far less.",
+            "Албедо по посоки спрямо ъгъла на ω_o: нормираният Phong е 1 при перпендикулярно \
+             падане (точно; оценката – в рамките на стандартната си грешка) и по-малко под \
+             полегати ъгли, където част от лоба попада под повърхността; ненормираният Phong с \
+             n = 1 отразява повече, отколкото получава, а с n = 100 – много по-малко.",
+        ),
+    ));
     table.write_csv(&c.dir.join("albedo.csv"))?;
     c.section.tables.push(table);
 
     // Reciprocity: f(ω_i → ω_o) = f(ω_o → ω_i).
+    // Symbols and numbers only: the same in both languages.
     let mut table = Table::new(
-        "Reciprocity: f_r(a → b) and f_r(b → a)",
+        lang::pick(
+            "Reciprocity: f_r(a → b) and f_r(b → a)",
+            "Симетричност: f_r(a → b) и f_r(b → a)",
+        ),
         &["BRDF", "a (θ°)", "b (θ°)", "f(a→b)", "f(b→a)"],
     );
     for (label, brdf) in [
@@ -368,13 +475,16 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
     ] {
         for (a, b) in [(-20.0f64, 25.0f64), (-60.0, 50.0), (-5.0, 10.0)] {
             let (da, db) = (dir(a.to_radians()), dir(b.to_radians()));
-            table.rows.push(vec![
-                label.into(),
-                format!("{a}"),
-                format!("{b}"),
-                format!("{:.5}", brdf.eval(db, da, Vec2::ZERO).x),
-                format!("{:.5}", brdf.eval(da, db, Vec2::ZERO).x),
-            ]);
+            let (ab, ba) = (brdf.eval(db, da, Vec2::ZERO).x, brdf.eval(da, db, Vec2::ZERO).x);
+            table.push(|_| {
+                vec![
+                    label.into(),
+                    format!("{a}"),
+                    format!("{b}"),
+                    format!("{ab:.5}"),
+                    format!("{ba:.5}"),
+                ]
+            });
         }
     }
     table.write_csv(&c.dir.join("reciprocity.csv"))?;

@@ -5,6 +5,7 @@
 //! top and few below, and path tracing's one ray per bounce.
 
 use anyhow::{Context, Result};
+use lang::Lang;
 use raytracer::film::Image;
 use raytracer::integrator::record::VertexKind;
 use raytracer::integrator::{DirectStrategy, NaiveRecursive, PathTracer};
@@ -38,7 +39,11 @@ const UNLIMITED: u32 = 65;
 fn render(tour: &Tour) -> Result<Section> {
     let mut s = tour.chapter(
         "04-rendering-equation",
-        "4 · The rendering equation and its recursion",
+        lang::pick(
+            "4 · The rendering equation and its recursion",
+            "4 · Транспортното уравнение и неговата рекурсия",
+        ),
+        lang::pick(
         "The rendering equation is recursive: the light arriving at x from ω_i is the light leaving \
          the first point x′ that the ray from x in direction ω_i hits, towards x, L_i(x, ω_i) = \
          L_o(x′, −ω_i), itself given by the same equation. Naive recursive Monte Carlo solves it as \
@@ -55,6 +60,25 @@ fn render(tour: &Tour) -> Result<Section> {
          splitting, so its picture splits only at the first hit. Many rays at the top and few below (16, 4, \
          2, 1) tames the tree, but not enough. Path tracing follows one ray per bounce and spends \
          the same rays on many samples per pixel.",
+        "Транспортното уравнение е рекурсивно: светлината, идваща в x от ω_i, е светлината, \
+         която напуска към x първата точка x′, в която лъчът от x в посока ω_i удря сцената, \
+         L_i(x, ω_i) = L_o(x′, −ω_i), а тя се дава от същото уравнение. Наивната рекурсия с \
+         Monte Carlo го решава така, както е записано: при всяко пресичане пуска N случайни \
+         лъча, намира с рекурсия какво носи всеки от тях и усреднява f_r L_i cos θ_i / p по тях. \
+         Дълбочината D брои лъчите (отсечките) на пътя от камерата, както максималната \
+         дълбочина в Mitsuba: D = 1 вижда само светлините, D = 2 е директното осветление. Тогава \
+         една проба на пиксел трасира най-много 1 + N + … + N^(D−1) = (N^D − 1)/(N − 1) лъча; \
+         таблицата брои действително трасираните лъчи – по-малко, защото някои излизат през \
+         отворената предна страна на кутията. Рекурсията може да спре и щом throughput-ът β, \
+         произведението на множителите f_r cos θ_i / (N p) от камерата насам, стане почти 0 – \
+         идеята на лекцията, и тя е отместена: светлината, която изпуска, е малка, но не е нула, \
+         затова картината излиза по-тъмна – или чрез руска рулетка (поглед напред към Лекция \
+         12), която спира случайно, дели оцелелите на шанса им и остава неотместена; тя \
+         прекратява път, а не дърво, което продължава да се разклонява, затова в нейната \
+         картина рекурсията се разклонява само при първото пресичане. Много лъчи горе и малко \
+         долу (16, 4, 2, 1) обуздава дървото, но недостатъчно. Path tracing следва по един лъч \
+         на отражение и харчи същите лъчи за много проби на пиксел.",
+        ),
     )?;
     // The pictures at the scene's size (256 × 256: the slides show them at
     // about that width); the ladder of N and D, which only counts rays and
@@ -65,15 +89,24 @@ fn render(tour: &Tour) -> Result<Section> {
     if tour.quality != Quality::Tiny {
         ladder_scene.set_resolution(96, 96);
     }
-    let mut table = Table::new(
-        "Naive recursion on the Cornell box: rays per pixel sample, counted",
+    let mut table = Table::in_both(
+        lang::pick(
+            "Naive recursion on the Cornell box: rays per pixel sample, counted",
+            "Наивна рекурсия в Cornell box: лъчи за проба на пиксел, преброени",
+        ),
         &[
-            "N (branching)",
-            "max depth D",
-            "rays per pixel sample (measured)",
-            "rays per pixel sample at most",
-            "seconds",
-            "ended by",
+            ("N (branching)", "N (разклоняване)"),
+            ("max depth D", "максимална дълбочина D"),
+            (
+                "rays per pixel sample (measured)",
+                "лъчи за проба на пиксел (измерени)",
+            ),
+            (
+                "rays per pixel sample at most",
+                "лъчи за проба на пиксел, най-много",
+            ),
+            ("seconds", "секунди"),
+            ("ended by", "край чрез"),
         ],
     );
     // The ladder of N and D at 1 spp; N = 8, D = 4 is also the chapter's
@@ -93,17 +126,24 @@ fn render(tour: &Tour) -> Result<Section> {
                     &naive,
                     &options,
                     "naive-n8-d4",
-                    "Naive recursion, N = 8, D = 4",
+                    lang::pick(
+                        "Naive recursion, N = 8, D = 4",
+                        "Наивна рекурсия, N = 8, D = 4",
+                    ),
                 )?
                 .0
             } else {
                 measure(&ladder_scene, &naive, &ladder)
             };
-            table.rows.push(row(&naive, rays, "max depth", None));
+            table.push(|l| row(l, &naive, &rays, MAX_DEPTH, None));
             let r = table.rows.last().expect("a row");
+            let (rays, seconds) = (&r[2], &r[4]);
             crate::console::say!(
-                "  naive N={n} D={d}: {} rays per pixel sample, {} s",
-                r[2], r[4]
+                "{}",
+                lang::pick(
+                    format!("  naive N={n} D={d}: {rays} rays per pixel sample, {seconds} s"),
+                    format!("  наивна N={n} D={d}: {rays} лъча за проба на пиксел, {seconds} s"),
+                )
             );
         }
     }
@@ -137,15 +177,22 @@ fn render(tour: &Tour) -> Result<Section> {
         &roulette,
         &spp(roulette_spp),
         "naive-roulette",
-        "Naive recursion, N = 4 rays at the first hit and one at each later hit, ended by \
-         Russian roulette (a preview of Lecture 12), unbiased. With 4 rays at every hit the \
-         roulette could not end the tree: it keeps a ray with a chance near the albedo, so each \
-         ray would have more than one child on average",
+        lang::pick(
+            "Naive recursion, N = 4 rays at the first hit and one at each later hit, ended by \
+             Russian roulette (a preview of Lecture 12), unbiased. With 4 rays at every hit the \
+             roulette could not end the tree: it keeps a ray with a chance near the albedo, so \
+             each ray would have more than one child on average",
+            "Наивна рекурсия, N = 4 лъча при първото пресичане и по един при всяко следващо, \
+             прекратена с руска рулетка (поглед напред към Лекция 12), неотместена. С 4 лъча при \
+             всяко пресичане рулетката не би спряла дървото: тя запазва лъча с шанс близо до \
+             албедото, така че всеки лъч би имал средно повече от едно продължение",
+        ),
     )?;
     let cutoff = NaiveRecursive::try_new(vec![4], Some(UNLIMITED), None, Some(CUTOFF))
         .expect("a bounded recursion with a valid branching factor and cutoff");
     // Its caption is completed below, once its mean is known.
     let cut_spp_used = spp(cut_spp).spp;
+    let biased = lang::pick(", biased", ", отместена");
     let (rays, cut_mean) = picture(
         tour,
         &mut s,
@@ -153,7 +200,10 @@ fn render(tour: &Tour) -> Result<Section> {
         &cutoff,
         &spp(cut_spp),
         "naive-cutoff",
-        &format!("Naive recursion, N = 4, stopped once the throughput β < {CUTOFF}, biased"),
+        &lang::pick(
+            format!("Naive recursion, N = 4, stopped once the throughput β < {CUTOFF}{biased}"),
+            format!("Наивна рекурсия, N = 4, спряна, щом throughput-ът β < {CUTOFF}{biased}"),
+        ),
     )?;
     // Darker by more than 4 standard errors of the difference (a false claim
     // has probability below 4·10⁻⁵), or the caption says the samples are too few.
@@ -161,40 +211,63 @@ fn render(tour: &Tour) -> Result<Section> {
     let gap = roulette_b.mean - cut.mean;
     let se = cut.se.hypot(roulette_b.se);
     let lower = 100.0 * gap / roulette_b.mean;
+    let roulette_mean = roulette_b.mean;
     let verdict = if gap > 4.0 * se {
-        format!(
-            ", biased: {lower:.0} % darker than the roulette picture (mean {:.4}), the light of \
-             the paths it cut, small but not zero.",
-            roulette_b.mean
+        lang::pick(
+            format!(
+                ", biased: {lower:.0} % darker than the roulette picture (mean \
+                 {roulette_mean:.4}), the light of the paths it cut, small but not zero."
+            ),
+            format!(
+                ", отместена: с {lower:.0} % по-тъмна от картината с рулетката (средно \
+                 {roulette_mean:.4}) – светлината на отрязаните пътища, малка, но не нула."
+            ),
         )
     } else {
-        format!(
-            ", biased, though at {} spp the difference from the roulette picture (mean {:.4}) is \
-             still within the noise.",
-            cut_spp_used, roulette_b.mean
+        lang::pick(
+            format!(
+                ", biased, though at {cut_spp_used} spp the difference from the roulette picture \
+                 (mean {roulette_mean:.4}) is still within the noise."
+            ),
+            format!(
+                ", отместена, макар че при {cut_spp_used} spp разликата от картината с рулетката \
+                 (средно {roulette_mean:.4}) още е в рамките на шума."
+            ),
         )
     };
     let figures = &mut s.section.figures;
     let n = figures.len();
-    figures[n - 1].caption = figures[n - 1].caption.replacen(", biased.", &verdict, 1);
+    figures[n - 1].caption = figures[n - 1]
+        .caption
+        .replacen(&format!("{biased}."), &verdict, 1);
     figures.swap(n - 2, n - 1);
-    table.rows.push(row(
-        &cutoff,
-        rays,
-        &format!("β < {CUTOFF} (biased)"),
-        None,
-    ));
-    table.rows.push(row(&roulette, roulette_rays, "Russian roulette", Some("4 1")));
+    let (en, bg) = (
+        format!("β < {CUTOFF} (biased)"),
+        format!("β < {CUTOFF} (отместено)"),
+    );
+    table.push(|l| row(l, &cutoff, &rays, (&en, &bg), None));
+    table.push(|l| row(l, &roulette, &roulette_rays, ROULETTE, Some("4 1")));
     // A black picture (a scene lit only where these depths do not reach)
     // has no percentage: "(-inf % lower)" said nothing.
     let lower_text = if lower.is_finite() {
-        format!(" ({lower:.0} % lower)")
+        lang::pick(
+            format!(" ({lower:.0} % lower)"),
+            format!(" (с {lower:.0} % по-ниско)"),
+        )
     } else {
         String::new()
     };
+    let (c, c_se, r, r_se) = (cut.mean, cut.se, roulette_b.mean, roulette_b.se);
     crate::console::say!(
-        "  mean of the image: cut-off {:.4} ± {:.4}, roulette {:.4} ± {:.4}{lower_text}",
-        cut.mean, cut.se, roulette_b.mean, roulette_b.se
+        "{}",
+        lang::pick(
+            format!(
+                "  mean of the image: cut-off {c:.4} ± {c_se:.4}, roulette {r:.4} ± {r_se:.4}{lower_text}"
+            ),
+            format!(
+                "  средно на картината: спиране {c:.4} ± {c_se:.4}, рулетка {r:.4} ± {r_se:.4}{lower_text}"
+            ),
+        )
     );
 
     let top_heavy = NaiveRecursive::new(vec![16, 4, 2, 1], Some(5));
@@ -205,9 +278,13 @@ fn render(tour: &Tour) -> Result<Section> {
         &top_heavy,
         &options,
         "naive-16-4-2-1",
-        "Naive recursion with 16, 4, 2, 1 rays by level (many rays at the top, few below), D = 5",
+        lang::pick(
+            "Naive recursion with 16, 4, 2, 1 rays by level (many rays at the top, few below), \
+             D = 5",
+            "Наивна рекурсия с 16, 4, 2, 1 лъча по нива (много лъчи горе, малко долу), D = 5",
+        ),
     )?;
-    table.rows.push(row(&top_heavy, rays, "max depth", Some("16 4 2 1")));
+    table.push(|l| row(l, &top_heavy, &rays, MAX_DEPTH, Some("16 4 2 1")));
 
     table.write_csv(&s.dir.join("naive-rays.csv"))?;
     s.section.tables.push(table);
@@ -225,11 +302,19 @@ fn render(tour: &Tour) -> Result<Section> {
         &pt,
         &equal,
         "path-d4",
-        &format!(
-            "Path tracing, BRDF sampling only (as naive recursion), D = 4: {} paths of at most 4 \
-             rays per pixel.",
-            equal.spp
-        ),
+        &{
+            let paths = equal.spp;
+            lang::pick(
+                format!(
+                    "Path tracing, BRDF sampling only (as naive recursion), D = 4: {paths} paths \
+                     of at most 4 rays per pixel."
+                ),
+                format!(
+                    "Path tracing, само BRDF семплиране (като наивната рекурсия), D = 4: {paths} \
+                     пътя от най-много 4 лъча на пиксел."
+                ),
+            )
+        },
     )?;
     // The trees are drawn over a clean picture of the same size (light
     // sampling under MIS, 8 spp: a fraction of a second), not on the page.
@@ -250,16 +335,25 @@ fn render(tour: &Tour) -> Result<Section> {
             vec![3],
             3,
             "naive-tree",
-            "The recursion of one pixel sample, recorded by the renderer and drawn over the \
-             picture: N = 3 rays from every hit, D = 3 (at most 1 + 3 + 9 rays); hits on the lamp \
-             are ringed.",
+            lang::pick(
+                "The recursion of one pixel sample, recorded by the renderer and drawn over the \
+                 picture: N = 3 rays from every hit, D = 3 (at most 1 + 3 + 9 rays); hits on the \
+                 lamp are ringed.",
+                "Рекурсията на една проба от пиксел, записана от рендерера и нарисувана върху \
+                 картината: N = 3 лъча от всяко пресичане, D = 3 (най-много 1 + 3 + 9 лъча); \
+                 ударите в лампата са оградени с кръгче.",
+            ),
         ),
         (
             vec![4, 2, 1],
             4,
             "naive-tree-4-2-1",
-            "The same pixel with 4, 2, 1 rays by level (many at the top, few below), D = 4: at \
-             most 1 + 4 + 8 + 8 rays.",
+            lang::pick(
+                "The same pixel with 4, 2, 1 rays by level (many at the top, few below), D = 4: \
+                 at most 1 + 4 + 8 + 8 rays.",
+                "Същият пиксел с 4, 2, 1 лъча по нива (много горе, малко долу), D = 4: най-много \
+                 1 + 4 + 8 + 8 лъча.",
+            ),
         ),
     ] {
         let naive = NaiveRecursive::new(branching, Some(depth));
@@ -356,15 +450,22 @@ fn picture(
         se: var_sum.sqrt() / pixels,
     };
     let bound = match bound(naive) {
-        Some(b) => format!(" (at most {b})"),
+        Some(b) => lang::pick(format!(" (at most {b})"), format!(" (най-много {b})")),
         None => String::new(),
     };
+    let measured = rays_text(per_sample);
     s.section.figures.push(Figure::new(
         &tour.out,
         &picture,
-        &format!(
-            "{caption}. Measured: {} rays per pixel sample{bound}; mean of the image {mean:.4}.",
-            rays_text(per_sample)
+        &lang::pick(
+            format!(
+                "{caption}. Measured: {measured} rays per pixel sample{bound}; mean of the image \
+                 {mean:.4}."
+            ),
+            format!(
+                "{caption}. Измерено: {measured} лъча за проба на пиксел{bound}; средно на \
+                 картината {mean:.4}."
+            ),
         ),
     ));
     Ok((rays, brightness))
@@ -382,17 +483,30 @@ fn rays_text(per_sample: f64) -> String {
     format!("{per_sample:.1}")
 }
 
-/// The row of `naive-rays.csv` for a render of `naive`.
-fn row(naive: &NaiveRecursive, rays: Rays, ended_by: &str, branching: Option<&str>) -> Vec<String> {
+/// What ended a naive recursion, as its row says it: (English, Bulgarian).
+type Ended<'a> = (&'a str, &'a str);
+
+const MAX_DEPTH: Ended = ("max depth", "максималната дълбочина");
+const ROULETTE: Ended = ("Russian roulette", "руска рулетка");
+
+/// The row of `naive-rays.csv` (in English) or of the page (in `l`) for a
+/// render of `naive`.
+fn row(
+    l: Lang,
+    naive: &NaiveRecursive,
+    rays: &Rays,
+    (en, bg): Ended,
+    branching: Option<&str>,
+) -> Vec<String> {
     let n = branching.map_or_else(|| naive.branching()[0].to_string(), String::from);
     vec![
         n,
         naive
             .max_depth()
-            .map_or_else(|| "unlimited".into(), |d| d.to_string()),
+            .map_or_else(|| l.pick("unlimited", "без граница").into(), |d| d.to_string()),
         rays_text(rays.per_sample),
         bound(naive).map_or_else(|| "—".into(), |b| b.to_string()),
         seconds_number(rays.seconds),
-        ended_by.into(),
+        l.pick(en, bg).into(),
     ]
 }

@@ -29,6 +29,7 @@ fn render(tour: &Tour) -> Result<Section> {
     let mut s = tour.chapter(
         "05-path",
         "5 · Path tracing",
+        lang::pick(
         "Path tracing, which Kajiya proposed in the same paper as the rendering equation: one random \
          continuation per bounce instead of N, and many samples per pixel instead, which also give \
          anti-aliasing for free. The throughput is updated at every bounce as in the recursion with \
@@ -41,6 +42,22 @@ fn render(tour: &Tour) -> Result<Section> {
          heuristic. On the all-diffuse Cornell box the three pictures differ little. Veach's scene \
          shows why MIS matters: light sampling wins with small lights and rough plates (bottom left), \
          BRDF sampling with large lights and shiny plates (top right), and MIS is good at both.",
+        "Path tracing, който Каджия предлага в същата статия, в която е транспортното \
+         уравнение: по едно случайно продължение на отражение вместо N, а вместо това много \
+         проби на пиксел, които дават и безплатен anti-aliasing. Throughput-ът се обновява при \
+         всяко отражение както при рекурсията с N = 1, β ← β f_r cos θ_i / p(ω_i), а руската \
+         рулетка (поглед напред към Лекция 12) прекратява пътищата без фиксирана дълбочина. \
+         Шумът намалява като 1/√spp: всяка картина от редицата има четири пъти повече проби \
+         от предишната и наполовина по-малко шум. После – начините да намерим светлината при \
+         равен брой проби, поглед напред към Лекция 12: само с BRDF семплиране пътят трябва да \
+         удари лампа случайно; семплирането на светлините (next event estimation) свързва всеки \
+         връх с точка от светлина чрез лъч за сянка; multiple importance sampling (MIS) ползва \
+         и двете и претегля всяка проба със степенната евристика (power heuristic). В изцяло \
+         дифузната Cornell box трите картини се различават малко. Сцената на Veach показва защо \
+         MIS е важно: семплирането на светлините печели при малки светлини и грапави пластини \
+         (долу вляво), BRDF семплирането – при големи светлини и лъскави пластини (горе вдясно), \
+         а MIS се справя добре и с двете.",
+        ),
     )?;
     let pt = PathTracer::default();
     let mut done = Vec::new();
@@ -58,7 +75,12 @@ fn render(tour: &Tour) -> Result<Section> {
             &pt,
             &options,
             &format!("cornell-path-{:03}spp", options.spp),
-            "Path tracing (light and BRDF sampling under MIS, unlimited depth, roulette from depth 5).",
+            lang::pick(
+                "Path tracing (light and BRDF sampling under MIS, unlimited depth, roulette from \
+                 depth 5).",
+                "Path tracing (семплиране на светлините и по BRDF с MIS, без граница на \
+                 дълбочината, руска рулетка от дълбочина 5).",
+            ),
         )?;
         last = Some((scene, options.seed, picture));
     }
@@ -71,30 +93,52 @@ fn render(tour: &Tour) -> Result<Section> {
     s.section.figures.push(Figure::plot(
         &tour.out,
         &figure,
-        &format!(
-            "From area to solid angle: a patch dA at y, turned by θ_y = {}° from the direction to \
-             x, shows x only dA cos θ_y of itself (dashed), and at distance r that covers \
-             dω = cos θ_y dA / r² of the unit sphere around x (the arc).",
-            SolidAngle::default().theta_y_deg
-        ),
+        &{
+            let theta = SolidAngle::default().theta_y_deg;
+            lang::pick(
+                format!(
+                    "From area to solid angle: a patch dA at y, turned by θ_y = {theta}° from the \
+                     direction to x, shows x only dA cos θ_y of itself (dashed), and at distance r \
+                     that covers dω = cos θ_y dA / r² of the unit sphere around x (the arc)."
+                ),
+                format!(
+                    "От площ към пространствен ъгъл: площадка dA в y, завъртяна на θ_y = {theta}° \
+                     спрямо посоката към x, показва на x само dA cos θ_y от себе си (пунктирът), а \
+                     на разстояние r това заема dω = cos θ_y dA / r² от единичната сфера около x \
+                     (дъгата)."
+                ),
+            )
+        },
     ));
     let (scene, options) = tour.scene("cornell", 16)?;
     for (strategy, stem, caption) in [
         (
             DirectStrategy::BrdfOnly,
             "cornell-brdf-only",
-            "Cornell box, BRDF sampling only: the lamp is found only by paths that happen to hit it.",
+            lang::pick(
+                "Cornell box, BRDF sampling only: the lamp is found only by paths that happen to \
+                 hit it.",
+                "Cornell box, само BRDF семплиране: лампата намират само пътищата, които случайно \
+                 я ударят.",
+            ),
         ),
         (
             DirectStrategy::LightOnly,
             "cornell-light-only",
-            "Cornell box, light sampling only (next event estimation, no MIS).",
+            lang::pick(
+                "Cornell box, light sampling only (next event estimation, no MIS).",
+                "Cornell box, само семплиране на светлините (next event estimation, без MIS).",
+            ),
         ),
         (
             DirectStrategy::Mis,
             "cornell-mis",
-            "Cornell box, light and BRDF sampling under MIS (power heuristic): on diffuse walls \
-             hardly different from light sampling alone.",
+            lang::pick(
+                "Cornell box, light and BRDF sampling under MIS (power heuristic): on diffuse \
+                 walls hardly different from light sampling alone.",
+                "Cornell box, семплиране на светлините и по BRDF с MIS (степенна евристика): \
+                 върху дифузните стени почти не се различава от семплирането само на светлините.",
+            ),
         ),
     ] {
         let pt = PathTracer {
@@ -108,22 +152,37 @@ fn render(tour: &Tour) -> Result<Section> {
         (
             DirectStrategy::BrdfOnly,
             "veach-brdf",
-            "Veach's scene, BRDF sampling only: clean where the light is large and the plate \
-             shiny (top right), noisy where a small light meets a rough plate (bottom left), whose \
-             directions rarely hit it.",
+            lang::pick(
+                "Veach's scene, BRDF sampling only: clean where the light is large and the plate \
+                 shiny (top right), noisy where a small light meets a rough plate (bottom left), \
+                 whose directions rarely hit it.",
+                "Сцената на Veach, само BRDF семплиране: чисто там, където светлината е голяма, а \
+                 пластината лъскава (горе вдясно), шумно там, където малка светлина среща \
+                 грапава пластина (долу вляво), чиито посоки рядко я улучват.",
+            ),
         ),
         (
             DirectStrategy::LightOnly,
             "veach-light",
-            "Veach's scene, light sampling only: clean where the light is small and the plate rough \
-             (bottom left), noisy where a large light meets a shiny plate (top right), where most \
-             points on the light fall outside the narrow lobe.",
+            lang::pick(
+                "Veach's scene, light sampling only: clean where the light is small and the plate \
+                 rough (bottom left), noisy where a large light meets a shiny plate (top right), \
+                 where most points on the light fall outside the narrow lobe.",
+                "Сцената на Veach, само семплиране на светлините: чисто там, където светлината е \
+                 малка, а пластината грапава (долу вляво), шумно там, където голяма светлина \
+                 среща лъскава пластина (горе вдясно) – там повечето точки от светлината падат \
+                 извън тесния лоб.",
+            ),
         ),
         (
             DirectStrategy::Mis,
             "veach-mis",
-            "Veach's scene, both under MIS (power heuristic): each sample weighted by how likely \
-             the other strategy was to make it, good everywhere.",
+            lang::pick(
+                "Veach's scene, both under MIS (power heuristic): each sample weighted by how \
+                 likely the other strategy was to make it, good everywhere.",
+                "Сцената на Veach, двете с MIS (степенна евристика): всяка проба е претеглена \
+                 според това колко вероятно е другата стратегия да я създаде – добре навсякъде.",
+            ),
         ),
     ] {
         let pt = PathTracer {
@@ -164,14 +223,27 @@ fn path_sample(
         (scene, picture),
         Labels::Subpaths,
         "path-sample",
-        &format!(
-            "One path-tracing sample of pixel ({}, {}), recorded by the renderer and drawn over \
-             the picture: the camera ray from the lens x₀, the bounces x₁ … (D = 5), and from \
-             every vertex but the last a shadow ray to a point on the lamp (green; red where \
-             blocked). The last vertex has none, since its shadow ray would be segment D + 1, nor \
-             has a vertex whose lamp point lies behind its surface (f_r = 0 there).",
-            pixel.x, pixel.y
-        ),
+        &{
+            let (x, y) = (pixel.x, pixel.y);
+            lang::pick(
+                format!(
+                    "One path-tracing sample of pixel ({x}, {y}), recorded by the renderer and \
+                     drawn over the picture: the camera ray from the lens x₀, the bounces x₁ … \
+                     (D = 5), and from every vertex but the last a shadow ray to a point on the \
+                     lamp (green; red where blocked). The last vertex has none, since its shadow \
+                     ray would be segment D + 1, nor has a vertex whose lamp point lies behind its \
+                     surface (f_r = 0 there)."
+                ),
+                format!(
+                    "Една проба на path tracing от пиксел ({x}, {y}), записана от рендерера и \
+                     нарисувана върху картината: лъчът от камерата, тръгнал от лещата x₀, \
+                     отраженията x₁ … (D = 5) и от всеки връх без последния лъч за сянка до точка \
+                     от лампата (зелен; червен, където е препречен). Последният връх няма такъв, \
+                     защото лъчът му за сянка би бил отсечка D + 1; няма и връх, за който точката \
+                     от лампата е зад повърхността му (там f_r = 0)."
+                ),
+            )
+        },
     )
 }
 
@@ -197,14 +269,20 @@ fn plates_and_lights(scene: &Scene) -> String {
             _ => None,
         })
         .collect();
-    format!(
-        "Plates (shiniest at the top) Phong n = {}; lights of radius {} (left to right), equal \
-         power; max depth {}; the same samples per pixel for all three.",
-        exponents.join(", "),
-        radii.join(", "),
-        scene
-            .settings
-            .max_depth
-            .map_or_else(|| "unlimited".into(), |d| d.to_string())
+    let (exponents, radii) = (exponents.join(", "), radii.join(", "));
+    let depth = scene.settings.max_depth.map_or_else(
+        || lang::pick("unlimited", "без граница").into(),
+        |d| d.to_string(),
+    );
+    lang::pick(
+        format!(
+            "Plates (shiniest at the top) Phong n = {exponents}; lights of radius {radii} (left to \
+             right), equal power; max depth {depth}; the same samples per pixel for all three."
+        ),
+        format!(
+            "Пластини (най-лъскавата е горе) Phong n = {exponents}; светлини с радиус {radii} \
+             (отляво надясно), с еднаква мощност; максимална дълбочина {depth}; еднакъв брой \
+             проби на пиксел и за трите."
+        ),
     )
 }

@@ -35,6 +35,7 @@ fn render(tour: &Tour) -> Result<Section> {
     let mut c = tour.chapter(
         "07-bdpt",
         "7 · Bidirectional path tracing",
+        lang::pick(
         "A camera subpath x₀ … x_{t−1} and a light subpath y₀ … y_{s−1} are grown independently and \
          joined in every possible way by a shadow ray: s light vertices and t camera vertices make \
          the strategy (s, t), a path of s + t points and s + t − 1 segments. s = 0 is a camera path \
@@ -46,6 +47,20 @@ fn render(tour: &Tour) -> Result<Section> {
          and its share after MIS (weighted). The weighted images of all strategies add up to a \
          bidirectional image of the same max depth, size and samples per pixel — not to the \
          Cornell box picture above, which goes deeper, is larger and has more samples.",
+        "Подпът от камерата x₀ … x_{t−1} и подпът от светлината y₀ … y_{s−1} се строят \
+         независимо и се съединяват по всички възможни начини с лъч за сянка: s върха от \
+         светлината и t върха от камерата дават стратегията (s, t) – път от s + t точки и \
+         s + t − 1 отсечки. s = 0 е път от камерата, който сам удря светлина (path tracing с BRDF \
+         семплиране), s = 1 е next event estimation, t = 1 е light tracing. Всяка стратегия \
+         оценява същата светлина с различна плътност p_{s,t}; multiple importance sampling \
+         (степенната евристика, поглед напред към Лекция 12) претегля всяка стратегия там, \
+         където плътността ѝ е висока. По-долу: собствената оценка на всяка стратегия (без \
+         тегла: същата светлина с различен шум, или черно, където стратегията не може да създаде \
+         път) и делът ѝ след MIS (претеглена). Претеглените картини на всички стратегии се \
+         събират в bidirectional картина със същите максимална дълбочина, размер и проби на \
+         пиксел – не в картината на Cornell box отгоре, която е по-дълбока, по-голяма и с повече \
+         проби.",
+        ),
     )?;
     let (scene, options) = tour.scene("cornell", 32)?;
     let bd = Bdpt::default();
@@ -55,7 +70,11 @@ fn render(tour: &Tour) -> Result<Section> {
         &bd,
         &options,
         "cornell-bdpt",
-        "Cornell box, bidirectional path tracing, unlimited depth (roulette from depth 5).",
+        lang::pick(
+            "Cornell box, bidirectional path tracing, unlimited depth (roulette from depth 5).",
+            "Cornell box, bidirectional path tracing, без граница на дълбочината (руска рулетка \
+             от дълбочина 5).",
+        ),
     )?;
     bdpt_sample(tour, &mut c, &scene, options.seed, &picture)?;
     // At the scene's size (256 × 256, what the slides show them at) and 4
@@ -67,11 +86,17 @@ fn render(tour: &Tour) -> Result<Section> {
     let seconds = start.elapsed().as_secs_f64();
     let (w, h) = (scene.camera.width, scene.camera.height);
     let count = 2 * strategies.len();
-    let made = format!(
-        "max depth {STRATEGY_DEPTH}, {w}×{h}, no roulette, exposure +{STRATEGY_EXPOSURE} stop; one of \
-         {count} strategy images that took \
-         {} together",
-        seconds_text(seconds)
+    let took = seconds_text(seconds);
+    let made = lang::pick(
+        format!(
+            "max depth {STRATEGY_DEPTH}, {w}×{h}, no roulette, exposure +{STRATEGY_EXPOSURE} \
+             stop; one of {count} strategy images that took {took} together"
+        ),
+        format!(
+            "максимална дълбочина {STRATEGY_DEPTH}, {w}×{h}, без рулетка, експозиция \
+             +{STRATEGY_EXPOSURE} стъпка; една от {count} картини на стратегиите, които заедно \
+             отнеха {took}"
+        ),
     );
     // The weighted images of all strategies add up to bidirectional path
     // tracing of max depth D = 3: written, so that the slide shows the sum.
@@ -83,41 +108,63 @@ fn render(tour: &Tour) -> Result<Section> {
     }
     let sum_picture = write_image(&c.dir, "strategy-sum", &sum, options.spp, 0.0, None)?;
     for ((s, t), weighted, unweighted) in strategies {
-        for (image, kind, what) in [
+        for (image, kind, (en, bg)) in [
             (
                 &unweighted,
                 "unweighted",
-                "its own estimate of every path it can make",
+                (
+                    "unweighted: its own estimate of every path it can make",
+                    "без тегла: собствената ѝ оценка на всеки път, който може да създаде",
+                ),
             ),
-            (&weighted, "weighted", "its share after MIS"),
+            (
+                &weighted,
+                "weighted",
+                ("weighted: its share after MIS", "претеглена: делът ѝ след MIS"),
+            ),
         ] {
             let stem = format!("strategy-s{s}-t{t}-{kind}");
             let picture = write_image(&c.dir, &stem, image, options.spp, STRATEGY_EXPOSURE, None)?;
+            let segments = match (s + t - 1, lang::current()) {
+                (1, lang::Lang::En) => "1 segment".to_string(),
+                (n, lang::Lang::En) => format!("{n} segments"),
+                (1, lang::Lang::Bg) => "1 отсечка".to_string(),
+                (n, lang::Lang::Bg) => format!("{n} отсечки"),
+            };
+            let what = lang::pick(en, bg);
             c.section.figures.push(Figure::new(
                 &tour.out,
                 &picture,
-                &format!(
-                    "s = {s}, t = {t} ({}), {kind}: {what} ({made}).",
-                    match s + t - 1 {
-                        1 => "1 segment".to_string(),
-                        n => format!("{n} segments"),
-                    }
-                ),
+                &format!("s = {s}, t = {t} ({segments}), {what} ({made})."),
             ));
         }
     }
     c.section.figures.push(Figure::new(
         &tour.out,
         &sum_picture,
-        &format!(
-            "The sum of the weighted images of all strategies: bidirectional path tracing of max \
-             depth {STRATEGY_DEPTH} ({w}×{h}, {} spp, no roulette).",
-            options.spp
-        ),
+        &{
+            let spp = options.spp;
+            lang::pick(
+                format!(
+                    "The sum of the weighted images of all strategies: bidirectional path tracing \
+                     of max depth {STRATEGY_DEPTH} ({w}×{h}, {spp} spp, no roulette)."
+                ),
+                format!(
+                    "Сборът на претеглените картини на всички стратегии: bidirectional path \
+                     tracing с максимална дълбочина {STRATEGY_DEPTH} ({w}×{h}, {spp} spp, без \
+                     рулетка)."
+                ),
+            )
+        },
     ));
     crate::console::say!(
-        "  wrote the {count} strategy images of max depth {STRATEGY_DEPTH} in {}",
-        seconds_text(seconds)
+        "{}",
+        lang::pick(
+            format!("  wrote the {count} strategy images of max depth {STRATEGY_DEPTH} in {took}"),
+            format!(
+                "  записах {count} картини на стратегиите с максимална дълбочина {STRATEGY_DEPTH} за {took}"
+            ),
+        )
     );
     Ok(c.section)
 }
@@ -156,17 +203,29 @@ fn bdpt_sample(
         .segments
         .first()
         .and_then(|s| s.strategy)
-        .map_or_else(String::new, |[s, t]| format!(" (here s = {s}, t = {t})"));
+        .map_or_else(String::new, |[s, t]| {
+            lang::pick(
+                format!(" (here s = {s}, t = {t})"),
+                format!(" (тук s = {s}, t = {t})"),
+            )
+        });
     tour.path_figure(
         c,
         &record,
         (scene, picture),
         Labels::Subpaths,
         "bdpt-sample",
-        &format!(
-            "One bidirectional sample, recorded by the renderer and drawn over the picture: the \
-             camera subpath x₀ x₁ …, the light subpath y₀ y₁ … from the lamp, and the connection \
-             of y_(s−1) to x_(t−1) that makes the strategy (s, t){st}."
+        &lang::pick(
+            format!(
+                "One bidirectional sample, recorded by the renderer and drawn over the picture: \
+                 the camera subpath x₀ x₁ …, the light subpath y₀ y₁ … from the lamp, and the \
+                 connection of y_(s−1) to x_(t−1) that makes the strategy (s, t){st}."
+            ),
+            format!(
+                "Една bidirectional проба, записана от рендерера и нарисувана върху картината: \
+                 подпътят от камерата x₀ x₁ …, подпътят от светлината y₀ y₁ … от лампата и \
+                 свързването на y_(s−1) с x_(t−1), което прави стратегията (s, t){st}."
+            ),
         ),
     )
 }

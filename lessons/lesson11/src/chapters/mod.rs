@@ -61,11 +61,20 @@ pub fn run_alone(chapter: &Chapter, matches: &ArgMatches) -> Result<()> {
 pub fn run_chapters(args: &TourArgs, only: Option<&str>) -> Result<()> {
     let tour = Tour::new(args)?;
     let start = Instant::now();
-    let mut page = Page::new("Lecture 11: stereoscopy and global illumination, rendered");
-    page.intro = "To watch these pictures converge and turn the lecture's knobs yourself \
-                  (integrator, max depth, samples, stereo separation, BRDF parameters), run \
-                  `cargo run --release -p lesson11 -- lab` and open the address it prints."
-        .into();
+    let mut page = Page::new(lang::pick(
+        "Lecture 11: stereoscopy and global illumination, rendered",
+        "Лекция 11: стереоскопия и глобално осветление, рендерирани",
+    ));
+    page.intro = lang::pick(
+        "To watch these pictures converge and turn the lecture's knobs yourself \
+         (integrator, max depth, samples, stereo separation, BRDF parameters), run \
+         `cargo run --release -p lesson11 -- lab` and open the address it prints.",
+        "За да гледате как тези картини се изчистват от шума и сами да въртите параметрите \
+         на лекцията (интегратор, максимална дълбочина, проби, stereoSeparation, параметри на \
+         BRDF-ите), изпълнете `cargo run --release -p lesson11 -- lab` и отворете адреса, \
+         който програмата отпечатва.",
+    )
+    .into();
     for chapter in CHAPTERS {
         let name = chapter.name;
         if only.is_some_and(|o| o != name) {

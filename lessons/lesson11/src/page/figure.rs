@@ -42,7 +42,7 @@ pub fn png_width(png: &Path) -> Option<u32> {
 
 impl Figure {
     /// A render: its caption followed by its samples per pixel, exposure and
-    /// time, e.g. "(64 spp, exposure 0, 1.94 s)".
+    /// time, e.g. "(64 spp, exposure 0, 1.94 s)", in the run's language.
     pub fn new(root: &Path, picture: &Picture, caption: &str) -> Self {
         let mut facts = vec![
             format!("{} spp", picture.spp),
@@ -112,10 +112,12 @@ pub fn seconds_number(t: f64) -> String {
     format!("{t:.decimals$}")
 }
 
-/// The exposure as a caption states it: "exposure 0" or "exposure +4 stops (×16)".
+/// The exposure as a caption states it: "exposure 0" or "exposure +4 stops
+/// (×16)"; in Bulgarian "експозиция 0", "експозиция +4 стъпки (×16)".
 pub fn exposure_text(stops: f32) -> String {
+    let word = lang::pick("exposure", "експозиция");
     if stops == 0.0 {
-        "exposure 0".into()
+        format!("{word} 0")
     } else {
         let factor = stops.exp2();
         let factor = if factor >= 1.0 {
@@ -123,7 +125,12 @@ pub fn exposure_text(stops: f32) -> String {
         } else {
             format!("×{factor:.3}")
         };
-        format!("exposure {stops:+} stops ({factor})")
+        let unit = match (lang::current(), stops.abs() == 1.0) {
+            (lang::Lang::En, _) => "stops",
+            (lang::Lang::Bg, true) => "стъпка",
+            (lang::Lang::Bg, false) => "стъпки",
+        };
+        format!("{word} {stops:+} {unit} ({factor})")
     }
 }
 

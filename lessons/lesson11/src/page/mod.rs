@@ -1,5 +1,7 @@
 //! The page that shows the lesson's pictures: one self-contained HTML file,
-//! no scripts and no network.
+//! no scripts and no network, in the language of the run (`--lang`): the
+//! chapters write their titles, texts and captions in it, and the page
+//! declares it (`<html lang>`).
 
 pub mod figure;
 pub mod table;
@@ -59,12 +61,13 @@ impl Page {
         let mut h = String::new();
         let _ = write!(
             h,
-            "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>{t}</title>\n<style>\
+            "<!doctype html>\n<html lang=\"{l}\"><head><meta charset=\"utf-8\"><title>{t}</title>\n<style>\
              body{{font-family:system-ui,sans-serif;max-width:72rem;margin:2rem auto;padding:0 1rem;background:#111;color:#eee}}\
              figure{{display:inline-block;margin:0.5rem;vertical-align:top;max-width:20rem}}\
              img{{width:100%;image-rendering:pixelated;border:1px solid #333}}\
              figcaption{{font-size:0.9rem;color:#bbb}} table{{border-collapse:collapse;margin:1rem 0}} td,th{{border:1px solid #444;padding:0.2rem 0.6rem;text-align:right}} caption{{text-align:left;color:#bbb}} a{{color:#8cf}}</style></head><body>\n<h1>{t}</h1>\n",
-            t = escape(&self.title)
+            t = escape(&self.title),
+            l = lang::current().code()
         );
         if !self.intro.is_empty() {
             let _ = writeln!(h, "<p>{}</p>", escape(&self.intro));

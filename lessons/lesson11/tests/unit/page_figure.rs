@@ -19,13 +19,19 @@ fn times_are_never_shown_as_zero() {
 
 #[test]
 fn exposure_is_stated_in_stops_and_as_a_factor() {
-    assert_eq!(exposure_text(0.0), "exposure 0");
-    assert_eq!(exposure_text(4.0), "exposure +4 stops (×16)");
-    assert_eq!(exposure_text(-1.0), "exposure -1 stops (×0.500)");
+    lang::with(lang::Lang::En, || {
+        assert_eq!(exposure_text(0.0), "exposure 0");
+        assert_eq!(exposure_text(4.0), "exposure +4 stops (×16)");
+        assert_eq!(exposure_text(-1.0), "exposure -1 stops (×0.500)");
+    });
 }
 
 #[test]
 fn a_render_caption_says_spp_exposure_and_time() {
+    lang::with(lang::Lang::En, a_render_caption_in_english);
+}
+
+fn a_render_caption_in_english() {
     let picture = Picture {
         png: "/o/a/x.png".into(),
         exr: "/o/a/x.exr".into(),
