@@ -133,11 +133,18 @@ fn light_tracings_record_is_its_splats() {
         max_depth: Some(5),
         ..LightTracer::default()
     };
+    let mut occluded = 0;
     let n = check(&lt, |r| {
         assert_eq!(r.estimate, [0.0; 3]);
         assert_eq!(r.paths[0].role, PathRole::Light);
         assert_eq!(r.paths[0].vertices[0].kind, VertexKind::Light);
         for s in &r.segments {
+            // Issue 27: blocked connections to the lens are shown too,
+            // adding nothing and landing nowhere.
+            if s.occluded {
+                assert_eq!((s.splat, s.contribution), (None, [0.0; 3]));
+                occluded += 1;
+            }
             assert_eq!(
                 s.strategy.unwrap()[1],
                 1,
@@ -147,6 +154,7 @@ fn light_tracings_record_is_its_splats() {
         }
     });
     assert!(n > 100, "{n} samples splatted");
+    assert!(occluded > 5, "{occluded} blocked connections to the lens");
 }
 
 #[test]
@@ -156,31 +164,76 @@ fn bdpts_record_is_its_weighted_strategies() {
         ..Bdpt::default()
     };
     let mut strategies = std::collections::BTreeSet::new();
-    let mut occluded = 0;
+    let (mut occluded, mut occluded_lens, mut weighed) = (0, 0, 0);
     let n = check(&bdpt, |r| {
         for s in &r.segments {
             let [s_, t] = s.strategy.unwrap();
             strategies.insert((s_, t));
             if s.occluded {
-                // Blocked: recorded, adds nothing, has no weight.
+                // Blocked: recorded, adds nothing, has no weight, lands nowhere.
                 assert_eq!((s.mis_weight, s.contribution), (None, [0.0; 3]));
+                assert_eq!((&s.strategy_weights, s.splat), (&None, None));
                 occluded += 1;
+                occluded_lens += usize::from(t == 1);
                 continue;
             }
             let w = s.mis_weight.unwrap();
             assert!((0.0..=1.0).contains(&w), "MIS weight {w}");
+            let all = s
+                .strategy_weights
+                .as_ref()
+                .expect("every strategy's weight");
+            strategy_weights_add_up(all, [s_, t], w);
+            weighed += 1;
+        }
+        for v in r.paths.iter().flat_map(|p| &p.vertices) {
+            if let (Some(w), Some(all)) = (v.mis_weight, &v.strategy_weights) {
+                // A camera path that hit a light: strategy (0, t).
+                strategy_weights_add_up(all, [0, all.len() as u32], w);
+                weighed += 1;
+            }
         }
     });
     assert!(n > 400, "{n}");
+    assert!(
+        weighed > 1000,
+        "{weighed} contributions with every strategy's weight"
+    );
     // Issue 27, bug 4: BDPT showed no blocked connection (0 of 70 segments
-    // over 5 pixels) where the path tracer shows its blocked shadow rays.
+    // over 5 pixels) where the path tracer shows its blocked shadow rays;
+    // and connections to the lens (t = 1) only when they contributed.
     assert!(occluded > 50, "{occluded} blocked connections recorded");
+    assert!(
+        occluded_lens > 5,
+        "{occluded_lens} blocked connections to the lens"
+    );
     for st in [(1, 2), (2, 2), (1, 3), (2, 1), (3, 1)] {
         assert!(
             strategies.contains(&st),
             "strategy {st:?} recorded: {strategies:?}"
         );
     }
+}
+
+/// Every strategy's weight for the path of strategy `(s, t)` (issue 27: the
+/// inspector shows them): one per strategy `(i, s + t − i)`, `i < s + t`,
+/// each in [0, 1]; strategy `s`'s is the weight the integrator used, bit for
+/// bit; and they add up to 1. Each is one f32 division of a term by the same
+/// total (that total itself a sum of at most `s + t` rounded terms), so the
+/// sum is 1 within `2 (s + t)` units of 2⁻²⁴: 4e-6 allows up to 30 vertices.
+fn strategy_weights_add_up(all: &[f32], [s, t]: [u32; 2], w: f32) {
+    assert_eq!(all.len() as u32, s + t, "({s}, {t}): {all:?}");
+    assert_eq!(
+        all[s as usize].to_bits(),
+        w.to_bits(),
+        "({s}, {t}): {all:?}"
+    );
+    assert!(all.iter().all(|w| (0.0..=1.0).contains(w)), "{all:?}");
+    let sum: f64 = all.iter().map(|&w| w as f64).sum();
+    assert!(
+        (sum - 1.0).abs() <= 4e-6,
+        "({s}, {t}): {all:?} sum to {sum}"
+    );
 }
 
 /// Issue 27, bug 5: BDPT's subpaths labelled every density "per area": the

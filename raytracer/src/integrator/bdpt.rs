@@ -12,7 +12,7 @@
 //!   ([`nee::sample_light_point`]; pbrt does the same: it is a better point
 //!   than `y_0`);
 //! - `t = 1`: light tracing — `y_{s−1}` joined to a new lens point and
-//!   splatted where it lands ([`connect_to_camera`]);
+//!   splatted where it lands ([`super::camera_connection::connect_to_camera`]);
 //! - otherwise: `y_{s−1}` and `z_{t−1}` joined by a shadow ray; the edge
 //!   brings the scattering at both of its ends and its geometry term.
 //!
@@ -32,9 +32,9 @@
 //! [`crate::render::render_strategies`] renders every strategy's image.
 
 use super::Integrator;
-use super::camera_connection::connect_to_camera;
+use super::camera_connection::{join_lens, sees_lens};
 use super::dimensions::LENS;
-use super::mis_weight::mis_weight;
+use super::mis_weight::{mis_weight, mis_weights};
 use super::nee::{self, LightPoint};
 use super::record::{
     NoRecorder, PathRecord, PathRole, PathVertex, Recorder, Segment, SegmentEnd, VertexRef,
@@ -114,12 +114,12 @@ fn connect(
     }
     if t == 1 {
         // Light tracing: y_{s−1} joined to the lens.
-        let c = connect_to_camera(scene, &light[s - 1], LENS.draw(sampler))?;
+        let c = join_lens(scene, &light[s - 1], LENS.draw(sampler))?;
         return Some(Connection {
             value: c.value,
             raster: Some(c.camera.raster),
             sampled: Some(Vertex::camera(c.camera.p_lens, Color::ZERO)),
-            occluded: false,
+            occluded: !sees_lens(scene, &light[s - 1], &c),
         });
     }
     if !pt.is_connectible(scene) {
@@ -241,6 +241,10 @@ impl Bdpt {
                 let ray = Ray::new(camera[n_camera - 1].p(), d);
                 let at = r.push_vertex(last, PathVertex::escaped(scene, &ray, None, beta));
                 r.contribute(at, beta * scene.escaped_radiance(d), Some(1.0));
+                // The only strategy that makes the path: (0, n_C + 1).
+                let mut only = vec![0.0; n_camera + 1];
+                only[0] = 1.0;
+                r.strategy_weights(at, only);
             }
         }
         for t in 1..=n_camera {
@@ -258,18 +262,22 @@ impl Bdpt {
                 };
                 if c.occluded {
                     if let Some(r) = rec.record() {
-                        record_connection(r, (z, y), &c, [s, t], None, Color::ZERO);
+                        record_connection(r, (z, y), &c, [s, t], None, Color::ZERO, None);
                     }
                     continue;
                 }
-                let w = if !weighted {
-                    1.0
-                } else if s == 1 && t >= 2 {
-                    // The resampled point is the light subpath's only vertex.
-                    let mut y = [c.sampled.expect("s = 1 resamples the light point")];
-                    mis_weight(scene, &mut y, camera, s, t, None)
+                // The resampled point of s = 1 is the light subpath's only vertex.
+                let mut resampled;
+                let (ys, sampled): (&mut [Vertex], _) = if s == 1 && t >= 2 {
+                    resampled = [c.sampled.expect("s = 1 resamples the light point")];
+                    (&mut resampled, None)
                 } else {
-                    mis_weight(scene, light, camera, s, t, c.sampled)
+                    (&mut *light, c.sampled)
+                };
+                let w = if weighted {
+                    mis_weight(scene, ys, camera, s, t, sampled)
+                } else {
+                    1.0
                 };
                 let value = c.value * w;
                 match c.raster {
@@ -277,7 +285,9 @@ impl Bdpt {
                     None => l += value,
                 }
                 if let Some(r) = rec.record() {
-                    record_connection(r, (z, y), &c, [s, t], Some(w), value);
+                    // Every strategy's weight for this path, from the same MIS code.
+                    let all = weighted.then(|| mis_weights(scene, ys, camera, s, t, sampled));
+                    record_connection(r, (z, y), &c, [s, t], Some(w), value, all);
                 }
             }
         }
@@ -286,9 +296,10 @@ impl Bdpt {
 }
 
 /// Records strategy `(s, t)`'s weighted contribution `value` (weight `w`,
-/// `None` for a blocked connection, which adds nothing) between the recorded
-/// subpaths `(z, y)`: at the camera vertex that hit a light (`s = 0`), or as
-/// a connection from `z_{t−1}` (from `y_{s−1}` to the lens for `t = 1`).
+/// `None` for a blocked connection, which adds nothing; `weights`: every
+/// strategy's weight for the same path) between the recorded subpaths
+/// `(z, y)`: at the camera vertex that hit a light (`s = 0`), or as a
+/// connection from `z_{t−1}` (from `y_{s−1}` to the lens for `t = 1`).
 fn record_connection(
     r: &mut PathRecord,
     (z, y): (Option<usize>, Option<usize>),
@@ -296,6 +307,7 @@ fn record_connection(
     [s, t]: [usize; 2],
     w: Option<f32>,
     value: Color,
+    weights: Option<Vec<f32>>,
 ) {
     let z_at = z.map(|path| VertexRef {
         path,
@@ -308,13 +320,20 @@ fn record_connection(
     let sampled = c.sampled.map(|v| SegmentEnd::point(v.p()));
     let segment = |from, to, splat| Segment {
         occluded: c.occluded,
+        strategy_weights: weights.clone(),
         ..Segment::connection(from, to, [s, t], w, value, splat)
     };
     match (s, t) {
-        (0, _) => r.contribute(z_at, value, w),
+        (0, _) => {
+            r.contribute(z_at, value, w);
+            if let Some(weights) = weights.clone() {
+                r.strategy_weights(z_at, weights);
+            }
+        }
+        // A blocked connection to the lens was splatted nowhere.
         (_, 1) => r.push_segment(y_at, |from| {
             let lens = sampled.expect("t = 1 samples a lens point");
-            segment(from, lens, c.raster)
+            segment(from, lens, c.raster.filter(|_| !c.occluded))
         }),
         (1, _) => r.push_segment(z_at, |from| {
             let light = sampled.expect("s = 1 resamples the light point");

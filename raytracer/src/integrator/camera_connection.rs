@@ -30,17 +30,27 @@ pub struct CameraConnection {
 /// Visibility-tested.
 /// `None` if the point is off the film, behind the camera or in shadow.
 pub fn connect_to_camera(scene: &Scene, q: &Vertex, u_lens: Vec2) -> Option<CameraConnection> {
+    join_lens(scene, q, u_lens).filter(|c| sees_lens(scene, q, c))
+}
+
+/// [`connect_to_camera`] before its visibility test: what the connection
+/// would bring if nothing stood between `q` and the lens point (`None` if it
+/// would bring nothing: off the film, behind the camera, a zero BRDF or
+/// importance). The path recorder shows a blocked one as it shows a blocked
+/// shadow ray.
+pub fn join_lens(scene: &Scene, q: &Vertex, u_lens: Vec2) -> Option<CameraConnection> {
     if !q.is_connectible(scene) {
         return None;
     }
     let cs = scene.camera.sample_wi(q.p(), u_lens)?;
     let l = q.beta * q.f_importance(scene, cs.wi) * (q.abs_cos(cs.wi) * cs.we / cs.pdf_w);
-    if l == Color::ZERO {
-        return None;
-    }
-    let lens = Vertex::camera(cs.p_lens, Color::ZERO);
-    visible(scene, q, &lens).then_some(CameraConnection {
+    (l != Color::ZERO).then_some(CameraConnection {
         camera: cs,
         value: l,
     })
+}
+
+/// Whether nothing stands between `q` and the lens point of `c`.
+pub fn sees_lens(scene: &Scene, q: &Vertex, c: &CameraConnection) -> bool {
+    visible(scene, q, &Vertex::camera(c.camera.p_lens, Color::ZERO))
 }

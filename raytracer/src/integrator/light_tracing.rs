@@ -14,7 +14,7 @@
 //!         · Π_{j=1}^{i−1} f_r |cos θ| / p_ω
 //! ```
 //!
-//! (see [`connect_to_camera`] for the `G / p_A = |cos| / p_ω`
+//! (see [`connect_to_camera`](super::camera_connection::connect_to_camera) for the `G / p_A = |cos| / p_ω`
 //! conversion). The light point itself (`i = 0`) is joined too, with `f_r`
 //! replaced by `L_e(y_0 → lens)`: that is how light tracing sees lights
 //! directly — a pinhole cannot be hit by a light path, so nothing else could.
@@ -34,7 +34,7 @@
 //! here; see [`super::subpath`]). Those pixels stay dark.
 
 use super::Integrator;
-use super::camera_connection::connect_to_camera;
+use super::camera_connection::{join_lens, sees_lens};
 use super::dimensions::LENS;
 use super::record::{NoRecorder, PathRecord, PathRole, Recorder, Segment, VertexRef};
 use super::subpath::light_subpath;
@@ -107,14 +107,21 @@ impl LightTracer {
                 .and_then(|r| r.push_subpath(scene, PathRole::Light, path));
             for (i, q) in path.iter().enumerate() {
                 let u_lens = LENS.draw(sampler);
-                if let Some(c) = connect_to_camera(scene, q, u_lens) {
-                    splats.push(Splat {
-                        raster: c.camera.raster,
-                        value: c.value,
-                    });
+                // connect_to_camera, its visibility test apart: a blocked
+                // connection is recorded too (adding nothing).
+                if let Some(c) = join_lens(scene, q, u_lens) {
+                    let occluded = !sees_lens(scene, q, &c);
+                    if !occluded {
+                        splats.push(Splat {
+                            raster: c.camera.raster,
+                            value: c.value,
+                        });
+                    }
                     if let Some(r) = rec.record() {
                         let from = recorded.map(|p| VertexRef { path: p, vertex: i });
-                        r.push_segment(from, |from| Segment::lens_connection(from, &c, i + 1));
+                        r.push_segment(from, |from| {
+                            Segment::lens_connection(from, &c, i + 1, occluded)
+                        });
                     }
                 }
             }

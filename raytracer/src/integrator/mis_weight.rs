@@ -45,6 +45,58 @@ pub fn mis_weight(
     t: usize,
     sampled: Option<Vertex>,
 ) -> f32 {
+    let (own, others) = power_terms(scene, light, camera, s, t, sampled, |_, _| {});
+    weight(own, own + others)
+}
+
+/// The weight `mis_weight` gives, as a share of the path's total: 0 where
+/// the total is not finite or zero (no strategy could make the path).
+#[inline]
+fn weight(term: f32, total: f32) -> f32 {
+    let w = term / total;
+    if w.is_finite() { w } else { 0.0 }
+}
+
+/// Every strategy's weight for the path of strategy `(s, t)`, as the
+/// inspector shows them: entry `i` is the weight of `(i, s + t − i)`, for
+/// `i` from 0 to `s + t − 1` (a strategy with no camera vertex is none
+/// here). They are the terms [`mis_weight`] sums, each over the same total,
+/// so entry `s` is its weight bit for bit and the entries add up to 1 (up to
+/// rounding); a strategy that cannot make the path (it would connect at a
+/// delta vertex, or hit a point light) gets 0. Costs an allocation: for
+/// recording, not for rendering.
+pub fn mis_weights(
+    scene: &Scene,
+    light: &mut [Vertex],
+    camera: &mut [Vertex],
+    s: usize,
+    t: usize,
+    sampled: Option<Vertex>,
+) -> Vec<f32> {
+    let mut terms = vec![0.0f32; s + t];
+    let (own, others) = power_terms(scene, light, camera, s, t, sampled, |i, term| {
+        terms[i] = term;
+    });
+    terms[s] = own;
+    let total = own + others;
+    terms.into_iter().map(|term| weight(term, total)).collect()
+}
+
+/// The power heuristic's terms of the path of strategy `(s, t)`, relative
+/// to strategy `s`'s density: returns `s`'s own term and the sum of the
+/// others', handing each other strategy's term to `each(i, term)` (`i`
+/// light vertices). See [`mis_weight`].
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn power_terms(
+    scene: &Scene,
+    light: &mut [Vertex],
+    camera: &mut [Vertex],
+    s: usize,
+    t: usize,
+    sampled: Option<Vertex>,
+    mut each: impl FnMut(usize, f32),
+) -> (f32, f32) {
     debug_assert!(
         t >= 1 && s + t >= 2,
         "strategy ({s}, {t}) has no camera vertex"
@@ -116,7 +168,9 @@ pub fn mis_weight(
         r *= remap0(camera[i].pdf_rev_a) / remap0(camera[i].pdf_fwd_a);
         if !camera[i].delta && !camera[i - 1].delta {
             let cs = c(s + t - i);
-            sum += cs * cs * r * r;
+            let term = cs * cs * r * r;
+            each(s + t - i, term);
+            sum += term;
         }
     }
     // Strategies with fewer light vertices: (s−1, t+1), …, (0, s+t).
@@ -130,7 +184,9 @@ pub fn mis_weight(
         };
         if !light[i].delta && !delta_before {
             let ci = c(i);
-            sum += ci * ci * r * r;
+            let term = ci * ci * r * r;
+            each(i, term);
+            sum += term;
         }
     }
     // Restore.
@@ -153,9 +209,7 @@ pub fn mis_weight(
         Some((false, v)) => light[0] = v,
         None => {}
     }
-    let own = c(s) * c(s);
-    let w = own / (own + sum);
-    if w.is_finite() { w } else { 0.0 }
+    (c(s) * c(s), sum)
 }
 
 /// `p_NEE(y_0) / p_origin(y_0)` for the path of strategy `(s, t)` (before

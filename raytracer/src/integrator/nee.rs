@@ -127,6 +127,7 @@ fn shadow_ray(from: VertexRef, p: Vec3A, occluded: bool, w: Option<f32>, c: Colo
         occluded,
         strategy: None,
         mis_weight: w,
+        strategy_weights: None,
         contribution: c.to_array(),
         splat: None,
     }

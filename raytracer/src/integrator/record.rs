@@ -26,9 +26,11 @@
 //! connections are segments, with their MIS weight and weighted
 //! contribution; a contribution that lands on another pixel (light
 //! tracing, `t = 1`) names the raster position it was splatted to. Shadow
-//! rays and bidirectional connections between two vertices are recorded
-//! blocked or not (one that would carry nothing unblocked is not); a
-//! connection to the lens (`t = 1`) only when it contributed.
+//! rays and bidirectional connections, those to the lens (`t = 1`)
+//! included, are recorded blocked or not (one that would carry nothing
+//! unblocked is not). A weighted bidirectional contribution also carries
+//! every strategy's weight for its path ([`super::mis_weight::mis_weights`],
+//! the integrator's own MIS code), so the weights can be seen to add up to 1.
 //!
 //! The sum of a record's contributions is the estimate: the vertices' and
 //! unsplatted segments' contributions add up to what `sample` returned, and
@@ -148,6 +150,10 @@ pub struct PathVertex {
     pub throughput: [f32; 3],
     /// The MIS weight of the contribution made here, if any.
     pub mis_weight: Option<f32>,
+    /// For a bidirectional path that hit a light here (`s = 0`): every
+    /// strategy's weight for that path (see [`Segment::strategy_weights`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub strategy_weights: Option<Vec<f32>>,
     /// What this vertex added to the estimate (linear RGB, weighted).
     pub contribution: [f32; 3],
 }
@@ -212,6 +218,12 @@ pub struct Segment {
     /// (s, t): light and camera vertices of a bidirectional strategy.
     pub strategy: Option<[u32; 2]>,
     pub mis_weight: Option<f32>,
+    /// For a weighted bidirectional connection `(s, t)`: entry `i` is the
+    /// MIS weight strategy `(i, s + t − i)` has for the same path, as the
+    /// integrator computes them ([`super::mis_weight::mis_weights`]); entry
+    /// `s` is `mis_weight`, and they add up to 1.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub strategy_weights: Option<Vec<f32>>,
     /// What it added (linear RGB, weighted).
     pub contribution: [f32; 3],
     /// The raster position its contribution was splatted to, when it lands
@@ -237,15 +249,27 @@ impl Segment {
             occluded: false,
             strategy: Some(strategy.map(|n| n as u32)),
             mis_weight: w,
+            strategy_weights: None,
             contribution: c.to_array(),
             splat: splat.map(|r| r.to_array()),
         }
     }
 
     /// Light tracing's connection of light vertex `from` (`y_{s−1}`) to the
-    /// lens, `t = 1`: splatted where it lands.
-    pub fn lens_connection(from: VertexRef, c: &CameraConnection, s: usize) -> Segment {
+    /// lens, `t = 1`: splatted where it lands, or blocked (adding nothing).
+    pub fn lens_connection(
+        from: VertexRef,
+        c: &CameraConnection,
+        s: usize,
+        occluded: bool,
+    ) -> Segment {
         let to = SegmentEnd::point(c.camera.p_lens);
+        if occluded {
+            return Segment {
+                occluded,
+                ..Segment::connection(from, to, [s, 1], None, Color::ZERO, None)
+            };
+        }
         Segment::connection(from, to, [s, 1], None, c.value, Some(c.camera.raster))
     }
 }
@@ -287,6 +311,7 @@ impl PathVertex {
             pdf: None,
             throughput: beta.to_array(),
             mis_weight: None,
+            strategy_weights: None,
             contribution: [0.0; 3],
         }
     }
@@ -495,6 +520,14 @@ impl PathRecord {
             path: after.path,
             vertex: path.len() - 1,
         })
+    }
+
+    /// Sets every strategy's weight for the path that ends at vertex `at`
+    /// (a bidirectional camera path that hit a light).
+    pub fn strategy_weights(&mut self, at: Option<VertexRef>, weights: Vec<f32>) {
+        if let Some(at) = at {
+            self.paths[at.path].vertices[at.vertex].strategy_weights = Some(weights);
+        }
     }
 
     /// Adds `c` with MIS weight `w` to what vertex `at` contributed.

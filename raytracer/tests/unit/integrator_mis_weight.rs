@@ -311,6 +311,17 @@ fn weights_sum_to_one() {
                 }
                 let (mut l, mut c, sampled) = subpaths(&scene, &x, light, s, t);
                 let w = mis_weight(&scene, &mut l, &mut c, s, t, sampled) as f64;
+                // What the inspector shows: every strategy's weight for
+                // this path, the integrator's own one bit for bit.
+                let all = mis_weights(&scene, &mut l, &mut c, s, t, sampled);
+                assert_eq!(all[s] as f64, w);
+                for (i, &wi) in all.iter().enumerate() {
+                    let e = densities[i] * densities[i] / total;
+                    assert!(
+                        (wi as f64 - e).abs() <= 1e-3 * e.max(1e-3),
+                        "({s}, {t}): {all:?}"
+                    );
+                }
                 let expected = density * density / total;
                 assert!(
                     (w - expected).abs() <= 1e-3 * expected.max(1e-3),

@@ -73,8 +73,11 @@ pub fn choose(q: &Query) -> Result<BrdfChoice, String> {
                         albedo: rho,
                         exponent: n,
                     }),
-                    formula: format!(
-                        "normalized Phong: f_r = ρ (n+2)/2π cos^n α, ρ = {albedo}, n = {n}"
+                    formula: lang::pick(
+                        format!(
+                            "normalized Phong: f_r = ρ (n+2)/2π cos^n α, ρ = {albedo}, n = {n}"
+                        ),
+                        format!("нормиран Phong: f_r = ρ (n+2)/2π cos^n α, ρ = {albedo}, n = {n}"),
                     ),
                 },
                 "original" => BrdfChoice {
@@ -82,8 +85,13 @@ pub fn choose(q: &Query) -> Result<BrdfChoice, String> {
                         albedo: rho * (2.0 * std::f32::consts::PI / (n + 2.0)),
                         exponent: n,
                     }),
-                    formula: format!(
-                        "original Phong: f_r = ρ cos^n α (no normalization), ρ = {albedo}, n = {n}"
+                    formula: lang::pick(
+                        format!(
+                            "original Phong: f_r = ρ cos^n α (no normalization), ρ = {albedo}, n = {n}"
+                        ),
+                        format!(
+                            "оригинален Phong: f_r = ρ cos^n α (ненормиран), ρ = {albedo}, n = {n}"
+                        ),
                     ),
                 },
                 other => {
@@ -97,7 +105,10 @@ pub fn choose(q: &Query) -> Result<BrdfChoice, String> {
             unused(&["exponent", "phong", "ior"])?;
             BrdfChoice {
                 brdf: Brdf::Mirror(Mirror { reflectance: rho }),
-                formula: format!("perfect mirror: f_r = R δ(ω_i − ω_r)/cos θ_i, R = {albedo}"),
+                formula: lang::pick(
+                    format!("perfect mirror: f_r = R δ(ω_i − ω_r)/cos θ_i, R = {albedo}"),
+                    format!("идеално огледало: f_r = R δ(ω_i − ω_r)/cos θ_i, R = {albedo}"),
+                ),
             }
         }
         "glass" => {
@@ -105,8 +116,13 @@ pub fn choose(q: &Query) -> Result<BrdfChoice, String> {
             let ior = q.in_range("ior", 1.5, 1.0..=4.0)?;
             BrdfChoice {
                 brdf: Brdf::Glass(Glass { ior, tint: rho }),
-                formula: format!(
-                    "smooth glass: Fresnel reflection F and refraction 1 − F, η = {ior}, tint = {albedo}"
+                formula: lang::pick(
+                    format!(
+                        "smooth glass: Fresnel reflection F and refraction 1 − F, η = {ior}, tint = {albedo}"
+                    ),
+                    format!(
+                        "гладко стъкло: отражение F и пречупване 1 − F по Fresnel, η = {ior}, оттенък = {albedo}"
+                    ),
                 ),
             }
         }
@@ -205,12 +221,22 @@ pub fn analyse(choice: &BrdfChoice, theta: f32) -> BrdfAnalysis {
     // 1e-3: the midpoint rule's accuracy (module doc).
     let conserves_energy = max_albedo <= 1.0 + 1e-3;
     let verdict = if conserves_energy {
-        format!(
-            "conserves energy: the albedo is at most {max_albedo:.3} (at θ_o = {max_at:.0}°), never above 1"
+        lang::pick(
+            format!(
+                "conserves energy: the albedo is at most {max_albedo:.3} (at θ_o = {max_at:.0}°), never above 1"
+            ),
+            format!(
+                "запазва енергията: албедото е най-много {max_albedo:.3} (при θ_o = {max_at:.0}°), никога над 1"
+            ),
         )
     } else {
-        format!(
-            "violates energy conservation: at θ_o = {max_at:.0}° it reflects {max_albedo:.3} times the light it receives"
+        lang::pick(
+            format!(
+                "violates energy conservation: at θ_o = {max_at:.0}° it reflects {max_albedo:.3} times the light it receives"
+            ),
+            format!(
+                "нарушава запазването на енергията: при θ_o = {max_at:.0}° отразява {max_albedo:.3} пъти светлината, която получава"
+            ),
         )
     };
     BrdfAnalysis {

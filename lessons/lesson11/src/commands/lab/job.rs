@@ -200,8 +200,11 @@ pub struct Job {
     /// records its samples).
     integrator: OnceLock<Arc<dyn Integrator + Send>>,
     wavefront: Option<WavefrontPathTracer>,
-    /// Why the render has no pixel samples to inspect (SPPM, Metropolis).
-    no_samples: Option<&'static str>,
+    /// Why the render has no pixel samples to inspect (SPPM, Metropolis),
+    /// in English and Bulgarian.
+    no_samples: Option<(&'static str, &'static str)>,
+    /// The language of the page that started it (of its notes and errors).
+    language: lang::Lang,
     /// What the build makes ("the photon maps"), if there is one.
     building: Option<&'static str>,
     /// The scene of each eye.
@@ -274,6 +277,24 @@ const MLT_NO_SAMPLES: &str = "mlt's picture is made of Markov chains that mutate
      independent pixel samples, so there are no paths of one sample to show (bdpt shows the \
      paths its chains mutate)";
 
+const SPPM_NO_SAMPLES_BG: &str = "картината на sppm се прави от проходи с видими точки и фотони, \
+     а не от проби на пиксел, затова няма пътища на една проба за показване (photon mapping също \
+     не записва пътищата си; path, direct, naive, light и bdpt ги записват)";
+
+const MLT_NO_SAMPLES_BG: &str = "картината на mlt се прави от марковски вериги, които изменят \
+     пътища, а не от независими проби на пиксел, затова няма пътища на една проба за показване \
+     (bdpt показва пътищата, които веригите му изменят)";
+
+/// What a build makes, in Bulgarian (the names of `BiasedPlan::what`).
+fn building_bg(what: &str) -> &str {
+    match what {
+        "the photon maps" => "фотонните карти",
+        "the virtual point lights" => "виртуалните точкови светлини (VPL)",
+        "the irradiance cache" => "кеша на irradiance (облъчеността)",
+        other => other,
+    }
+}
+
 impl Job {
     /// Starts the job's thread (`running` counts the running jobs of the
     /// whole lab). Only quick work happens here: the thread does the rest.
@@ -319,23 +340,27 @@ impl Job {
             IntegratorPlan::Sppm(s) => (
                 Work::Sppm(s),
                 ("passes", "pixel passes"),
-                Some(SPPM_NO_SAMPLES),
+                Some((SPPM_NO_SAMPLES, SPPM_NO_SAMPLES_BG)),
                 None,
             ),
             IntegratorPlan::Metropolis(b, m) => (
                 Work::Metropolis(b, m),
                 ("mutations per pixel", "mutations"),
-                Some(MLT_NO_SAMPLES),
+                Some((MLT_NO_SAMPLES, MLT_NO_SAMPLES_BG)),
                 None,
             ),
         };
         if no_samples.is_some() && scenes.len() != 1 {
-            return Err(
-                "sppm and mlt render one picture (the Render tab), not a stereo pair".into(),
-            );
+            return Err(lang::pick(
+                "sppm and mlt render one picture (the Render tab), not a stereo pair",
+                "sppm и mlt рендерират една картина (раздела „Рендер“), а не стереодвойка",
+            )
+            .into());
         }
+        let language = lang::current();
         let job = Arc::new(Job {
             id,
+            language,
             kind: spec.kind,
             command: spec.command,
             width: first.camera.width,
@@ -361,7 +386,12 @@ impl Job {
                 } else {
                     Phase::Rendering
                 },
-                note: building.map(|what| format!("building {what}…")),
+                note: building.map(|what| {
+                    language.pick(
+                        format!("building {what}…"),
+                        format!("строи {}…", building_bg(what)),
+                    )
+                }),
                 error: None,
                 interrupted: false,
                 ended: None,
@@ -509,14 +539,26 @@ impl Job {
             .unwrap_or_else(|| "a panic without a message".into());
         let exercise = self.exercise.unwrap_or("the exercise");
         let message = if what.contains("not yet implemented") {
-            format!(
-                "{exercise} is not started yet (todo!() in exercises/src/{exercise}.rs): fill it in, \
-                 then start the lab again (it renders the code it was built with)"
+            self.language.pick(
+                format!(
+                    "{exercise} is not started yet (todo!() in exercises/src/{exercise}.rs): fill it in, \
+                     then start the lab again (it renders the code it was built with)"
+                ),
+                format!(
+                    "{exercise} още не е започната (todo!() в exercises/src/{exercise}.rs): попълнете я \
+                     и стартирайте лабораторията отново (тя рендерира кода, с който е компилирана)"
+                ),
             )
         } else {
-            format!(
-                "your integrator ({exercise}) panicked at pixel ({}, {}): {what}",
-                pixel.x, pixel.y
+            self.language.pick(
+                format!(
+                    "your integrator ({exercise}) panicked at pixel ({}, {}): {what}",
+                    pixel.x, pixel.y
+                ),
+                format!(
+                    "вашият интегратор ({exercise}) спря с panic в пиксел ({}, {}): {what}",
+                    pixel.x, pixel.y
+                ),
             )
         };
         self.update(|s| {
@@ -639,9 +681,15 @@ impl Job {
         let scene = &self.scenes[0];
         let pixels = self.width as u64 * self.height as u64;
         let note = |passes: u32| {
-            format!(
-                "SPPM: {passes} of {} passes of {} photon paths",
-                options.spp, settings.photons
+            self.language.pick(
+                format!(
+                    "SPPM: {passes} of {} passes of {} photon paths",
+                    options.spp, settings.photons
+                ),
+                format!(
+                    "SPPM: {passes} от {} прохода по {} фотонни пътя",
+                    options.spp, settings.photons
+                ),
             )
         };
         let mut throttle = Throttle::default();
@@ -666,10 +714,12 @@ impl Job {
         let r = render_sppm_watched(scene, settings, options, &self.stop, &mut watch);
         if r.passes > 0 {
             let line = format!(
-                "{}, radius {:.4} → {:.4}, peak {:.1} MiB",
+                "{}, {} {:.4} → {:.4}, {} {:.1} MiB",
                 note(r.passes),
+                self.language.pick("radius", "радиус"),
                 r.initial_radius,
                 r.final_radius,
+                self.language.pick("peak", "най-много"),
                 r.peak_bytes as f64 / (1 << 20) as f64
             );
             self.publish(
@@ -701,16 +751,29 @@ impl Job {
     ) -> bool {
         let scene = &self.scenes[0];
         let pixels = (self.width as u64 * self.height as u64).max(1);
+        let template = self.language.pick(
+            "Metropolis: b = {b} ± {error} % from {paths} bootstrap paths; {chains} of {all} chains \
+             merged, acceptance {accepted} %",
+            "Metropolis: b = {b} ± {error} % от {paths} начални пътя; {chains} от {all} вериги \
+             обединени, приети {accepted} %",
+        );
         let note = |p: &MetropolisProgress| {
-            format!(
-                "Metropolis: b = {:.5} ± {:.2} % from {} bootstrap paths; {} of {} chains merged, \
-                 acceptance {:.0} %",
-                p.bootstrap.b,
-                100.0 * p.bootstrap.relative_error(),
-                p.bootstrap.paths,
-                p.chains,
-                metropolis.chains,
+            let b = format!("{:.5}", p.bootstrap.b);
+            let error = format!("{:.2}", 100.0 * p.bootstrap.relative_error());
+            let accepted = format!(
+                "{:.0}",
                 100.0 * p.accepted as f64 / p.mutations.max(1) as f64
+            );
+            lang::fill(
+                template,
+                &[
+                    ("b", &b),
+                    ("error", &error),
+                    ("paths", &p.bootstrap.paths),
+                    ("chains", &p.chains),
+                    ("all", &metropolis.chains),
+                    ("accepted", &accepted),
+                ],
             )
         };
         let mut throttle = Throttle::default();
@@ -819,15 +882,24 @@ impl Job {
         if let Some(i) = self.integrator.get() {
             return Ok(i.clone());
         }
-        if let Some(reason) = self.no_samples {
-            return Err(reason.into());
+        if let Some((en, bg)) = self.no_samples {
+            return Err(lang::pick(en, bg).into());
         }
         let what = self.building.unwrap_or("its integrator");
+        let bg = self.building.map_or("своя интегратор", building_bg);
         Err(if lock(&self.state).phase == Phase::Done {
-            format!("the render stopped before it had built {what}: start it again")
+            lang::pick(
+                format!("the render stopped before it had built {what}: start it again"),
+                format!("рендерът спря, преди да построи {bg}: започнете го отново"),
+            )
         } else {
-            format!(
-                "the render is still building {what}: the inspector can trace a sample once that is done"
+            lang::pick(
+                format!(
+                    "the render is still building {what}: the inspector can trace a sample once that is done"
+                ),
+                format!(
+                    "рендерът още строи {bg}: инспекторът може да проследи проба, щом това свърши"
+                ),
             )
         })
     }

@@ -52,10 +52,17 @@ pub fn record(
         recorded
     });
     if abandoned {
-        return Err(format!(
-            "this sample traces more rays than the inspector computes in {} s (lower the max \
-             depth or the branching)",
-            LONGEST_SAMPLE.as_secs()
+        return Err(lang::pick(
+            format!(
+                "this sample traces more rays than the inspector computes in {} s (lower the max \
+                 depth or the branching)",
+                LONGEST_SAMPLE.as_secs()
+            ),
+            format!(
+                "тази проба проследява повече лъчи, отколкото инспекторът изчислява за {} s \
+                 (намалете максималната дълбочина или разклоняването)",
+                LONGEST_SAMPLE.as_secs()
+            ),
         ));
     }
     record.project(&scene.camera);

@@ -33,18 +33,30 @@ fn reference(scene: &str, width: u32, height: u32) -> Result<(Reference, u32), S
         "door" => (door_settings().load(), door_settings().max_depth),
         "caustic" => (caustic_settings().load(), caustic_settings().max_depth),
         _ => {
-            return Err(format!(
-                "the race measures against a stored reference: choose cornell, door or caustic, not {scene:?}"
+            return Err(lang::pick(
+                format!(
+                    "the race measures against a stored reference: choose cornell, door or caustic, not {scene:?}"
+                ),
+                format!(
+                    "надпреварата мери спрямо записан еталон: изберете cornell, door или caustic, а не {scene:?}"
+                ),
             ));
         }
     };
     let stored = stored.map_err(|e| format!("{e:#}"))?;
     let (w, h) = (stored.mean.width, stored.mean.height);
     let at = stored.at_size(width, height).ok_or_else(|| {
-        format!(
-            "the reference of {scene} is {w}×{h}: choose a size that divides it (e.g. {}×{})",
-            w / 2,
-            h / 2
+        lang::pick(
+            format!(
+                "the reference of {scene} is {w}×{h}: choose a size that divides it (e.g. {}×{})",
+                w / 2,
+                h / 2
+            ),
+            format!(
+                "еталонът на {scene} е {w}×{h}: изберете размер, който го дели (напр. {}×{})",
+                w / 2,
+                h / 2
+            ),
         )
     })?;
     Ok((at, depth))
@@ -62,9 +74,12 @@ pub fn race_job(q: &Query, folder: &SceneFolder) -> Result<JobSpec, String> {
         .filter(|n| !n.is_empty())
         .collect();
     if !(2..=3).contains(&names.len()) {
-        return Err(format!(
-            "a race takes 2 or 3 integrators, got {}",
-            names.len()
+        return Err(lang::pick(
+            format!("a race takes 2 or 3 integrators, got {}", names.len()),
+            format!(
+                "надпреварата е между 2 или 3 интегратора, а са {}",
+                names.len()
+            ),
         ));
     }
     let seconds = q.in_range("seconds", 20.0, 1.0..=LONGEST as f32)? as f64;
@@ -103,9 +118,15 @@ pub fn race_job(q: &Query, folder: &SceneFolder) -> Result<JobSpec, String> {
     let floor = reference.noise_floor();
     Ok(JobSpec {
         kind: "race",
-        command: format!(
-            "an equal-time race of {} for {seconds} s, one thread each",
-            names.join(", ")
+        command: lang::pick(
+            format!(
+                "an equal-time race of {} for {seconds} s, one thread each",
+                names.join(", ")
+            ),
+            format!(
+                "надпревара за еднакво време между {} за {seconds} s, по една нишка",
+                names.join(", ")
+            ),
         ),
         eyes: vec![scene; racers.len()],
         build_for: None,

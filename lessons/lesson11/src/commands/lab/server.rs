@@ -192,14 +192,30 @@ impl Reply {
 }
 
 /// Answers one request; a panic in a handler becomes a 500 and the lab goes on.
+/// The answer speaks the page's language: the page sends it as
+/// `Accept-Language` (`bg` or `en`), the lab's own language otherwise; a
+/// render started by the request keeps it for its notes and errors.
 fn answer(state: &State, request: Request) {
     let method = request.method().clone();
     let url = request.url().to_string();
-    let reply =
+    let language = request
+        .headers()
+        .iter()
+        .find(|h| h.field.equiv("Accept-Language"))
+        .and_then(|h| lang::Lang::parse(h.value.as_str()))
+        .unwrap_or_else(lang::current);
+    let reply = lang::with(language, || {
         std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| route(state, &method, &url)))
             .unwrap_or_else(|_| {
-                Reply::text(500, "internal error (the lab goes on; please report it)")
-            });
+                Reply::text(
+                    500,
+                    lang::pick(
+                        "internal error (the lab goes on; please report it)",
+                        "вътрешна грешка (лабораторията продължава; моля, съобщете за нея)",
+                    ),
+                )
+            })
+    });
     // Always a Content-Length (the body is in memory), never chunks.
     let mut response = Response::from_data(reply.body)
         .with_status_code(reply.status)
@@ -283,12 +299,17 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
         }),
         "/api/zmap.png" => get(&["page", "job", "v"], &|q| {
             let job = page_job(state, q)?;
-            let map = ZMap::of(&job).ok_or(
+            let map = ZMap::of(&job).ok_or(lang::pick(
                 "no z-map: the page's render is not of the \"Your code\" tab, or has no picture yet",
-            )?;
+                "няма z-карта: рендерът на страницата не е от раздела „Вашият код“ или още няма картина",
+            ))?;
             let image = map.image(job.width, job.height);
             Ok(png(&image, 0.0, &job)?
                 .header("X-Lab-Verdict", map.verdict())
+                .header(
+                    "X-Lab-Verdict-Numbers",
+                    map.verdict_numbers().map(|v| v.to_string()).join(","),
+                )
                 .header("X-Lab-Consistent", map.consistent()))
         }),
         "/api/brdf-sphere" => post(&with(&[BRDF_PARAMS, &["spp", "seed"]]), &|q| {
@@ -335,10 +356,11 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
                 let job = page_job(state, q)?;
                 let images = job.shown_images();
                 let (Some(Some(left)), Some(Some(right))) = (images.first(), images.get(1)) else {
-                    return Err(
-                    "the page's render is not a stereo pair (start one with /api/stereo), or has no picture yet"
-                        .into(),
-                );
+                    return Err(lang::pick(
+                        "the page's render is not a stereo pair (start one with /api/stereo), or has no picture yet",
+                        "рендерът на страницата не е стереодвойка (започнете я с /api/stereo) или още няма картина",
+                    )
+                    .into());
                 };
                 png(&stereo::compose(q, left, right)?, exposure, &job)
             },
@@ -349,7 +371,13 @@ fn route(state: &State, method: &Method, url: &str) -> Reply {
             Ok(Reply::json(&brdf::analyse(&choice, theta)))
         }),
         "/api/paths" => get(&["page", "x", "y", "sample"], &|q| paths(state, q)),
-        _ => Reply::text(404, format!("no such page: {path}")),
+        _ => Reply::text(
+            404,
+            lang::pick(
+                format!("no such page: {path}"),
+                format!("няма такава страница: {path}"),
+            ),
+        ),
     }
 }
 
@@ -364,14 +392,17 @@ fn with(extra: &[&[&'static str]]) -> Vec<&'static str> {
 /// that render (a picture asked for just before a new render started must
 /// not show the new render's picture under the old one's numbers).
 fn page_job(state: &State, q: &Query) -> Result<Arc<Job>, String> {
-    let job = state
-        .pages
-        .job(q.page()?)
-        .ok_or_else(|| "this page has no render yet: start one first".to_string())?;
+    let job = state.pages.job(q.page()?).ok_or_else(|| {
+        lang::pick(
+            "this page has no render yet: start one first",
+            "тази страница още няма рендер: започнете един",
+        )
+        .to_string()
+    })?;
     match q.get("job") {
-        Some(id) if id != job.id.to_string() => Err(format!(
-            "render {id} of this page was replaced by render {}",
-            job.id
+        Some(id) if id != job.id.to_string() => Err(lang::pick(
+            format!("render {id} of this page was replaced by render {}", job.id),
+            format!("рендер {id} на тази страница е заменен с рендер {}", job.id),
         )),
         _ => Ok(job),
     }
@@ -391,7 +422,10 @@ fn eye_image(
         .get(eye)
         .ok_or_else(|| format!("`eye` must be below {}, got {eye}", images.len()))?
         .clone()
-        .ok_or("no picture yet: the first snapshot comes within a moment")?;
+        .ok_or(lang::pick(
+            "no picture yet: the first snapshot comes within a moment",
+            "още няма картина: първата идва след миг",
+        ))?;
     Ok((job, image))
 }
 
@@ -467,20 +501,36 @@ fn paths(state: &State, q: &Query) -> Result<Reply, String> {
     let x: u32 = q.number("x", u32::MAX)?;
     let y: u32 = q.number("y", u32::MAX)?;
     if x >= job.width || y >= job.height {
-        return Err(format!(
-            "the pixel ({x}, {y}) is outside the {}×{} picture (give x and y)",
-            job.width, job.height
+        return Err(lang::pick(
+            format!(
+                "the pixel ({x}, {y}) is outside the {}×{} picture (give x and y)",
+                job.width, job.height
+            ),
+            format!(
+                "пикселът ({x}, {y}) е извън картината {}×{} (дайте x и y)",
+                job.width, job.height
+            ),
         ));
     }
     let sample: u32 = q.number("sample", 0)?;
     if sample >= job.target_spp {
-        return Err(format!(
-            "`sample` must be below the render's {} spp, got {sample}",
-            job.target_spp
+        return Err(lang::pick(
+            format!(
+                "“sample k” must be below the render's {} spp, got {sample}",
+                job.target_spp
+            ),
+            format!(
+                "„проба k“ трябва да е под {} проби на пиксел на рендера, а е {sample}",
+                job.target_spp
+            ),
         ));
     }
     let Some(scene) = job.scene() else {
-        return Err("the inspector shows the paths of the Render tab's picture".into());
+        return Err(lang::pick(
+            "the inspector shows the paths of the Render tab's picture",
+            "инспекторът показва пътищата на картината от раздела „Рендер“",
+        )
+        .into());
     };
     let integrator = job.integrator()?;
     let record = super::paths::record(integrator.as_ref(), &scene, [x, y], sample, job.seed())?;

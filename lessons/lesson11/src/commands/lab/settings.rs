@@ -48,25 +48,26 @@ pub const RENDER_PARAMS: &[&str] = &[
     "engine",
 ];
 
-/// What the page calls each option (its label), so that an error of
-/// `lesson11 render` reads in the page's words: "“Seed”: …" where the
-/// command line says "'--seed <SEED>'".
-pub const PAGE_LABELS: &[(&str, &str)] = &[
-    ("scene", "Scene"),
-    ("integrator", "Integrator"),
-    ("width", "Size (width)"),
-    ("height", "Size (height)"),
-    ("spp", "Target spp"),
-    ("seed", "Seed"),
-    ("max-depth", "Max depth D"),
-    ("rr-depth", "Roulette from bounce"),
-    ("branching", "Branching N"),
-    ("roulette", "Russian roulette"),
-    ("cutoff", "cutoff"),
-    ("ao-distance", "AO distance"),
-    ("separation", "Separation"),
-    ("convergence", "Convergence"),
-    ("toe-in", "toe-in"),
+/// What the page calls each option (its label, in English and Bulgarian),
+/// so that an error of `lesson11 render` reads in the page's words: "“Seed”:
+/// …" where the command line says "'--seed <SEED>'".
+pub const PAGE_LABELS: &[(&str, &str, &str)] = &[
+    ("scene", "Scene", "Сцена"),
+    ("integrator", "Integrator", "Интегратор"),
+    ("width", "Size (width)", "Размер (ширина)"),
+    ("height", "Size (height)", "Размер (височина)"),
+    ("spp", "Target spp", "Проби на пиксел (цел)"),
+    ("seed", "Seed", "Начално число (seed)"),
+    ("max-depth", "Max depth D", "Максимална дълбочина D"),
+    ("rr-depth", "Roulette from bounce", "Рулетка от отражение"),
+    ("branching", "Branching N", "Разклоняване N"),
+    ("roulette", "Russian roulette", "Руска рулетка"),
+    ("cutoff", "cutoff", "cutoff"),
+    ("ao-distance", "AO distance", "разстояние за AO"),
+    ("engine", "Engine", "Машина"),
+    ("separation", "Separation", "Разстояние между очите"),
+    ("convergence", "Convergence", "Конвергенция"),
+    ("toe-in", "toe-in", "toe-in"),
 ];
 
 /// A checked render: what to render, how (checked, not built yet), and the
@@ -148,9 +149,12 @@ impl SceneFolder {
             }
         }
         let names: Vec<String> = self.list().into_iter().map(|s| s.name).collect();
-        Err(format!(
-            "unknown scene {name:?}: choose one of {}",
-            names.join(", ")
+        Err(lang::pick(
+            format!("unknown scene {name:?}: choose one of {}", names.join(", ")),
+            format!(
+                "непозната сцена {name:?}: изберете една от {}",
+                names.join(", ")
+            ),
         ))
     }
 }
@@ -199,15 +203,27 @@ pub fn render_setup(
         .map_err(|e| on_the_page(&one_line(&e)))?;
     let (w, h) = (scene.camera.width, scene.camera.height);
     if w as u64 * h as u64 > MAX_PIXELS {
-        return Err(format!(
-            "the picture would be {w}×{h} pixels, more than the lab's {MAX_PIXELS} (800×600): \
-             lower width and height (lesson11 render takes any size)"
+        return Err(lang::pick(
+            format!(
+                "the picture would be {w}×{h} pixels, more than the lab's {MAX_PIXELS} (800×600): \
+                 lower width and height (lesson11 render takes any size)"
+            ),
+            format!(
+                "картината би била {w}×{h} пиксела, повече от {MAX_PIXELS} (800×600) на \
+                 лабораторията: намалете ширината и височината (lesson11 render приема всеки размер)"
+            ),
         ));
     }
     if options.spp > MAX_SPP {
-        return Err(format!(
-            "“Target spp” must be at most {MAX_SPP} in the lab, got {}",
-            options.spp
+        return Err(lang::pick(
+            format!(
+                "“Target spp” must be at most {MAX_SPP} in the lab, got {}",
+                options.spp
+            ),
+            format!(
+                "„Проби на пиксел (цел)“ са най-много {MAX_SPP} в лабораторията, а са {}",
+                options.spp
+            ),
         ));
     }
     options.progress = false;
@@ -264,13 +280,30 @@ fn clap_reason(e: &clap::Error) -> String {
         let (arg, why) = rest.split_once('\'').unwrap_or((rest, ""));
         let flag = arg.split_whitespace().next()?.trim_start_matches("--");
         let why = why.trim_start_matches(':').trim();
+        let why = lang::pick(why, why_bg(why));
+        let invalid = lang::pick("is not valid", "не е допустима стойност");
         Some(if why.is_empty() {
-            format!("--{flag}: {value:?} is not valid")
+            format!("--{flag}: {value:?} {invalid}")
         } else {
-            format!("--{flag}: {value:?} is not valid ({why})")
+            format!("--{flag}: {value:?} {invalid} ({why})")
         })
     });
     parsed.unwrap_or_else(|| first.to_string())
+}
+
+/// The reasons Rust's number parsers give (clap passes them on), in
+/// Bulgarian; any other reason as it is.
+fn why_bg(why: &str) -> &str {
+    match why {
+        "invalid digit found in string" => "не е цяло неотрицателно число",
+        "cannot parse integer from empty string" | "cannot parse float from empty string" => {
+            "празно поле"
+        }
+        "number too large to fit in target type" => "твърде голямо число",
+        "number too small to fit in target type" => "твърде малко число",
+        "invalid float literal" => "не е число",
+        other => other,
+    }
 }
 
 /// A message of `lesson11 render` in the page's words: every `--option`
@@ -285,8 +318,11 @@ pub fn on_the_page(message: &str) -> String {
         let end = after
             .find(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
             .unwrap_or(after.len());
-        match PAGE_LABELS.iter().find(|(flag, _)| *flag == &after[..end]) {
-            Some((_, label)) => out.push_str(&format!("“{label}”")),
+        match PAGE_LABELS
+            .iter()
+            .find(|(flag, _, _)| *flag == &after[..end])
+        {
+            Some((_, en, bg)) => out.push_str(&lang::pick(format!("“{en}”"), format!("„{bg}“"))),
             None => out.push_str(&rest[at..at + 2 + end]),
         }
         rest = &after[end..];

@@ -95,20 +95,30 @@ impl ZMap {
         })
     }
 
-    /// One line: the largest |z|, where, against what threshold.
+    /// One line: the largest |z|, where, against what threshold (in
+    /// English: an HTTP header carries it).
     pub fn verdict(&self) -> String {
-        let w = self.test.worst_tile;
+        let [z, x, y, threshold, tile] = self.verdict_numbers();
         format!(
-            "largest |z| = {:.1} in tile ({}, {}) (threshold {:.1}, {TILE}-pixel tiles): {}",
-            self.test.max_abs_z,
-            w.x,
-            w.y,
-            self.threshold,
+            "largest |z| = {z:.1} in tile ({x}, {y}) (threshold {threshold:.1}, {tile}-pixel tiles): {}",
             if self.consistent() {
                 "consistent with the renderer's"
             } else {
                 "DIFFERS from the renderer's (red tiles)"
             }
         )
+    }
+
+    /// The verdict's numbers, from which the page writes it in its language:
+    /// the largest |z|, its tile (x, y), the threshold and the tile size.
+    pub fn verdict_numbers(&self) -> [f64; 5] {
+        let w = self.test.worst_tile;
+        [
+            self.test.max_abs_z as f64,
+            w.x as f64,
+            w.y as f64,
+            self.threshold,
+            TILE as f64,
+        ]
     }
 }

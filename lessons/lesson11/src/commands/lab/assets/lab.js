@@ -29,7 +29,9 @@ function query(params, withPage = true) {
 }
 
 async function call(method, path, params, withPage = true) {
-  const response = await fetch(`${path}?${query(params, withPage)}`, { method, cache: 'no-store' });
+  // The lab answers in the page's language (its errors, notes and verdicts).
+  const headers = { 'Accept-Language': lang };
+  const response = await fetch(`${path}?${query(params, withPage)}`, { method, cache: 'no-store', headers });
   const type = response.headers.get('Content-Type') || '';
   const body = type.startsWith('application/json') ? await response.json() : (await response.text()).trim();
   return { status: response.status, body };
@@ -59,13 +61,16 @@ function renderParams() {
   const integrator = params.integrator;
   if (integrator === 'direct' || integrator === 'ao') delete params['max-depth'];
   if (integrator !== 'naive') { delete params.branching; delete params.roulette; }
+  // The engine runs the path tracer only; the scalar one is the default
+  // (the command shown names the engine only when it is the wavefront one).
+  if (integrator !== 'path' || params.engine === 'scalar') delete params.engine;
   return params;
 }
 
 async function start(kind, path, params, errorId) {
   const r = await call('POST', path, params);
   if (r.status !== 200) {
-    showError(errorId, typeof r.body === 'string' ? r.body : `error ${r.status}`);
+    showError(errorId, typeof r.body === 'string' ? r.body : `${tr('error', 'error')} ${r.status}`);
     return null;
   }
   showError(errorId, '');
@@ -159,8 +164,8 @@ function drawRace(job) {
     svg('line', { x1: L, y1: y, x2: R, y2: y, stroke: '#333' }, plot);
     text(L - 5, y + 4, `1e${k}`, 'end');
   }
-  text((L + R) / 2, B + 32, 'time (seconds, log scale)', 'middle');
-  const label = text(14, (T + B) / 2, 'RMSE against the reference (log scale)', 'middle');
+  text((L + R) / 2, B + 32, tr('race.x', 'time (seconds, log scale)'), 'middle');
+  const label = text(14, (T + B) / 2, tr('race.y', 'RMSE against the reference (log scale)'), 'middle');
   label.setAttribute('transform', `rotate(-90 14 ${(T + B) / 2})`);
   if (floor > 0) svg('line', { x1: L, y1: Y(floor), x2: R, y2: Y(floor), stroke: '#888', 'stroke-dasharray': '5 4', class: 'floor' }, plot);
   lines.forEach((line, i) => {
@@ -270,6 +275,17 @@ function loadPicture() {
   img.src = pictureUrl(job);
 }
 
+// The z-test's verdict in the page's language, from the lab's numbers.
+function showZVerdict() {
+  const v = state.zVerdict;
+  if (!v || !v.numbers) return;
+  const [z, x, y, threshold, tile] = v.numbers.split(',').map(Number);
+  const text = tr('y.verdict', 'Tile z-test: largest |z| = {z} in tile ({x}, {y}) (threshold {threshold}, {tile}-pixel tiles): {verdict}')
+    .replace('{z}', z.toFixed(1)).replace('{x}', x).replace('{y}', y).replace('{threshold}', threshold.toFixed(1)).replace('{tile}', tile)
+    .replace('{verdict}', v.consistent ? tr('y.consistent', 'consistent with the renderer’s') : tr('y.differs', 'DIFFERS from the renderer’s (red tiles)'));
+  $('y-verdict').textContent = text;
+}
+
 // The "Your code" tab: both pictures and the z-map between them, with its
 // verdict (in the z-map's headers).
 async function loadStudent(job) {
@@ -289,8 +305,9 @@ async function loadStudent(job) {
   }
   if (zmap) {
     const verdict = $('y-verdict');
-    verdict.textContent = `Tile z-test: ${zmap.headers.get('X-Lab-Verdict')}`;
     const consistent = zmap.headers.get('X-Lab-Consistent') === 'true';
+    state.zVerdict = { numbers: zmap.headers.get('X-Lab-Verdict-Numbers'), consistent };
+    showZVerdict();
     verdict.className = `verdict ${consistent ? 'good' : 'bad'}`;
     verdict.dataset.consistent = consistent;
     verdict.dataset.version = v;
@@ -313,15 +330,17 @@ function updateStats() {
   if (!job) return;
   const spp = job.spp >= 10 ? job.spp.toFixed(0) : job.spp.toFixed(1);
   // spp counts passes for SPPM and mutations per pixel for Metropolis.
-  let text = `<strong>${spp}</strong> of ${job.target_spp} ${job.unit || 'spp'} · ${fmt(job.samples_per_second)} ${job.samples_unit || 'samples'}/s · ${job.elapsed.toFixed(1)} s · ${job.width}×${job.height}`;
-  if (job.phase === 'building') text += ' · building';
-  if (job.done) text += job.error ? ' · failed' : job.interrupted ? ' · stopped' : ' · done';
-  if (job.nonfinite > 0) text += ` · ${job.nonfinite} NaN/negative samples dropped`;
+  const unit = tr(`u.${job.unit || 'spp'}`, job.unit || 'spp');
+  const samples = tr(`u.${job.samples_unit || 'samples'}`, job.samples_unit || 'samples');
+  let text = `<strong>${spp}</strong> ${tr('st.of', 'of')} ${job.target_spp} ${escapeHtml(unit)} · ${fmt(job.samples_per_second)} ${escapeHtml(samples)}/s · ${job.elapsed.toFixed(1)} s · ${job.width}×${job.height}`;
+  if (job.phase === 'building') text += ` · ${tr('st.building', 'building')}`;
+  if (job.done) text += ` · ${job.error ? tr('st.failed', 'failed') : job.interrupted ? tr('st.stopped', 'stopped') : tr('st.done', 'done')}`;
+  if (job.nonfinite > 0) text += ` · ${job.nonfinite} ${tr('st.nonfinite', 'NaN/negative samples dropped')}`;
   if (job.note) text += `<br><span class="note">${escapeHtml(job.note)}</span>`;
   if (job.kind === 'race') drawRace(job);
   const ids = { race: ['race-stats', null, 'race-error'], render: ['r-stats', 'r-command', 'r-error'], stereo: ['s-stats', 's-command', 's-error'], brdf: ['b-stats', null, 'b-error'], student: ['y-stats', 'y-command', 'y-error'] };
   if (job.kind === 'student' && job.nonfinite_by_eye && job.nonfinite_by_eye[0] > 0) {
-    text += `<br><span class="bad">your integrator returned ${job.nonfinite_by_eye[0]} samples that are NaN, infinite or negative (dropped from its picture)</span>`;
+    text += `<br><span class="bad">${tr('y.nonfinite', 'your integrator returned {n} samples that are NaN, infinite or negative (dropped from its picture)').replace('{n}', job.nonfinite_by_eye[0])}</span>`;
   }
   const [stats, command, error] = ids[job.kind];
   $(stats).innerHTML = text;
@@ -409,13 +428,14 @@ async function inspectPixel(x, y) {
   state.record = r.status === 200 ? r.body : null;
   if (r.status === 200) {
     const hidden = drawPaths(r.body);
-    note.textContent = `pixel (${x}, ${y}), sample ${r.body.sample}: estimate ${rgb(r.body.estimate)}` +
+    note.textContent = tr('i.note', 'pixel ({x}, {y}), sample {k}: estimate {estimate}')
+      .replace('{x}', x).replace('{y}', y).replace('{k}', r.body.sample).replace('{estimate}', rgb(r.body.estimate)) +
       (r.body.truncated ? ` (${r.body.truncated})` : '') + hidden;
     const why = WHY[r.body.integrator] && tr(`why.${r.body.integrator}`, WHY[r.body.integrator]);
     $('inspector-why').textContent = why || '';
     $('inspector-why').hidden = !why;
   } else {
-    note.textContent = `pixel (${x}, ${y}): ${r.body}`;
+    note.textContent = `${tr('t.pixel', 'pixel')} (${x}, ${y}): ${r.body}`;
   }
   note.dataset.status = r.status;
 }
@@ -447,7 +467,9 @@ function fillTable(table, rows) {
     if (row.blocked) tr.className = 'blocked';
     for (const cell of row.cells || row) {
       const td = document.createElement(r === 0 ? 'th' : 'td');
-      td.textContent = cell;
+      // A name from the scene file (a material) is shown as it is written.
+      if (cell && cell.name) td.className = 'name';
+      td.textContent = cell && cell.name ? cell.name : cell;
       tr.appendChild(td);
     }
     return tr;
@@ -495,31 +517,57 @@ function drawPaths(record) {
   for (const s of segments) {
     if (s.splat) svg('circle', { cx: s.splat[0], cy: s.splat[1], r: 5 * unit, fill: 'none', stroke: '#6ff', 'stroke-width': 2, class: 'splat' }, overlay);
   }
-  const vertexRows = [['vertex', 'path', 'kind', 'position', 'BRDF', 'pdf', 'β (throughput)', 'MIS weight', 'contribution']];
+  // BDPT: a column with every strategy's weight for the same path.
+  const everyWeight = record.segments.some((s) => s.strategy_weights) ||
+    record.paths.some((p) => p.vertices.some((v) => v.strategy_weights));
+  const weightsHeading = everyWeight ? [tr('t.weights', 'every strategy’s weight for this path (i, n − i), and their sum')] : [];
+  const weightsCell = (x) => (everyWeight ? [x.strategy_weights ? weightsText(x.strategy_weights) : '—'] : []);
+  const vertexRows = [[tr('t.vertex', 'vertex'), tr('t.path', 'path'), tr('t.kind', 'kind'), tr('t.position', 'position'), 'BRDF', 'pdf',
+    tr('t.beta', 'β (throughput)'), tr('t.mis', 'MIS weight'), ...weightsHeading, tr('t.contribution', 'contribution')]];
   record.paths.forEach((path, p) => {
     if (!shown(p)) return;
     path.vertices.forEach((v, i) => vertexRows.push([
-      ref({ path: p, vertex: i }), naive ? `${path.role}, depth ${depth[p]}` : path.role, v.kind, rgb(v.position), v.brdf || '—',
-      pdfText(v.pdf), rgb(v.throughput), v.mis_weight == null ? '—' : Number(v.mis_weight).toFixed(3), rgb(v.contribution),
+      ref({ path: p, vertex: i }), naive ? `${word('role', path.role)}, ${tr('t.depth', 'depth')} ${depth[p]}` : word('role', path.role),
+      word('kind', v.kind), rgb(v.position), v.brdf ? { name: v.brdf } : '—',
+      pdfText(v.pdf), rgb(v.throughput), v.mis_weight == null ? '—' : Number(v.mis_weight).toFixed(3), ...weightsCell(v), rgb(v.contribution),
     ]));
   });
   fillTable($('inspector-table'), vertexRows);
-  const segmentRows = [['segment', 'from → to', 'strategy (s, t)', 'visible?', 'added at', 'MIS weight', 'contribution']];
+  const segmentRows = [[tr('t.segment', 'segment'), tr('t.fromto', 'from → to'), tr('t.strategy', 'strategy (s, t)'), tr('t.visible', 'visible?'),
+    tr('t.addedat', 'added at'), tr('t.mis', 'MIS weight'), ...weightsHeading, tr('t.contribution', 'contribution')]];
   for (const s of segments) {
     segmentRows.push({
       blocked: s.occluded,
       cells: [
-        s.kind, `${ref(s.from)} → ${s.to.vertex ? ref(s.to.vertex) : `point ${rgb(s.to.point.position)}`}`,
-        s.strategy ? `(${s.strategy[0]}, ${s.strategy[1]})` : '—', s.occluded ? 'blocked' : 'visible',
-        s.splat ? `pixel (${Math.floor(s.splat[0])}, ${Math.floor(s.splat[1])})` : 'this pixel',
-        s.mis_weight == null ? '—' : Number(s.mis_weight).toFixed(3), rgb(s.contribution),
+        word('segment', s.kind), `${ref(s.from)} → ${s.to.vertex ? ref(s.to.vertex) : `${tr('t.point', 'point')} ${rgb(s.to.point.position)}`}`,
+        s.strategy ? `(${s.strategy[0]}, ${s.strategy[1]})` : '—', s.occluded ? tr('t.blocked', 'blocked') : tr('t.seen', 'visible'),
+        s.occluded ? '—' : s.splat ? `${tr('t.pixel', 'pixel')} (${Math.floor(s.splat[0])}, ${Math.floor(s.splat[1])})` : tr('t.thispixel', 'this pixel'),
+        s.mis_weight == null ? '—' : Number(s.mis_weight).toFixed(3), ...weightsCell(s), rgb(s.contribution),
       ],
     });
   }
   fillTable($('inspector-segments'), segmentRows);
   if (hiddenPaths === 0) return '';
-  return ` · ${hiddenPaths} deeper rays (${hiddenVertices} vertices) not shown: raise “tree depth shown”`;
+  return tr('t.hidden', ' · {paths} deeper rays ({vertices} vertices) not shown: raise “tree depth shown”')
+    .replace('{paths}', hiddenPaths).replace('{vertices}', hiddenVertices);
 }
+
+// Every strategy's MIS weight for one path of n vertices, as the integrator
+// computed them (entry i: strategy (i, n − i)), and their sum, which is 1:
+// "(0, 3) 0.012 + (1, 2) 0.950 + (2, 1) 0.038 = 1.000000".
+function weightsText(all) {
+  const n = all.length;
+  const sum = all.reduce((a, w) => a + Number(w), 0);
+  return `${all.map((w, i) => `(${i}, ${n - i}) ${Number(w).toFixed(3)}`).join(' + ')} = ${sum.toFixed(4)}`;
+}
+
+// The record's words (path roles, vertex kinds, segment kinds) in the page's language.
+const WORDS = {
+  role: { camera: 'camera', light: 'light', branch: 'branch' },
+  kind: { camera: 'camera', surface: 'surface', light: 'light', escaped: 'escaped' },
+  segment: { 'shadow-ray': 'shadow ray', connection: 'connection' },
+};
+function word(group, value) { return tr(`w.${group}.${value}`, (WORDS[group] || {})[value] || value); }
 
 function jobWidth() { return state.job ? state.job.width : 1; }
 
@@ -539,9 +587,11 @@ async function updateBrdf() {
 }
 
 function plotBrdf(a) {
+  state.brdf = a;
   $('b-formula').textContent = a.formula;
   const verdict = $('b-verdict');
-  verdict.textContent = `Directional albedo at θ = ${a.theta}°: ${a.albedo_at_theta.toFixed(3)}. The BRDF ${a.verdict}.`;
+  verdict.textContent = tr('b.verdict', 'Directional albedo at θ = {theta}°: {albedo}. The BRDF {verdict}.')
+    .replace('{theta}', a.theta).replace('{albedo}', a.albedo_at_theta.toFixed(3)).replace('{verdict}', a.verdict);
   verdict.className = `verdict ${a.conserves_energy ? 'good' : 'bad'}`;
   verdict.dataset.conserves = a.conserves_energy;
   // Lobe: polar, the normal up, θ measured from it (+ to the right).
@@ -566,7 +616,7 @@ function plotBrdf(a) {
     const [x, y] = polar(d, 95 * Math.min(1, w));
     svg('line', { x1: 0, y1: 0, x2: x, y2: y, stroke: '#8cf', 'stroke-width': 2 }, lobe);
   }
-  $('b-peak').textContent = peak > 0 ? `(peak f_r = ${peak.toPrecision(4)} sr⁻¹)` : a.deltas.length ? '(delta lobes: arrows show each lobe’s share)' : '';
+  $('b-peak').textContent = peak > 0 ? `(${tr('b.peak', 'peak')} f_r = ${peak.toPrecision(4)} sr⁻¹)` : a.deltas.length ? tr('b.deltas', '(delta lobes: arrows show each lobe’s share)') : '';
   // Albedo against θ_o, y up to max(1.2, the largest value).
   const plot = $('b-albedo-plot');
   plot.replaceChildren();
@@ -593,8 +643,9 @@ function showFor(integrator) {
   const uses = (cls, yes) => document.querySelectorAll(`#render-form .${cls}`).forEach((el) => { el.hidden = !yes; });
   uses('depth', integrator !== 'direct' && integrator !== 'ao');
   uses('naive', integrator === 'naive');
+  uses('engine', integrator === 'path');
   const entry = (window.catalogue.integrators || []).find((i) => i[0] === integrator);
-  $('r-integrator-help').textContent = entry ? entry[1] : '';
+  $('r-integrator-help').textContent = entry ? tr(`int.${integrator}`, entry[1]) : '';
 }
 
 function showBrdfControls() {
@@ -663,10 +714,25 @@ function showModeHelp() {
 
 function echo(id, text) { $(`${id}-out`).textContent = text; }
 
+// A scene list's tooltip: what the chosen scene is.
+function sceneTitles() {
+  for (const el of document.querySelectorAll('select')) {
+    const title = ((window.catalogue.scenes || []).find((s) => s.name === el.value) || {}).description;
+    if (title) el.title = tr(`scene.${el.value}`, title);
+  }
+}
+
 // The other language, and what the script wrote again in it.
 function switchLanguage() {
   applyLanguage(lang === 'bg' ? 'en' : 'bg', () => {
     showModeHelp();
+    for (const o of $('s-mode').options) o.textContent = tr(`m.${o.value}`, o.value);
+    sceneTitles();
+    showFor($('r-integrator').value);
+    updateStats();
+    showZVerdict();
+    if (state.tab === 'brdf') updateBrdf();
+    if (state.job && state.job.kind === 'race') drawRace(state.job);
     if (state.clicked) inspectPixel(...state.clicked);
   });
 }
@@ -676,7 +742,7 @@ async function setup() {
   $('lang').addEventListener('click', switchLanguage);
   const r = await call('GET', '/api/scenes', {}, false);
   window.catalogue = r.body;
-  const scenes = r.body.scenes.map((s) => [s.name, s.builtin ? s.name : `${s.name} (file)`]);
+  const scenes = r.body.scenes.map((s) => [s.name, s.builtin ? s.name : `${s.name} (${tr('file', 'file')})`]);
   fill($('r-scene'), scenes, 'cornell');
   fill($('s-scene'), scenes, 'stereo');
   fill($('y-scene'), scenes, 'cornell');
@@ -685,12 +751,9 @@ async function setup() {
   // SPPM and Metropolis render whole images, not the pixel samples of a stereo pair.
   const whole = r.body.whole_image || [];
   fill($('s-integrator'), integrators.filter(([name]) => !whole.includes(name)), 'path');
-  fill($('s-mode'), r.body.composites.map((c) => [c, c]), 'red-cyan');
+  fill($('s-mode'), r.body.composites.map((c) => [c, tr(`m.${c}`, c)]), 'red-cyan');
   showModeHelp();
-  for (const el of document.querySelectorAll('select, input')) {
-    const title = (r.body.scenes.find((s) => s.name === el.value) || {}).description;
-    if (el.tagName === 'SELECT' && title) el.title = title;
-  }
+  sceneTitles();
   showFor('path');
   showBrdfControls();
 
@@ -722,7 +785,7 @@ async function setup() {
     if (id === 's-exposure') echo('s-exposure', e.target.value);
     if (id === 's-focus') {
       $('s-convergence').disabled = e.target.checked;
-      echo('s-convergence', e.target.checked ? 'focus distance' : `${$('s-convergence').value} m`);
+      echo('s-convergence', e.target.checked ? tr('s.focusdistance', 'focus distance') : `${$('s-convergence').value} m`);
     }
     // The composite, desaturation and exposure only show the same pair anew.
     if (e.target.dataset.display && id !== 's-focus') { updateStats(); loadPicture(); return; }
@@ -767,6 +830,7 @@ async function setup() {
   const tab = location.hash.slice(1);
   if (tab === 'selftest') selftest();
   else if (tab === 'layout') layoutCheck();
+  else if (tab === 'bulgarian') bulgarianCheck();
   else selectTab(TABS.includes(tab) ? tab : 'render');
 }
 
@@ -935,4 +999,122 @@ async function layoutCheck() {
   pre.hidden = false;
 }
 
-setup().catch((e) => { document.body.insertAdjacentHTML('afterbegin', '<p class="error" role="alert"></p>'); document.querySelector('.error').textContent = `the lab cannot start: ${e}`; });
+// ---- the Bulgarian check (#bulgarian, opened with ?lang=bg) ----
+
+// Latin words a Bulgarian text keeps: the names the Bulgarian deck keeps in
+// English (algorithms, BRDF models, quantities), the integrators', scenes',
+// engines' and exercises' names, units, file types and symbols.
+const KEPT_IN_ENGLISH = new Set(`path tracing light bidirectional tracer monte carlo mis multiple importance
+  sampling brdf phong lambert rmse exr png spp seed toe ambient occlusion photon mapping instant radiosity
+  irradiance caching cache metropolis transport sppm mlt vpl bdpt naive direct nee brdf ao cornell door caustic
+  stereo furnace white gallery veach mitsuba box wavefront throughput pdf fresnel dubois colorcode ward nan
+  toe-in rightdir rgb
+  lesson11 render student cargo todo exercises src lab cutoff mib sin cos max min tile brdf-gallery
+  white-furnace veach-mis path-brdf path-nee irradiance-cache`.split(/\s+/).filter(Boolean));
+
+// The page's texts with an English word left (a text with Latin words
+// outside KEPT_IN_ENGLISH): every text node but code and the scene's own
+// names (materials), and the alt,
+// aria-label, placeholder and title attributes.
+function englishLeft(found) {
+  const check = (text) => {
+    const t = text.replace(/\s+/g, ' ').trim();
+    const words = t.match(/[A-Za-z][A-Za-z-]*[A-Za-z]/g) || [];
+    if (words.some((w) => w.length >= 3 && !KEPT_IN_ENGLISH.has(w.toLowerCase()))) found.add(t.slice(0, 80));
+  };
+  const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+  for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+    if (!n.parentElement.closest('code, script, style, #selftest, .name')) check(n.textContent);
+  }
+  for (const el of document.querySelectorAll('[alt], [aria-label], [placeholder], [title]')) {
+    if (el.id === 'lang') continue; // "Български / English"
+    for (const a of ['alt', 'aria-label', 'placeholder', 'title']) if (el.hasAttribute(a)) check(el.getAttribute(a));
+  }
+  return found;
+}
+
+async function bulgarianCheck() {
+  const out = { errors: [], step: 'start' };
+  const found = new Set();
+  try {
+    const form = $('render-form');
+    let shown = 0;
+    state.onImage.push((job) => { if (job.kind === 'render') shown += 1; });
+    const render = async () => {
+      shown = 0;
+      await startRender();
+      await until(() => shown > 0 && state.job && state.job.done, 60000);
+      return { command: $('r-command').textContent, error: $('r-error').hidden ? null : $('r-error').textContent, engine_shown: !$('r-engine').closest('label').hidden };
+    };
+    form.elements.scene.value = 'cornell';
+    form.elements.width.value = '32';
+    form.elements.height.value = '32';
+    form.elements.spp.value = '4';
+    // The engine control: the path tracer on the wavefront engine, then BDPT (no engine).
+    form.elements.integrator.value = 'path';
+    showFor('path');
+    $('r-engine').value = 'wavefront';
+    out.wavefront = await render();
+    englishLeft(found);
+    form.elements.integrator.value = 'bdpt';
+    showFor('bdpt');
+    out.bdpt = await render();
+    // BDPT's inspector: every strategy's weight for each contribution.
+    await inspectPixel(16, 26);
+    await until(() => $('inspector-note').dataset.status, 20000);
+    const heading = [...$('inspector-segments').rows[0].cells].findIndex((c) => c.textContent === tr('t.weights', ''));
+    out.weights = [...$('inspector-segments').rows].slice(1).map((row) => row.cells[heading] && row.cells[heading].textContent)
+      .filter((t) => t && t.includes('='));
+    englishLeft(found);
+    // The BRDF verdict, a stereo mode's help.
+    updateBrdf();
+    await until(() => $('b-verdict').dataset.conserves, 20000);
+    englishLeft(found);
+    // Errors: the lab's own limit and a value the command line refuses.
+    form.elements.spp.value = '100000';
+    await startRender();
+    out.spp_error = $('r-error').textContent;
+    englishLeft(found);
+    form.elements.spp.value = '4';
+    form.elements.seed.value = '-1';
+    await startRender();
+    out.seed_error = $('r-error').textContent;
+    englishLeft(found);
+    form.elements.seed.value = '0';
+    // A render the command line refuses (naive recursion over its ray budget).
+    form.elements.integrator.value = 'naive';
+    showFor('naive');
+    form.elements.spp.value = '16';
+    form.elements['max-depth'].value = '12';
+    await startRender();
+    out.naive_error = $('r-error').textContent;
+    englishLeft(found);
+    form.elements['max-depth'].value = '';
+    // A build's note (photon mapping's maps).
+    form.elements.integrator.value = 'photon';
+    showFor('photon');
+    form.elements.spp.value = '1';
+    out.photon = await render();
+    out.photon.stats = $('r-stats').textContent;
+    englishLeft(found);
+    // The "Your code" tab's first message (not started, or its picture).
+    $('student-form').elements.spp.value = '1';
+    $('student-form').elements.width.value = '16';
+    $('student-form').elements.height.value = '16';
+    await startStudent();
+    await until(() => state.job && state.job.done, 20000);
+    englishLeft(found);
+    await call('POST', '/api/stop', {});
+  } catch (e) {
+    out.errors.push(String(e && e.stack || e));
+  }
+  out.english = [...found].sort();
+  out.step = 'done';
+  state.closed = true;
+  if (state.kick) state.kick();
+  const pre = $('selftest');
+  pre.textContent = JSON.stringify(out);
+  pre.hidden = false;
+}
+
+setup().catch((e) => { document.body.insertAdjacentHTML('afterbegin', '<p class="error" role="alert"></p>'); document.querySelector('.error').textContent = `${tr('nostart', 'the lab cannot start')}: ${e}`; });
