@@ -6,9 +6,10 @@
 //! collects each path that leaves the file's own top-level module:
 //! `crate::x` (also in groups, `use crate::{x, y::z}`) and `super::` chains
 //! that climb out of it. Inline modules (`mod m { … }`) count as one more
-//! level for `super::`. Test code is left out — `#[cfg(test)] mod … { … }`
-//! blocks and files declared `#[cfg(test)] mod …;` — since a test may look at
-//! the whole crate (a scene test may render), as in lesson11's layering test.
+//! level for `super::`. The unit tests are not in `src/` but in `tests/unit/`
+//! (lesson11's `tests/layers.rs` keeps it so), since a test may look at the
+//! whole crate (a scene test may render); a `#[cfg(test)] mod … { … }` block
+//! would be skipped.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -221,20 +222,6 @@ fn mod_keyword(toks: &[(Token, usize)], mut i: usize) -> Option<usize> {
         }
     }
     (toks.get(i).map(|t| &t.0) == Some(&Token::Ident("mod".into()))).then_some(i)
-}
-
-/// The modules a file declares as test code (`#[cfg(test)] mod name;`).
-fn test_only_children(code: &str) -> Vec<String> {
-    let toks = tokens(code);
-    (0..toks.len())
-        .filter_map(|i| {
-            let m = mod_keyword(&toks, after_cfg_test(&toks, i)?)?;
-            match (toks.get(m + 1), toks.get(m + 2)) {
-                (Some((Token::Ident(name), _)), Some((Token::Other(';'), _))) => Some(name.clone()),
-                _ => None,
-            }
-        })
-        .collect()
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -465,24 +452,7 @@ fn every_module_uses_only_lower_layers() {
         .iter()
         .map(|(path, _)| std::fs::read_to_string(path).unwrap())
         .collect();
-    // Files that are test code: declared `#[cfg(test)] mod name;`, and
-    // everything below them.
-    let mut test_only: Vec<Vec<String>> = Vec::new();
-    for ((_, module), text) in files.iter().zip(&texts) {
-        for child in test_only_children(&strip_comments_and_strings(text)) {
-            let mut m = module.clone();
-            m.push(child);
-            test_only.push(m);
-        }
-    }
-    assert!(
-        test_only.iter().any(|m| m == &["brdf", "testing"]),
-        "the test-only files were not recognized: {test_only:?}"
-    );
     for ((path, module), text) in files.iter().zip(&texts) {
-        if test_only.iter().any(|t| module.starts_with(t)) {
-            continue;
-        }
         let shown = path.strip_prefix(root).unwrap_or(path);
         problems.extend(violations(&layers, shown, module, text));
     }
@@ -572,8 +542,4 @@ fn the_checker_finds_upward_imports_in_every_form() {
             "{module:?}: {text}"
         );
     }
-    assert_eq!(
-        test_only_children("#[cfg(test)]\nmod fuzz;\nmod load;\n#[cfg(test)] pub mod testing;"),
-        ["fuzz", "testing"]
-    );
 }
