@@ -435,11 +435,11 @@ fn vpl_sees_the_low_poly_smooth_ball_as_the_path_tracer_does() {
 /// they could not see a 10 % error. Cost: about 6 s on two loaded cores.
 #[test]
 fn biased_integrators_see_the_low_poly_smooth_ball_as_the_path_tracer_does() {
-    use raytracer::integrator::sppm::SppmSettings;
     use raytracer::integrator::{
         IrradianceCache, IrradianceCacheSettings, PhotonMapping, PhotonSettings,
     };
     use raytracer::render::render_sppm;
+    use raytracer::render::sppm::SppmSettings;
     let start = std::time::Instant::now();
     let mut scene = low_poly_ball();
     scene.set_resolution(24, 24);

@@ -1,8 +1,8 @@
 //! The pass loop of stochastic progressive photon mapping.
 //!
 //! Lecture topic: "Algorithms for Global Illumination" — SPPM, the
-//! consistent form of photon mapping (the estimator is
-//! [`crate::integrator::sppm`]). It does not fit the loop over independent
+//! consistent form of photon mapping (what one pixel and one pass compute
+//! is [`estimator`], beside this file: the algorithm's one home). It does not fit the loop over independent
 //! pixel samples of [`super::render`]: each pass needs every pixel's visible
 //! point before its photons can be gathered, and every pixel keeps state
 //! (radius, count, flux) from pass to pass. So it has a loop of its own:
@@ -41,11 +41,12 @@ use rayon::prelude::*;
 
 use super::{INTERRUPTED, RenderOptions, RenderStats, thread_limit};
 use crate::film::Image;
-use crate::integrator::sppm::{
-    PassPoint, PixelState, SppmSettings, camera_pass, gather, photon_pass,
-};
+use estimator::{PassPoint, PixelState, camera_pass, gather, photon_pass};
+
+pub mod estimator;
 use crate::math::{Color, UVec2};
 use crate::scene::Scene;
+pub use estimator::SppmSettings;
 
 /// A finished (or interrupted) SPPM render.
 #[derive(Clone, Debug)]
