@@ -39,11 +39,9 @@
 
 use std::sync::atomic::AtomicBool;
 
-use crate::geometry::Interaction;
-use crate::integrator::nee;
 use crate::integrator::photon::{Photon, PhotonTracing, trace_photons};
 use crate::integrator::photon_map::PhotonMap;
-use crate::integrator::visible_point::visible_point;
+use crate::integrator::visible_point::{GatherPoint, lit_visible_point};
 use crate::math::{Color, PI, UVec2};
 use crate::sampling::Sampler;
 use crate::scene::Scene;
@@ -119,16 +117,6 @@ pub struct PixelState {
     pub direct: Color,
 }
 
-/// One pass's visible point of a pixel.
-#[derive(Clone, Copy, Debug)]
-pub struct PassPoint {
-    pub it: Interaction,
-    /// The throughput of the delta bounces before `x`.
-    pub beta: Color,
-    /// Segments from the lens to `x`.
-    pub depth: u32,
-}
-
 impl PixelState {
     pub fn new(r0: f32) -> Self {
         PixelState {
@@ -173,23 +161,9 @@ pub fn camera_pass(
     pixel: UVec2,
     index: u64,
     pass: u32,
-) -> (Color, Option<PassPoint>) {
+) -> (Color, Option<GatherPoint>) {
     let mut sampler = Sampler::new(seed, index, pass as u64);
-    let vp = visible_point(scene, pixel, &mut sampler, settings.max_depth);
-    let mut l = vp.le;
-    let Some(it) = vp.hit else {
-        return (l, None);
-    };
-    if vp.depth >= crate::integrator::max_segments(settings.max_depth) {
-        return (l, None);
-    }
-    l += vp.beta * nee::sample_light(scene, &it, scene.brdf(&it), &mut sampler, false);
-    let point = PassPoint {
-        it,
-        beta: vp.beta,
-        depth: vp.depth,
-    };
-    (l, Some(point))
+    lit_visible_point(scene, pixel, &mut sampler, settings.max_depth)
 }
 
 /// The photons of pass `pass` that step 2 uses (two segments or more: the
@@ -238,7 +212,7 @@ pub fn gather(
     scene: &Scene,
     settings: &SppmSettings,
     map: &PhotonMap,
-    point: &PassPoint,
+    point: &GatherPoint,
     r: f32,
 ) -> (u32, Color) {
     let d = crate::integrator::max_segments(settings.max_depth);

@@ -41,7 +41,8 @@ use rayon::prelude::*;
 
 use super::{INTERRUPTED, RenderOptions, RenderStats, thread_limit};
 use crate::film::Image;
-use estimator::{PassPoint, PixelState, camera_pass, gather, photon_pass};
+use crate::integrator::visible_point::GatherPoint;
+use estimator::{PixelState, camera_pass, gather, photon_pass};
 
 pub mod estimator;
 use crate::math::{Color, UVec2};
@@ -149,7 +150,7 @@ fn passes(
         if stopped() {
             break;
         }
-        let points: Vec<(Color, Option<PassPoint>)> = (0..pixels)
+        let points: Vec<(Color, Option<GatherPoint>)> = (0..pixels)
             .into_par_iter()
             .map(|j| {
                 if stopped() {
@@ -181,7 +182,7 @@ fn passes(
         let bytes = map.bytes()
             + pixels
                 * (std::mem::size_of::<PixelState>()
-                    + std::mem::size_of::<(Color, Option<PassPoint>)>());
+                    + std::mem::size_of::<(Color, Option<GatherPoint>)>());
         peak_bytes = peak_bytes.max(bytes);
         peak_photons = peak_photons.max(map.len());
         done += 1;
