@@ -13,13 +13,13 @@
 use std::sync::atomic::AtomicBool;
 
 use raytracer::film::Image;
-use raytracer::integrator::sppm::SppmSettings;
 use raytracer::integrator::{
     InstantRadiosity, Integrator, IrradianceCache, IrradianceCacheSettings, PathTracer,
     PhotonMapping, PhotonSettings, VplSettings,
 };
 use raytracer::math::Color;
 use raytracer::metrics::{mean, tile_means, tile_variances};
+use raytracer::render::sppm::SppmSettings;
 use raytracer::render::sppm::render_sppm_with_stop;
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;

@@ -30,6 +30,7 @@ use std::sync::atomic::AtomicBool;
 
 use exercises::plug::{GatherFn, GenerateVplsFn, StudentVpl, Vpl, VplSets};
 use raytracer::film::Splat;
+use raytracer::integrator::shading_normals::importance_correction;
 use raytracer::integrator::visible_point::visible_point;
 use raytracer::integrator::{InstantRadiosity, Integrator, VplSettings, camera_ray};
 use raytracer::math::{Color, Ray, UVec2, Vec3A};
@@ -276,7 +277,11 @@ fn one(scene: &Scene, x: &Interaction, vpl: &Vpl, clamp: Option<f32>, s: Slip) -
             } else {
                 f_y
             };
-            (f_y * *power, it.frame.n.dot(it.wo))
+            // A VPL is a light-path vertex: on a smooth mesh its BRDF is
+            // the adjoint one, as in the renderer's gather (1 where the
+            // shading and geometric normals agree, as in every case here).
+            let adjoint = importance_correction(it, it.wo, -w);
+            (f_y * *power * adjoint, it.frame.n.dot(it.wo))
         }
     };
     let f_x = scene

@@ -14,11 +14,11 @@ use std::sync::atomic::AtomicBool;
 use std::time::Instant;
 
 use raytracer::film::Image;
-use raytracer::integrator::sppm::SppmSettings;
 use raytracer::integrator::{
     Bdpt, InstantRadiosity, Integrator, IrradianceCache, IrradianceCacheSettings, PathTracer,
     PhotonMapping, PhotonSettings, VplSettings,
 };
+use raytracer::render::sppm::SppmSettings;
 use raytracer::render::sppm::render_sppm_with_stop;
 use raytracer::render::{RenderOptions, render};
 use raytracer::scene::Scene;

@@ -20,11 +20,11 @@ use std::sync::atomic::AtomicBool;
 
 use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
-use raytracer::integrator::sppm::SppmSettings;
 use raytracer::integrator::{
     AmbientOcclusion, Bdpt, Direct, DirectStrategy, Integrator, LightTracer, NaiveRecursive,
     PathTracer,
 };
+use raytracer::render::sppm::SppmSettings;
 use raytracer::render::{Metropolis, RenderOptions, interrupt_flag, memory_needed};
 use raytracer::scene::{Scene, max_depth_from};
 

@@ -43,7 +43,7 @@ use super::subpath::{EscapedRay, camera_subpath, light_subpath};
 use super::vertex::{Vertex, path_vertices, visible, with_subpaths};
 use crate::film::Splat;
 use crate::math::{Color, Ray, UVec2, Vec2};
-use crate::sampling::Sampler;
+use crate::sampling::{Sampler, Stream};
 use crate::scene::Scene;
 
 /// Which contributions a [`Bdpt`] keeps (for the per-strategy images).
@@ -189,9 +189,16 @@ impl Bdpt {
     ) -> Color {
         let max_vertices = path_vertices(self.max_depth); // D + 1
         with_subpaths(|camera, light| {
+            // Each part from a stream of its own: in Metropolis light
+            // transport a small step then moves the light subpath's numbers
+            // a little even when it makes the camera subpath longer or
+            // shorter (a hashed sampler reads them in this order all the same).
+            sampler.start_stream(Stream::Camera);
             let escaped =
                 camera_subpath(scene, pixel, sampler, camera, max_vertices, self.rr_depth);
+            sampler.start_stream(Stream::Light);
             light_subpath(scene, sampler, light, max_vertices - 1, self.rr_depth);
+            sampler.start_stream(Stream::Connection);
             self.strategies(scene, light, camera, escaped, sampler, splats, rec)
         })
     }

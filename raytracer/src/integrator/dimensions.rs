@@ -47,10 +47,14 @@
 //!   continuation, roulette), then the strategies for `t = 1, 2, …` and
 //!   within each `s = 0, 1, …`: `t = 1` draws a connection to the camera,
 //!   `s = 1` (`t ≥ 2`, at a vertex that can be connected to) a light sample,
-//!   the others nothing.
+//!   the others nothing. The three parts start the camera, light and
+//!   connection [`Stream`](crate::sampling::Stream)s, which change nothing
+//!   here (a hashed sampler reads one sequence) but Metropolis's layout.
 //! - **mlt** (Metropolis light transport, [`crate::render::metropolis`]):
 //!   the pixel (2 numbers), then the layout of the integrator it runs over;
-//!   the numbers are the coordinates of the chain's state.
+//!   the numbers are the coordinates of the chain's state, number `k` of
+//!   stream `s` (camera 0, light 1, connection 2) coordinate `s + 3k`; the
+//!   pixel and an integrator without streams read the camera stream.
 //! - **photon**, **vpl**, **sppm** (one pixel's pass), **irradiance-cache**:
 //!   the visible point; there, below the maximum depth: light sample. Then
 //!   `photon` with final gathering, for each gather ray: continuation and a

@@ -126,7 +126,7 @@ use super::continuation::sample_continuation;
 use super::dimensions::{IC_DIRECTION, IC_STRATUM};
 use super::grid::Grid;
 use super::roulette::russian_roulette;
-use super::visible_point::{VisiblePoint, follow_delta_chain, visible_point};
+use super::visible_point::{GatherPoint, follow_delta_chain, lit_visible_point};
 use super::{Integrator, nee, stop};
 use crate::brdf::{Brdf, TransportMode};
 use crate::film::Splat;
@@ -722,20 +722,11 @@ impl Integrator for IrradianceCache {
         sampler: &mut Sampler,
         _splats: &mut Vec<Splat>,
     ) -> Color {
-        let VisiblePoint {
-            le,
-            hit,
-            beta,
-            depth,
-        } = visible_point(scene, pixel, sampler, self.settings.max_depth);
-        let Some(x) = hit else {
-            return le;
+        let (mut l, point) = lit_visible_point(scene, pixel, sampler, self.settings.max_depth);
+        let Some(GatherPoint { it: x, beta, depth }) = point else {
+            return l;
         };
-        if depth >= self.max_depth() {
-            return le;
-        }
         let brdf = scene.brdf(&x);
-        let mut l = le + beta * nee::sample_light(scene, &x, brdf, sampler, false);
         if diffuse_towards_viewer(brdf, &x) {
             // f_r = ρ/π whatever the directions (on the side it is seen from).
             let f = brdf.eval(Vec3A::Z, Vec3A::Z, x.uv);

@@ -74,7 +74,6 @@ mod photon_mapping;
 pub mod record;
 pub mod roulette;
 pub mod shading_normals;
-pub mod sppm;
 pub mod stop;
 pub mod subpath;
 pub mod vertex;

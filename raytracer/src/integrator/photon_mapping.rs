@@ -46,8 +46,8 @@ use std::time::{Duration, Instant};
 use super::continuation::sample_continuation;
 use super::photon::{Photon, PhotonTracing, trace_photons};
 use super::photon_map::{PhotonMap, Search, radius_for};
-use super::visible_point::{follow_delta_chain, visible_point};
-use super::{Integrator, nee, stop};
+use super::visible_point::{follow_delta_chain, lit_visible_point};
+use super::{Integrator, stop};
 use crate::brdf::TransportMode;
 use crate::film::Splat;
 use crate::math::{Color, UVec2};
@@ -236,16 +236,12 @@ impl Integrator for PhotonMapping {
     ) -> Color {
         let max_depth = self.settings.max_depth;
         let d = super::max_segments(max_depth);
-        let vp = visible_point(scene, pixel, sampler, max_depth);
-        let mut l = vp.le;
-        let Some(it) = vp.hit else {
+        let (mut l, point) = lit_visible_point(scene, pixel, sampler, max_depth);
+        let Some(vp) = point else {
             return l;
         };
-        if vp.depth >= d {
-            return l;
-        }
+        let it = vp.it;
         let brdf = scene.brdf(&it);
-        l += vp.beta * nee::sample_light(scene, &it, brdf, sampler, false);
         let fits = |t: u32| move |ph: &Photon| t + ph.segments <= d;
         l += vp.beta
             * self

@@ -16,9 +16,14 @@
 //! On the way, light seen directly or through the delta bounces is added in
 //! full (`L_e`): no light sample can find it (a BRDF sample from a delta lobe
 //! has weight 1 in the path tracer too).
+//!
+//! All four then begin alike ([`lit_visible_point`], their one prologue):
+//! below the maximum depth, the direct light at `x` comes from one light
+//! sample, as in the path tracer, and what is left (light that bounced at
+//! least once) is each algorithm's own estimate at the [`GatherPoint`].
 
 use super::continuation::sample_continuation;
-use super::{camera_ray, stop};
+use super::{camera_ray, max_segments, nee, stop};
 use crate::brdf::TransportMode;
 use crate::geometry::Interaction;
 use crate::math::{Color, Ray, UVec2};
@@ -43,6 +48,47 @@ pub struct VisiblePoint {
     pub beta: Color,
     /// The number of segments from the lens to `x` (1: seen directly).
     pub depth: u32,
+}
+
+/// A visible point below the maximum depth, where a biased integrator
+/// estimates the light that bounced at least once.
+#[derive(Clone, Copy, Debug)]
+pub struct GatherPoint {
+    /// The point `x`, with `ω_o` towards the camera.
+    pub it: Interaction,
+    /// The throughput `β` of the delta bounces before `x`.
+    pub beta: Color,
+    /// Segments from the lens to `x`.
+    pub depth: u32,
+}
+
+/// The prologue of the biased integrators: the [`visible_point`] of
+/// `pixel`, then, if it lies below the maximum depth, the direct light at
+/// `x` from one light sample ([`nee::sample_light`]). Returns the light
+/// found so far (`L_e` through the delta bounces, plus `β` times the light
+/// sample) and the point to go on from, `None` where no path may (no hit,
+/// or `x` at the maximum depth). Draws the visible point's numbers, then a
+/// light sample's.
+pub fn lit_visible_point(
+    scene: &Scene,
+    pixel: UVec2,
+    sampler: &mut Sampler,
+    max_depth: Option<u32>,
+) -> (Color, Option<GatherPoint>) {
+    let vp = visible_point(scene, pixel, sampler, max_depth);
+    let Some(it) = vp.hit else {
+        return (vp.le, None);
+    };
+    if vp.depth >= max_segments(max_depth) {
+        return (vp.le, None);
+    }
+    let direct = nee::sample_light(scene, &it, scene.brdf(&it), sampler, false);
+    let point = GatherPoint {
+        it,
+        beta: vp.beta,
+        depth: vp.depth,
+    };
+    (vp.le + vp.beta * direct, Some(point))
 }
 
 /// Follows the camera ray of `pixel` through mirrors and glass to the first

@@ -45,8 +45,8 @@ use std::time::{Duration, Instant};
 
 use super::photon::{PhotonTracing, trace_light_vertices};
 use super::shading_normals::importance_correction;
-use super::visible_point::visible_point;
-use super::{Integrator, nee, stop};
+use super::visible_point::lit_visible_point;
+use super::{Integrator, stop};
 use crate::film::Splat;
 use crate::geometry::Interaction;
 use crate::math::{Color, Ray, UVec2};
@@ -264,17 +264,10 @@ impl Integrator for InstantRadiosity {
         sampler: &mut Sampler,
         _splats: &mut Vec<Splat>,
     ) -> Color {
-        let max_depth = self.settings.max_depth;
-        let vp = visible_point(scene, pixel, sampler, max_depth);
-        let mut l = vp.le;
-        let Some(x) = vp.hit else {
+        let (l, point) = lit_visible_point(scene, pixel, sampler, self.settings.max_depth);
+        let Some(x) = point else {
             return l;
         };
-        if vp.depth >= super::max_segments(max_depth) {
-            return l;
-        }
-        let brdf = scene.brdf(&x);
-        l += vp.beta * nee::sample_light(scene, &x, brdf, sampler, false);
-        l + vp.beta * self.gather(scene, &x, vp.depth)
+        l + x.beta * self.gather(scene, &x.it, x.depth)
     }
 }

@@ -19,5 +19,5 @@ pub mod warp;
 pub use distribution::{Distribution1D, Distribution2D};
 pub use draw::Draw;
 pub use mis::{balance_heuristic, power_heuristic};
-pub use primary::PrimarySample;
+pub use primary::{PrimarySample, Stream};
 pub use rng::Sampler;

@@ -21,7 +21,7 @@
 //! well-predicted branch per number for it (measured: no change in samples
 //! per second, see the commit).
 
-use super::primary::PrimarySample;
+use super::primary::{PrimarySample, Stream};
 use crate::math::Vec2;
 
 /// Random numbers for one pixel sample (or one light path).
@@ -90,10 +90,27 @@ impl Sampler {
     }
 
     /// Jumps to a given dimension, so that a part of an integrator can use a
-    /// fixed address for its numbers (e.g. a fixed stride per bounce).
+    /// fixed address for its numbers (e.g. a fixed stride per bounce). On a
+    /// primary sample with streams: to number `dimension` of the camera
+    /// stream, every other stream back at its start.
     #[inline]
     pub fn set_dimension(&mut self, dimension: u32) {
         self.dimension = dimension;
+        if let Some(state) = &mut self.primary {
+            state.restart(dimension);
+        }
+    }
+
+    /// The next numbers belong to `stream`: on a primary sample with
+    /// streams they continue that stream (see [`Stream`]), so that a small
+    /// step moves each stream's numbers a little whatever the others used.
+    /// A hashed sampler has one sequence for all streams: the numbers go on
+    /// in drawing order, and its images do not change.
+    #[inline]
+    pub fn start_stream(&mut self, stream: Stream) {
+        if let Some(state) = &mut self.primary {
+            state.start_stream(stream);
+        }
     }
 
     /// A uniform number in `[0, 1)`.
@@ -103,7 +120,7 @@ impl Sampler {
         self.dimension += 1;
         match &mut self.primary {
             None => uniform(self.key, d),
-            Some(state) => state.coordinate(d),
+            Some(state) => state.next(d),
         }
     }
 

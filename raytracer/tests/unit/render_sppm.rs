@@ -1,6 +1,5 @@
-//! Unit tests of `render/sppm.rs`.
+//! Unit tests of `render/sppm/mod.rs`.
 
-use raytracer::integrator::sppm::SppmSettings;
 use raytracer::math::Color;
 use raytracer::render::RenderOptions;
 use raytracer::render::sppm::*;

@@ -12,12 +12,12 @@ use anyhow::{Result, bail};
 use clap::Args;
 use raytracer::integrator::photon::{Photon, PhotonKind, PhotonTracing, trace_light_vertices};
 use raytracer::integrator::roulette::MAX_SURVIVAL;
-use raytracer::integrator::sppm::SppmSettings;
 use raytracer::integrator::vpl::Vpl;
 use raytracer::integrator::{
     InstantRadiosity, Integrator, IrradianceCache, IrradianceCacheSettings, PhotonMapping,
     PhotonSettings, VplSettings,
 };
+use raytracer::render::sppm::SppmSettings;
 use raytracer::render::{RenderOptions, sppm::render_sppm};
 use raytracer::scene::Scene;
 

@@ -17,7 +17,7 @@
 use super::chain::{PathSample, evaluate};
 use crate::film::Splat;
 use crate::integrator::{Integrator, stop};
-use crate::sampling::{Distribution1D, Sampler};
+use crate::sampling::{Distribution1D, PrimarySample, Sampler};
 use crate::scene::Scene;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -54,8 +54,9 @@ impl Bootstrap {
     }
 }
 
-/// Evaluates bootstrap paths `0..paths`, path `i` on the numbers of
-/// `Sampler::new(seed, i, 0)`, in parallel in the current rayon pool, and
+/// Evaluates bootstrap paths `0..paths`, path `i` on the point
+/// `PrimarySample::new(seed, i, 0, _)` (the numbers of
+/// `Sampler::new(seed, i, 0)`, read in streams), in parallel in the current rayon pool, and
 /// adds them up in index order (the same `b̂` on any number of threads).
 /// `None` if `stop` was set before all were evaluated; `tick` is called
 /// every so many paths with their count.
@@ -82,7 +83,9 @@ pub fn bootstrap(
                         if stop_flag.load(Ordering::Relaxed) {
                             return false;
                         }
-                        let mut sampler = Sampler::new(seed, i, 0);
+                        // The very point a chain starting here begins at,
+                        // read in the same streams.
+                        let mut sampler = Sampler::primary(PrimarySample::new(seed, i, 0, 0.0));
                         if !evaluate(scene, integrator, &mut sampler, splats, path) {
                             return false;
                         }

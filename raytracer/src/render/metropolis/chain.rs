@@ -28,9 +28,9 @@ use crate::math::{Color, UVec2, luminance};
 use crate::sampling::{Draw, PrimarySample, Sampler};
 use crate::scene::Scene;
 
-/// The pixel a Metropolis sample lands in: the first two coordinates of
-/// every state, before the integrator's own draws (its `FILM` then places
-/// the sample within that pixel). Uniform pixel times uniform position is
+/// The pixel a Metropolis sample lands in: the first two numbers of every
+/// state's camera stream, before the integrator's own draws (its `FILM`
+/// then places the sample within that pixel). Uniform pixel times uniform position is
 /// uniform over the image, so the map keeps the measure.
 pub const PIXEL: Draw<2> = Draw::new("pixel of a Metropolis sample");
 /// Whether a step is large (below `p_large`) or small.
@@ -108,8 +108,8 @@ impl PathSample {
     }
 }
 
-/// Evaluates the path of `sampler`'s numbers from dimension 0: the pixel
-/// ([`PIXEL`]), then one sample of `integrator`. `splats` is scratch space.
+/// Evaluates the path of `sampler`'s numbers from the start of every
+/// stream: the pixel ([`PIXEL`]), then one sample of `integrator`. `splats` is scratch space.
 /// Returns false if the integrator abandoned the sample (a stop request).
 pub fn evaluate(
     scene: &Scene,

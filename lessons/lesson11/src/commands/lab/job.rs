@@ -29,9 +29,9 @@ use std::sync::{Arc, Condvar, Mutex, MutexGuard, OnceLock};
 use std::time::{Duration, Instant};
 
 use raytracer::film::Image;
-use raytracer::integrator::sppm::SppmSettings;
 use raytracer::integrator::{Bdpt, Integrator};
 use raytracer::render::metropolis::{MetropolisProgress, render_metropolis_watched};
+use raytracer::render::sppm::SppmSettings;
 use raytracer::render::sppm::{SppmProgress, render_sppm_watched};
 use raytracer::render::{Metropolis, Progress, RenderOptions, render_pixels_watched};
 use raytracer::scene::Scene;

@@ -1,12 +1,12 @@
-//! Stochastic progressive photon mapping (Hachisuka & Jensen 2009): the
-//! estimator of the `sppm` integrator.
+//! Stochastic progressive photon mapping (Hachisuka & Jensen 2009): what
+//! one pixel and one pass compute.
 //!
 //! Lecture topic: "Algorithms for Global Illumination" — photon mapping made
 //! *consistent*: its bias falls to zero as the passes grow, while each pass
 //! needs only a bounded number of photons in memory. Every pass `i`
 //!
 //! 1. traces one camera sample per pixel to its **visible point** `x`
-//!    (through mirrors and glass, [`super::visible_point`]) and adds the
+//!    (through mirrors and glass, [`crate::integrator::visible_point`]) and adds the
 //!    light seen there directly (emission, and a light sample at `x`);
 //! 2. traces `N_p` photon paths and, for each visible point, sums over the
 //!    photons of at least two segments within its radius `r`:
@@ -31,19 +31,17 @@
 //! counts fully), as in the paper.
 //!
 //! The pass loop itself (parallel, deterministic, interruptible, with a
-//! progress bar) is [`crate::render`]'s `render_sppm`; this file holds what
-//! one pixel and one pass compute. Random numbers: pass `i` of pixel `j`
+//! progress bar) is [`super`]'s `render_sppm`; this file holds what one
+//! pixel and one pass compute. Random numbers: pass `i` of pixel `j`
 //! draws its visible point and light sample from `Sampler::new(seed, j, i)`
 //! (the layout of a pixel sample of photon mapping without final
 //! gathering); the photons of pass `i` from their own stream `2 + i`.
 
 use std::sync::atomic::AtomicBool;
 
-use super::nee;
-use super::photon::{Photon, PhotonTracing, trace_photons};
-use super::photon_map::PhotonMap;
-use super::visible_point::visible_point;
-use crate::geometry::Interaction;
+use crate::integrator::photon::{Photon, PhotonTracing, trace_photons};
+use crate::integrator::photon_map::PhotonMap;
+use crate::integrator::visible_point::{GatherPoint, lit_visible_point};
 use crate::math::{Color, PI, UVec2};
 use crate::sampling::Sampler;
 use crate::scene::Scene;
@@ -119,16 +117,6 @@ pub struct PixelState {
     pub direct: Color,
 }
 
-/// One pass's visible point of a pixel.
-#[derive(Clone, Copy, Debug)]
-pub struct PassPoint {
-    pub it: Interaction,
-    /// The throughput of the delta bounces before `x`.
-    pub beta: Color,
-    /// Segments from the lens to `x`.
-    pub depth: u32,
-}
-
 impl PixelState {
     pub fn new(r0: f32) -> Self {
         PixelState {
@@ -173,23 +161,9 @@ pub fn camera_pass(
     pixel: UVec2,
     index: u64,
     pass: u32,
-) -> (Color, Option<PassPoint>) {
+) -> (Color, Option<GatherPoint>) {
     let mut sampler = Sampler::new(seed, index, pass as u64);
-    let vp = visible_point(scene, pixel, &mut sampler, settings.max_depth);
-    let mut l = vp.le;
-    let Some(it) = vp.hit else {
-        return (l, None);
-    };
-    if vp.depth >= super::max_segments(settings.max_depth) {
-        return (l, None);
-    }
-    l += vp.beta * nee::sample_light(scene, &it, scene.brdf(&it), &mut sampler, false);
-    let point = PassPoint {
-        it,
-        beta: vp.beta,
-        depth: vp.depth,
-    };
-    (l, Some(point))
+    lit_visible_point(scene, pixel, &mut sampler, settings.max_depth)
 }
 
 /// The photons of pass `pass` that step 2 uses (two segments or more: the
@@ -211,7 +185,7 @@ pub fn photon_pass(
             max_depth: settings.max_depth,
             rr_depth: settings.rr_depth,
             seed,
-            stream: super::dimensions::SPPM_FIRST_STREAM + pass as u64,
+            stream: crate::integrator::dimensions::SPPM_FIRST_STREAM + pass as u64,
         },
         stop,
     );
@@ -238,10 +212,10 @@ pub fn gather(
     scene: &Scene,
     settings: &SppmSettings,
     map: &PhotonMap,
-    point: &PassPoint,
+    point: &GatherPoint,
     r: f32,
 ) -> (u32, Color) {
-    let d = super::max_segments(settings.max_depth);
+    let d = crate::integrator::max_segments(settings.max_depth);
     let it = &point.it;
     let brdf = scene.brdf(it);
     let wo = it.frame.to_local(it.wo);

@@ -1,8 +1,8 @@
 //! The pass loop of stochastic progressive photon mapping.
 //!
 //! Lecture topic: "Algorithms for Global Illumination" — SPPM, the
-//! consistent form of photon mapping (the estimator is
-//! [`crate::integrator::sppm`]). It does not fit the loop over independent
+//! consistent form of photon mapping (what one pixel and one pass compute
+//! is [`estimator`], beside this file: the algorithm's one home). It does not fit the loop over independent
 //! pixel samples of [`super::render`]: each pass needs every pixel's visible
 //! point before its photons can be gathered, and every pixel keeps state
 //! (radius, count, flux) from pass to pass. So it has a loop of its own:
@@ -41,11 +41,13 @@ use rayon::prelude::*;
 
 use super::{INTERRUPTED, RenderOptions, RenderStats, thread_limit};
 use crate::film::Image;
-use crate::integrator::sppm::{
-    PassPoint, PixelState, SppmSettings, camera_pass, gather, photon_pass,
-};
+use crate::integrator::visible_point::GatherPoint;
+use estimator::{PixelState, camera_pass, gather, photon_pass};
+
+pub mod estimator;
 use crate::math::{Color, UVec2};
 use crate::scene::Scene;
+pub use estimator::SppmSettings;
 
 /// A finished (or interrupted) SPPM render.
 #[derive(Clone, Debug)]
@@ -148,7 +150,7 @@ fn passes(
         if stopped() {
             break;
         }
-        let points: Vec<(Color, Option<PassPoint>)> = (0..pixels)
+        let points: Vec<(Color, Option<GatherPoint>)> = (0..pixels)
             .into_par_iter()
             .map(|j| {
                 if stopped() {
@@ -180,7 +182,7 @@ fn passes(
         let bytes = map.bytes()
             + pixels
                 * (std::mem::size_of::<PixelState>()
-                    + std::mem::size_of::<(Color, Option<PassPoint>)>());
+                    + std::mem::size_of::<(Color, Option<GatherPoint>)>());
         peak_bytes = peak_bytes.max(bytes);
         peak_photons = peak_photons.max(map.len());
         done += 1;

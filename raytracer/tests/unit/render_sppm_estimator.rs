@@ -1,7 +1,7 @@
-//! Unit tests of `integrator/sppm.rs`.
+//! Unit tests of `render/sppm/estimator.rs`.
 
-use raytracer::integrator::sppm::*;
 use raytracer::math::Color;
+use raytracer::render::sppm::estimator::*;
 
 /// The radius shrinks by √((N + αM)/(N + M)) and τ keeps its density:
 /// τ/r² before adding φ is unchanged by the reduction.
