@@ -7,7 +7,7 @@ use std::path::Path;
 use anyhow::{Context, Result};
 
 use super::palette::curve_color;
-use super::series::{Series, escape};
+use super::series::{Series, label_text};
 
 /// Scale of an axis.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -178,7 +178,7 @@ impl Chart {
             s,
             "<text x=\"{}\" y=\"24\" text-anchor=\"middle\" font-size=\"{TITLE_FONT}\">{}</text>",
             W / 2.0,
-            escape(&self.title)
+            label_text(&self.title)
         );
         for t in ticks(x0, x1, self.x_scale) {
             let x = px(t);
@@ -213,13 +213,13 @@ impl Chart {
             "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
             (LEFT + W - RIGHT) / 2.0,
             H - 14.0,
-            escape(&self.x_label)
+            label_text(&self.x_label)
         );
         let _ = writeln!(
             s,
             "<text transform=\"translate(16 {}) rotate(-90)\" text-anchor=\"middle\">{}</text>",
             (TOP + H - BOTTOM) / 2.0,
-            escape(&self.y_label)
+            label_text(&self.y_label)
         );
         for (i, series) in self.series.iter().enumerate() {
             let color = curve_color(&series.label, i);
@@ -234,12 +234,20 @@ impl Chart {
                     )
                 })
                 .collect();
+            // A flat guide (two points at one height: a noise floor, a
+            // bias floor) is dashed and has no dots: it is no measurement.
+            let guide = series.points.len() == 2 && series.points[0].1 == series.points[1].1;
+            let dash = if guide {
+                " stroke-dasharray=\"7 5\""
+            } else {
+                ""
+            };
             let _ = writeln!(
                 s,
-                "<polyline fill=\"none\" stroke=\"{color}\" stroke-width=\"2\" points=\"{}\"/>",
+                "<polyline fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"{dash} points=\"{}\"/>",
                 path.join(" ")
             );
-            if series.points.len() <= 12 {
+            if series.points.len() <= 12 && !guide {
                 for p in &path {
                     let (x, y) = p.split_once(',').unwrap_or(("0", "0"));
                     let _ = writeln!(
@@ -253,11 +261,11 @@ impl Chart {
             let ly = H + 14.0 + 22.0 * (i / columns) as f64;
             let _ = writeln!(
                 s,
-                "<line x1=\"{lx}\" y1=\"{ly}\" x2=\"{}\" y2=\"{ly}\" stroke=\"{color}\" stroke-width=\"3\"/><text class=\"legend\" x=\"{}\" y=\"{}\">{}</text>",
+                "<line x1=\"{lx}\" y1=\"{ly}\" x2=\"{}\" y2=\"{ly}\" stroke=\"{color}\" stroke-width=\"3\"{dash}/><text class=\"legend\" x=\"{}\" y=\"{}\">{}</text>",
                 lx + 20.0,
                 lx + 26.0,
                 ly + 5.0,
-                escape(&series.label)
+                label_text(&series.label)
             );
         }
         s.push_str("</svg>\n");

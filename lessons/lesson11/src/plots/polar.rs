@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 
 use super::chart::{FONT, TITLE_FONT};
 use super::palette::curve_color;
-use super::series::{Series, escape};
+use super::series::{Series, label_text};
 
 /// A polar plot of BRDF lobes in the plane of incidence: each series gives
 /// `(θ, r)` pairs, θ measured from the normal (positive towards the mirror
@@ -25,7 +25,7 @@ pub fn polar_svg(title: &str, series: &[Series], incoming_deg: f64, incoming: &s
     let _ = writeln!(
         s,
         "<text x=\"280\" y=\"22\" text-anchor=\"middle\" font-size=\"{TITLE_FONT}\">{}</text>",
-        escape(title)
+        label_text(title)
     );
     for k in 1..=4 {
         let r = radius * k as f64 / 4.0;
@@ -50,7 +50,7 @@ pub fn polar_svg(title: &str, series: &[Series], incoming_deg: f64, incoming: &s
         cy - radius * a.cos(),
         cx - radius * a.sin() - 20.0,
         cy - radius * a.cos() - 6.0,
-        escape(incoming)
+        label_text(incoming)
     );
     for (i, series) in series.iter().enumerate() {
         let color = curve_color(&series.label, i);
@@ -72,7 +72,7 @@ pub fn polar_svg(title: &str, series: &[Series], incoming_deg: f64, incoming: &s
             s,
             "<line x1=\"384\" y1=\"{ly}\" x2=\"402\" y2=\"{ly}\" stroke=\"{color}\" stroke-width=\"3\"/><text class=\"legend\" x=\"408\" y=\"{}\">{}</text>",
             ly + 4.0,
-            escape(&series.label)
+            label_text(&series.label)
         );
     }
     s.push_str("</svg>\n");

@@ -27,7 +27,9 @@ fn each_tile_shows_its_largest_z_with_its_sign() {
     assert_eq!(img.get(3, 1), diverging(1.0));
     assert!(img.height > 2, "a colour bar below");
     // The bar's middle is white-grey, its ends the extremes.
-    let last = img.height - 1;
+    // The bar's last row: under the map (2), the gap (2) and the bar (6);
+    // the bar's numbers are drawn under it.
+    let last = 2 + 2 + 6 - 1;
     assert_eq!(img.get(0, last), diverging(-1.0));
     assert_eq!(img.get(3, last), diverging(1.0));
 }
