@@ -18,7 +18,7 @@ use raytracer::scene::Scene;
 use crate::algorithms::{Algorithm, Knobs, Prepared, Run};
 use crate::bias::{BiasVariance, split};
 use crate::page::{Figure, Section, Table, seconds_number, seconds_text};
-use crate::plots::{Bars, Chart, Scale, Series, round_scale, signed_map_svg};
+use crate::plots::{Bars, Chart, Part, Scale, Series, round_scale, signed_map_svg};
 use crate::reference::{Reference, independent};
 use crate::render_files::write_image;
 use crate::tour::{Chapter, ChapterOutput, Quality, Tour};
@@ -34,8 +34,14 @@ pub struct Effort {
     /// The Cornell box's size (the caustic scene's is its reference's,
     /// 128 × 96, or half that at tiny).
     size: Option<u32>,
-    /// Seconds per algorithm for the equal-time pictures.
+    /// Seconds per algorithm for the Cornell box's equal-time pictures and
+    /// its error-against-time curves: long enough that the build-once
+    /// methods render several samples per pixel on top of their build, so
+    /// that their pictures show what the lecture says of them (smooth, but
+    /// wrong), and their curves have several points.
     budget: f64,
+    /// Seconds per algorithm on the caustic scene.
+    caustic_budget: f64,
     /// Independent seeds for the bias–variance split, each run at
     /// `budget / seed_share` seconds.
     pub seeds: u64,
@@ -62,6 +68,7 @@ pub fn effort(quality: Quality) -> Effort {
         Quality::Tiny => Effort {
             size: None,
             budget: 0.02,
+            caustic_budget: 0.02,
             seeds: 3,
             seed_share: 2.0,
             blur_photons: 5_000,
@@ -70,16 +77,22 @@ pub fn effort(quality: Quality) -> Effort {
         },
         Quality::Quick => Effort {
             size: Some(128),
-            budget: 0.2,
+            budget: 0.5,
+            caustic_budget: 0.2,
             seeds: 16,
-            seed_share: 6.0,
-            blur_photons: 100_000,
+            // Each seed's run 1/30 s, as before the budget grew from 0.2 s.
+            seed_share: 15.0,
+            // 50 000 at 8 spp, not 100 000 at 16: the Cornell box's blur
+            // picture was a fifth of the chapter's time (7.3 of 33.8 s
+            // under load), and pays for the longer equal-time budget.
+            blur_photons: 50_000,
             caustic_photons: 50_000,
             knobs: knobs(1_500, 5_000, 32),
         },
         Quality::Full => Effort {
             size: Some(256),
             budget: 2.0,
+            caustic_budget: 2.0,
             seeds: 16,
             seed_share: 4.0,
             blur_photons: 1_000_000,
@@ -106,32 +119,70 @@ fn render(tour: &Tour) -> Result<Section> {
     let k = e.knobs;
     let mut c = tour.chapter(
         "09-biased",
-        "9 · Unbiased and biased algorithms",
-        &format!(
-            "The lecture splits the GI algorithms in two. Unbiased ones (path tracing, light tracing, \
-             bidirectional, Metropolis): their error is only noise, and it falls as 1/√t. Biased ones \
-             (photon mapping, irradiance caching, instant radiosity): they can give a picture without \
-             noise whose error does not go away — smooth but wrong, and sooner. Here each algorithm gets \
-             the same time (about {} each; every time below includes building the photon maps, virtual \
-             point lights or cache records) on the Cornell box, measured against Mitsuba 3's image, and on \
-             the caustic scene, measured against a stored bidirectional render with thousands of samples. \
-             Photon mapping: {} light paths ({} on the caustic scene, whose caustic is a small \
-             spot), the {PHOTON_K} nearest photons under an Epanechnikov kernel (a wide disk: \
-             smooth, and visibly biased; {CAUSTIC_PHOTON_K} on the caustic scene). SPPM: \
-             {} photon paths per pass, radii shrinking with α = 2/3 (consistent: its bias falls with \
-             the passes). Instant radiosity: the VPLs of {} light paths, the geometry term clamped at \
-             {VPL_CLAMP}. Irradiance caching: a = {}, {} rays per record. The error of each algorithm is \
-             split into bias² and variance over {} runs with independent seeds ({} each): the mean of \
-             the runs minus the reference is the bias itself, shown as a picture.",
-            seconds_text(e.budget),
-            k.photons,
-            e.caustic_photons,
-            k.sppm_photons,
-            k.vpl_paths,
-            k.ic_error,
-            k.ic_rays,
-            e.seeds,
-            seconds_text(e.budget / e.seed_share),
+        lang::pick(
+            "9 · Unbiased and biased algorithms",
+            "9 · Неотместени и отместени алгоритми",
+        ),
+        &lang::pick(
+            format!(
+                "The lecture splits the GI algorithms in two. Unbiased ones (path tracing, light \
+                 tracing, bidirectional, Metropolis): their error is only noise, and it falls as \
+                 1/√t. Biased ones (photon mapping, irradiance caching, instant radiosity): they can \
+                 give a picture without noise whose error does not go away — smooth but wrong, and \
+                 sooner. Here each algorithm gets the same time on the Cornell box (about {} each; \
+                 every time below includes building the photon maps, virtual point lights or cache \
+                 records), measured against Mitsuba 3's image, and on the caustic scene (about {} \
+                 each), measured against a stored bidirectional render with thousands of samples. \
+                 Photon mapping: {} light paths ({} on the caustic scene, whose caustic is a small \
+                 spot), the {PHOTON_K} nearest photons under an Epanechnikov kernel (a wide disk: \
+                 smooth, and visibly biased; {CAUSTIC_PHOTON_K} on the caustic scene). SPPM: {} \
+                 photon paths per pass, radii shrinking with α = 2/3 (consistent: its bias falls \
+                 with the passes). Instant radiosity: the VPLs of {} light paths, the geometry term \
+                 clamped at {VPL_CLAMP}. Irradiance caching: a = {}, {} rays per record. The error \
+                 of each algorithm is split into bias² and variance over {} runs with independent \
+                 seeds ({} each): the mean of the runs minus the reference is the bias itself, \
+                 shown as a picture.",
+                seconds_text(e.budget),
+                seconds_text(e.caustic_budget),
+                k.photons,
+                e.caustic_photons,
+                k.sppm_photons,
+                k.vpl_paths,
+                k.ic_error,
+                k.ic_rays,
+                e.seeds,
+                seconds_text(e.budget / e.seed_share),
+            ),
+            format!(
+                "Лекцията дели алгоритмите за глобално осветление на две. Неотместените (path \
+                 tracing, light tracing, bidirectional, Metropolis): грешката им е само шум и пада \
+                 като 1/√t. Отместените (photon mapping, irradiance caching, instant radiosity): \
+                 могат да дадат картинка без шум, чиято грешка не изчезва – гладка, но грешна, и \
+                 по-рано. Тук всеки алгоритъм получава едно и също време в Cornell box (около {} \
+                 всеки; всяко време по-долу включва строежа на фотонните карти, виртуалните \
+                 точкови светлини или записите на кеша), сравнен с картината на Mitsuba 3, и в \
+                 сцената с каустиката (около {} всеки), сравнен със запазено bidirectional \
+                 рендериране с хиляди извадки. Photon mapping: {} светлинни пътя ({} в сцената с \
+                 каустиката, чиято каустика е малко петно), {PHOTON_K}-те най-близки фотона с \
+                 ядрото на Епанечников (широк диск: гладко и видимо отместено; \
+                 {CAUSTIC_PHOTON_K} в сцената с каустиката). SPPM: {} фотонни пътя на проход, \
+                 радиусите намаляват с α = 2/3 (състоятелен: отместването му намалява с \
+                 проходите). Instant radiosity: VPL на {} светлинни пътя, геометричният член \
+                 ограничен до {VPL_CLAMP}. Irradiance caching: a = {}, {} лъча на запис. Грешката \
+                 на всеки алгоритъм е разделена на отместване² и дисперсия по {} рендерирания с \
+                 независими seed-ове (по {} всяко): средното им минус еталона е самото \
+                 отместване, показано като картина.",
+                seconds_text(e.budget),
+                seconds_text(e.caustic_budget),
+                k.photons,
+                e.caustic_photons,
+                k.sppm_photons,
+                k.vpl_paths,
+                k.ic_error,
+                k.ic_rays,
+                e.seeds,
+                seconds_text(e.budget / e.seed_share),
+            ),
         ),
     )?;
     let mut table = Table::new(
@@ -186,7 +237,6 @@ fn render(tour: &Tour) -> Result<Section> {
         .iter()
         .fold((f64::MAX, 0.0f64), |(b, w), m| (b.min(m.rmse), w.max(m.rmse)));
     let target = (best * worst).sqrt();
-    let mut series = Vec::new();
     for m in &measured {
         let reached = first_time_below(&m.curve, target);
         let unbiased = m.algorithm.unbiased();
@@ -201,12 +251,31 @@ fn render(tour: &Tour) -> Result<Section> {
         c.section.figures.push(Figure::new(
             &tour.out,
             &picture,
-            &format!(
-                "Cornell box, {} ({}), equal time: RMSE {:.4} against {}, off the lamp.",
-                m.algorithm.label(),
-                if unbiased { "unbiased" } else { "biased" },
-                m.rmse,
-                reference.name
+            &lang::pick(
+                format!(
+                    "Cornell box, {} ({}), equal time: {} spp in {} ({}×{}, max depth {max_depth}), \
+                     RMSE {:.4} against {}, off the lamp.",
+                    m.algorithm.label(),
+                    if unbiased { "unbiased" } else { "biased" },
+                    m.run.spp,
+                    seconds_text(m.run.seconds),
+                    scene.camera.width,
+                    scene.camera.height,
+                    m.rmse,
+                    reference.name
+                ),
+                format!(
+                    "Cornell box, {} ({}), при равно време: {} spp за {} ({}×{}, максимална \
+                     дълбочина {max_depth}), RMSE {:.4} спрямо {}, без лампата.",
+                    m.algorithm.label(),
+                    if unbiased { "неотместен" } else { "отместен" },
+                    m.run.spp,
+                    seconds_text(m.run.seconds),
+                    scene.camera.width,
+                    scene.camera.height,
+                    m.rmse,
+                    reference.name
+                ),
             ),
         ));
         table.rows.push(vec![
@@ -222,88 +291,65 @@ fn render(tour: &Tour) -> Result<Section> {
                 seconds_number,
             ),
         ]);
-        series.push(Series {
-            label: m.algorithm.label().into(),
-            points: m.curve.clone(),
-        });
     }
-    let times = measured.iter().flat_map(|m| m.curve.iter().map(|p| p.0));
-    let (t0, t1) = times.fold((f64::MAX, 0.0f64), |(a, b), t| (a.min(t), b.max(t)));
-    series.push(Series {
-        label: "target".into(),
-        points: vec![(t0, target), (t1, target)],
-    });
-    let chart = Chart {
-        title: "Cornell box: error against time".into(),
-        x_label: "seconds (build included)".into(),
-        y_label: "RMSE".into(),
-        x_scale: Scale::Log,
-        y_scale: Scale::Log,
-        series,
-    };
-    let svg = c.dir.join(format!("{}-rmse-time.svg", scene.name));
-    chart.write(&svg)?;
     let flat: Vec<&str> = measured
         .iter()
         .filter(|m| m.build_once() && flattens(&m.curve))
         .map(|m| m.algorithm.label())
         .collect();
+    // The charts in each language of the decks; the page shows its own.
+    for language in lang::Lang::ALL {
+        lang::with(language, || -> Result<()> {
+            let code = language.code();
+            rmse_time_chart(&measured).write(&c.dir.join(format!("{}-rmse-time-{code}.svg", scene.name)))?;
+            bias_variance_bars(&measured, e.seeds)
+                .write(&c.dir.join(format!("{}-bias-variance-{code}.svg", scene.name)))
+        })?;
+    }
+    let code = lang::current().code();
+    let svg = c.dir.join(format!("{}-rmse-time-{code}.svg", scene.name));
+    let floors: Vec<String> = measured
+        .iter()
+        .filter(|m| m.build_once() && m.split.resolved())
+        .map(|m| format!("{} {:.4}", m.algorithm.label(), m.split.bias2.sqrt()))
+        .collect();
     c.section.figures.push(Figure::plot(
         &tour.out,
         &svg,
-        &format!(
-            "RMSE against time, log–log, against {} (off the lamp), each point a run of its own: \
-             path tracing and bidirectional fall as t^−1/2, all the way to zero; photon mapping, \
-             clamped instant radiosity and irradiance caching build once, then render more samples \
-             per pixel that all read what was built, so their error falls towards the floor that \
-             build sets (its bias and its own noise, the table's bias² and variance) and no \
-             further. {} SPPM, consistent, \
-             falls further in the limit (its radii shrink with every pass), more slowly. The flat line is a target RMSE, {target:.4} \
-             (halfway, log, between the best and the worst at equal time); the table gives the \
-             time each algorithm first reaches it.",
-            reference.name,
-            if flat.is_empty() {
-                format!(
-                    "Within {} none shows that floor yet: none has a last doubling of work that \
-                     lowered its error by less than a fifth, so the render's noise still dominates \
-                     (more time, or a faster machine, shows it).",
-                    seconds_text(e.budget)
-                )
-            } else {
-                format!(
-                    "Within {}, {} flattened: the last doubling of work lowered the error by less \
-                     than a fifth.",
-                    seconds_text(e.budget),
-                    flat.join(", ")
-                )
-            }
+        &lang::pick(
+            format!(
+                "RMSE against time, log–log, against {} (off the lamp), 128×128 pixels, max depth                  {max_depth}, each point a run of its own with four times the work of the one before:                  path tracing and bidirectional fall as t^−1/2, all the way to zero; photon mapping,                  clamped instant radiosity and irradiance caching build once, then render more                  samples per pixel that all read what was built, so their error falls towards the                  floor that build sets and no further. The dashed lines are that floor's part no                  build removes, √bias² from {} seeds ({}); a single build's own noise adds to it. {}                  SPPM, consistent, falls further in the limit (its radii shrink with every pass),                  more slowly.",
+                reference.name,
+                e.seeds,
+                floors.join(", "),
+                flat_text(&flat, e.budget),
+            ),
+            format!(
+                "RMSE спрямо времето, log–log, спрямо {} (без лампата), 128×128 пиксела, максимална                  дълбочина {max_depth}; всяка точка е отделно рендериране с двойно повече работа от                  предишното: path tracing и bidirectional падат като t^−1/2, чак до нула; photon                  mapping, instant radiosity с ограничаване и irradiance caching строят веднъж, после                  рендерират още извадки на пиксел, които четат построеното, затова грешката им пада                  към дъното, което строежът определя, и не по-надолу. Прекъснатите линии са частта                  от това дъно, която никой строеж не премахва, √(отместване²) от {} seed-а ({});                  шумът на един строеж се добавя към нея. {} SPPM е състоятелен и в границата пада                  по-надолу (радиусите му намаляват с всеки проход), но по-бавно.",
+                reference.name,
+                e.seeds,
+                floors.join(", "),
+                flat_text(&flat, e.budget),
+            ),
         ),
     ));
-    let bars = Bars {
-        title: format!("Cornell box: bias² and variance at equal time ({} seeds)", e.seeds),
-        y_label: "mean squared error".into(),
-        parts: vec!["bias²".into(), "variance".into()],
-        bars: measured
-            .iter()
-            .map(|m| {
-                let b = m.split.bias2.max(0.0);
-                (m.algorithm.label().to_string(), vec![b, m.split.variance])
-            })
-            .collect(),
-    };
-    let svg = c.dir.join(format!("{}-bias-variance.svg", scene.name));
-    bars.write(&svg)?;
+    let svg = c.dir.join(format!("{}-bias-variance-{code}.svg", scene.name));
     c.section.figures.push(Figure::plot(
         &tour.out,
         &svg,
-        &format!(
-            "Bias² and variance per algorithm at equal time ({} each), from {} runs with \
-             independent seeds: variance is their spread per pixel, bias² the squared error of their \
-             mean image against {}, less the part the spread and the reference's own noise (floor \
-             {floor:.5}) explain; the table gives each bias² with its standard error.",
-            seconds_text(e.budget / e.seed_share),
-            e.seeds,
-            reference.name
+        &lang::pick(
+            format!(
+                "Bias² and variance per algorithm (log scale) at {} each, from {} runs with                  independent seeds: variance is their spread per pixel, bias² the squared error of                  their mean image against {}, less the part the spread and the reference's own                  noise (floor {floor:.5}) explain. An outline is a bias² that does not stand out                  of its noise, drawn up to its bound (b̂² + 2 SE); the table gives each bias² with                  its standard error.",
+                seconds_text(e.budget / e.seed_share),
+                e.seeds,
+                reference.name
+            ),
+            format!(
+                "Отместване² и дисперсия за всеки алгоритъм (логаритмична скала) при {} на                  рендериране, от {} рендерирания с независими seed-ове: дисперсията е разсейването                  им във всеки пиксел, отместването² – квадратът на грешката на средната им картинка                  спрямо {} без частта, която разсейването и шумът на самия еталон (дъно {floor:.5})                  обясняват. Контурът е отместване², което не се откроява от шума си, начертано до                  горната му граница (b̂² + 2 SE); таблицата дава всяко отместване² със                  стандартната му грешка.",
+                seconds_text(e.budget / e.seed_share),
+                e.seeds,
+                reference.name
+            ),
         ),
     ));
     bias_pictures(tour, &mut c, &scene.name, &measured, &reference, e.seeds)?;
@@ -316,8 +362,12 @@ fn render(tour: &Tour) -> Result<Section> {
         &reference,
         e.blur_photons,
         0.15,
-        "besides the photon map's noise (blotches), it sits along the edges and in the corners, \
-         where the disk reaches onto the neighbouring wall and averages its light in",
+        lang::pick(
+            "besides the photon map's noise (blotches), it sits along the edges and in the \
+             corners, where the disk reaches onto the neighbouring wall and averages its light in",
+            "освен шума на фотонната карта (петната), то е по ръбовете и в ъглите, където дискът \
+             стига до съседната стена и осреднява и нейната светлина",
+        ),
     )?;
     let vpl = &measured[4];
     let unclamped = Knobs { clamp: 0.0, ..k };
@@ -325,6 +375,32 @@ fn render(tour: &Tour) -> Result<Section> {
         .prepare(&scene, &unclamped, max_depth, base.seed)
         .map_err(|e| anyhow!(e))?;
     let full = prepared.run(&scene, &base, vpl.run.spp);
+    let picture = write_image(
+        &c.dir,
+        &format!("{}-vpl-unclamped", scene.name),
+        &full.image,
+        full.spp,
+        0.0,
+        Some(full.seconds),
+    )?;
+    c.section.figures.push(Figure::new(
+        &tour.out,
+        &picture,
+        &lang::pick(
+            format!(
+                "Instant radiosity without clamping: the same VPLs and {} spp as the clamped \
+                 picture of the equal-time comparison; each bright blob is a VPL close to the \
+                 surface it lights, where G grows as 1/r².",
+                full.spp
+            ),
+            format!(
+                "Instant radiosity без ограничаване: същите VPL и {} spp като ограничената картина \
+                 от сравнението при равно време; всяко ярко петно е VPL близо до повърхността, \
+                 която осветява, където G расте като 1/r².",
+                full.spp
+            ),
+        ),
+    ));
     let (lost, total) = (mean(&full.image) - mean(&vpl.run.image), mean(&full.image));
     let removed: Vec<f32> = full
         .image
@@ -339,12 +415,21 @@ fn render(tour: &Tour) -> Result<Section> {
         &format!("{}-vpl-clamping", scene.name),
         &removed,
         (scene.camera.width, scene.camera.height),
-        &format!(
-            "What clamping G at {VPL_CLAMP} removes: unclamped minus clamped instant radiosity, the \
-             same VPLs and pixel samples, in luminance. The light lost sits in the corners and \
-             along the edges, where a VPL is close to the point it lights; the clamped image is \
-             {:.1}% darker overall.",
-            100.0 * luminance(lost) / luminance(total).max(1e-9)
+        &lang::pick(
+            format!(
+                "What clamping G at {VPL_CLAMP} removes: unclamped minus clamped instant radiosity, \
+                 the same VPLs and pixel samples, in luminance. Each blob is one VPL close to the \
+                 surface it lights (most lie near where two surfaces meet); the clamped image is \
+                 {:.1}% darker overall.",
+                100.0 * luminance(lost) / luminance(total).max(1e-9)
+            ),
+            format!(
+                "Какво премахва ограничаването на G при {VPL_CLAMP}: instant radiosity без минус с \
+                 ограничаване, при същите VPL и извадки, в яркост. Всяко петно е една VPL близо до \
+                 повърхността, която осветява (повечето са близо до мястото, където две повърхности \
+                 се срещат); ограничената картина е с {:.1}% по-тъмна общо.",
+                100.0 * luminance(lost) / luminance(total).max(1e-9)
+            ),
         ),
     )?;
     irradiance_records(tour, &mut c, (&scene, &base, max_depth), &k, &reference, &counted)?;
@@ -377,7 +462,7 @@ fn render(tour: &Tour) -> Result<Section> {
         let prepared = algorithm
             .prepare(&scene, &caustic_knobs, max_depth, base.seed)
             .map_err(|e| anyhow!(e))?;
-        let (run, _) = equal_time(&prepared, &scene, &base, e.budget, |image| {
+        let (run, _) = equal_time(&prepared, &scene, &base, e.caustic_budget, |image| {
             masked_rmse(image, &reference.mean, &everywhere)
         });
         let error = masked_rmse(&run.image, &reference.mean, &everywhere);
@@ -398,10 +483,31 @@ fn render(tour: &Tour) -> Result<Section> {
         c.section.figures.push(Figure::new(
             &tour.out,
             &picture,
-            &format!(
-                "Caustic scene, {}, equal time: RMSE {error:.4} against {}.",
-                algorithm.label(),
-                reference.name
+            &lang::pick(
+                format!(
+                    "Caustic scene, {}, {} spp in {} ({}×{}, max depth {max_depth}): RMSE \
+                     {error:.4} against {}. At few samples per pixel the glass ball shows dark \
+                     dots: a sample that reflects there (Fresnel, most often at the rim) sees the \
+                     black sky above the open box.",
+                    algorithm.label(),
+                    run.spp,
+                    seconds_text(run.seconds),
+                    scene.camera.width,
+                    scene.camera.height,
+                    reference.name
+                ),
+                format!(
+                    "Сцената с каустиката, {}, {} spp за {} ({}×{}, максимална дълбочина \
+                     {max_depth}): RMSE {error:.4} спрямо {}. При малко извадки на пиксел \
+                     стъклената топка има тъмни точки: извадка, която там се отразява (Френел, \
+                     най-често по ръба), вижда черното небе над отворената кутия.",
+                    algorithm.label(),
+                    run.spp,
+                    seconds_text(run.seconds),
+                    scene.camera.width,
+                    scene.camera.height,
+                    reference.name
+                ),
             ),
         ));
     }
@@ -412,14 +518,30 @@ fn render(tour: &Tour) -> Result<Section> {
         &reference,
         4 * e.blur_photons,
         0.15,
-        "the error is largest at the caustic, where the light changes fastest; elsewhere the \
-         blotches are the photon map's own noise",
+        lang::pick(
+            "the error is largest at the caustic, where the light changes fastest; elsewhere the \
+             blotches are the photon map's own noise",
+            "грешката е най-голяма при каустиката, където светлината се мени най-бързо; другаде \
+             петната са собственият шум на фотонната карта",
+        ),
     )?;
-    table.caption = format!(
-        "{}; errors over the pixels off the lamp and its edge (there the error is the \
-         anti-aliasing noise of an edge 18.6 times brighter than white, the same for all); bias² ± its standard error (jackknife over the \
-         seeds), or \"< bound\" where it does not stand out of its noise; target RMSE {target:.4}.",
-        table.caption
+    table.caption = lang::pick(
+        format!(
+            "{}; errors over the pixels off the lamp and its edge (there the error is the \
+             anti-aliasing noise of an edge 18.6 times brighter than white, the same for all); \
+             bias² ± its standard error (jackknife over the seeds), or \"< bound\" where it does \
+             not stand out of its noise; the target RMSE, {target:.4}, lies halfway (log) between \
+             the best and the worst error at equal time.",
+            table.caption
+        ),
+        format!(
+            "Равно време в Cornell box: грешката спрямо картината на Mitsuba 3, разделена на \
+             отместване² и дисперсия; грешките са по пикселите без лампата и ръба ѝ (там грешката \
+             е шумът от изглаждането на ръб, 18,6 пъти по-ярък от бялото, еднакъв за всички); \
+             отместване² ± стандартната му грешка (jackknife по seed-овете) или \"< граница\", \
+             когато не се откроява от шума; целевата RMSE, {target:.4}, е по средата (в \
+             логаритмичен мащаб) между най-добрата и най-лошата грешка при равно време."
+        ),
     );
     table.write_csv(&c.dir.join("biased.csv"))?;
     c.section.tables.push(table);
@@ -451,7 +573,7 @@ impl Measured {
     }
 }
 
-/// Runs `algorithm` with doubling work until the next run would pass the
+/// Runs `algorithm` with growing work until the next run would pass the
 /// budget (the curve), then once at the work that fits the budget (the
 /// picture), then `effort.seeds` times with independent seeds at
 /// `budget / seed_share` (bias² and variance).
@@ -538,13 +660,24 @@ fn bias_pictures(
             v,
             size,
             scale,
-            &format!(
-                "{}: the mean of {seeds} runs with independent seeds minus {}, in luminance (red: \
-                 too bright, blue: too dark): its bias, with the noise of a mean of {seeds} \
-                 (standard deviation {noise:.3} per pixel and channel); bias² {}.",
-                m.algorithm.label(),
-                reference.name,
-                m.split.bias2_text()
+            &lang::pick(
+                format!(
+                    "{}: the mean of {seeds} runs with independent seeds minus {}, in luminance \
+                     (red: too bright, blue: too dark): its bias, with the noise of a mean of \
+                     {seeds} (standard deviation {noise:.3} per pixel and channel); bias² {}.",
+                    m.algorithm.label(),
+                    reference.name,
+                    m.split.bias2_text()
+                ),
+                format!(
+                    "{}: средното от {seeds} рендерирания с независими seed-ове минус {}, в \
+                     яркост (червено: твърде светло, синьо: твърде тъмно): отместването му, с \
+                     шума на средно от {seeds} (стандартно отклонение {noise:.3} на пиксел и \
+                     канал); отместване² {}.",
+                    m.algorithm.label(),
+                    reference.name,
+                    m.split.bias2_text()
+                ),
             ),
         )?;
     }
@@ -588,9 +721,12 @@ fn signed_figure_at(
     Ok(())
 }
 
-/// Runs `prepared` with doubling work until the next run would pass
-/// `budget` (the curve of (seconds, `error`)), then once at the work that
-/// fits the budget: the equal-time run and the curve, in time order.
+/// Runs `prepared` with four times the work each time until the next run
+/// would pass `budget` (the curve of (seconds, `error`)), then once at the
+/// work that fits the budget: the equal-time run and the curve, in time
+/// order. Steps of four, not two, keep the curve's cost near a third of the
+/// budget on top of the equal-time run. A curve of one point gets a second,
+/// past the budget.
 fn equal_time(
     prepared: &Prepared,
     scene: &Scene,
@@ -603,10 +739,11 @@ fn equal_time(
     let last = loop {
         let run = prepared.run(scene, base, n);
         curve.push((run.seconds, error(&run.image)));
-        if run.seconds * 2.0 > budget || n >= 1 << 14 {
+        let next = prepared.build_seconds + 4.0 * (run.seconds - prepared.build_seconds);
+        if next > budget || n >= 1 << 14 {
             break run;
         }
-        n *= 2;
+        n *= 4;
     };
     let fitted = prepared.fit(last.spp, last.seconds, budget);
     let run = if fitted > last.spp {
@@ -616,8 +753,114 @@ fn equal_time(
     } else {
         last
     };
+    // A curve is at least two points: when one sample per pixel already
+    // takes most of the budget, one run with twice the work goes past it.
+    if curve.len() < 2 {
+        let more = prepared.run(scene, base, 2 * run.spp);
+        curve.push((more.seconds, error(&more.image)));
+    }
     curve.sort_by(|a, b| a.0.total_cmp(&b.0));
     (run, curve)
+}
+
+/// Chapter 9's error against time in the current language: each
+/// algorithm's curve, and for each build-once method whose bias² stands out
+/// of its noise a dashed line at √bias² in its colour, the floor no amount
+/// of rendering removes.
+fn rmse_time_chart(measured: &[Measured]) -> Chart {
+    let times = measured.iter().flat_map(|m| m.curve.iter().map(|p| p.0));
+    let (t0, t1) = times.fold((f64::MAX, 0.0f64), |(a, b), t| (a.min(t), b.max(t)));
+    let mut series: Vec<Series> = measured
+        .iter()
+        .map(|m| Series {
+            label: m.algorithm.label().into(),
+            points: m.curve.clone(),
+        })
+        .collect();
+    for m in measured.iter().filter(|m| m.build_once() && m.split.resolved()) {
+        series.push(Series {
+            label: format!("{}: √{}", m.algorithm.label(), lang::pick("bias²", "отм.²")),
+            points: vec![(t0, m.split.bias2.sqrt()), (t1, m.split.bias2.sqrt())],
+        });
+    }
+    Chart {
+        title: lang::pick("Cornell box: error against time", "Cornell box: грешка спрямо времето").into(),
+        x_label: lang::pick("seconds (build included)", "секунди (със строежа)").into(),
+        y_label: "RMSE".into(),
+        x_scale: Scale::Log,
+        y_scale: Scale::Log,
+        series,
+    }
+}
+
+/// Bias² beside variance per algorithm, on a log axis, in the current
+/// language; a bias² that does not stand out of its noise is an outline up
+/// to its bound.
+fn bias_variance_bars(measured: &[Measured], seeds: u64) -> Bars {
+    Bars {
+        title: lang::pick(
+            format!("Cornell box: bias² and variance ({seeds} seeds)"),
+            format!("Cornell box: отместване² и дисперсия ({seeds} seed-а)"),
+        ),
+        y_label: lang::pick("mean squared error", "средна квадратична грешка").into(),
+        parts: vec![
+            lang::pick("bias²", "отместване²").into(),
+            lang::pick("variance", "дисперсия").into(),
+        ],
+        bound_label: lang::pick("outline: at most (within noise)", "контур: най-много (в шума)").into(),
+        bars: measured
+            .iter()
+            .map(|m| {
+                let bias = Part {
+                    value: if m.split.resolved() {
+                        m.split.bias2
+                    } else {
+                        m.split.bound()
+                    },
+                    bound: !m.split.resolved(),
+                };
+                let variance = Part {
+                    value: m.split.variance,
+                    bound: false,
+                };
+                (m.algorithm.label().to_string(), vec![bias, variance])
+            })
+            .collect(),
+    }
+}
+
+/// Which build-once methods flattened within `budget`, in the current
+/// language.
+fn flat_text(flat: &[&str], budget: f64) -> String {
+    if flat.is_empty() {
+        lang::pick(
+            format!(
+                "Within {} none has flattened yet: none has a last doubling of work that lowered \
+                 its error by less than a fifth, so the render's noise still dominates.",
+                seconds_text(budget)
+            ),
+            format!(
+                "За {} още никой не е спрял да пада: при никой последното удвояване на работата не \
+                 е намалило грешката с по-малко от една пета, така че шумът на рендерирането още \
+                 преобладава.",
+                seconds_text(budget)
+            ),
+        )
+    } else {
+        lang::pick(
+            format!(
+                "Within {}, {} flattened: a doubling of work lowered the error by less than a fifth.",
+                seconds_text(budget),
+                flat.join(", ")
+            ),
+            format!(
+                "За {} спря да пада: {} (удвояването на работата намали грешката с по-малко от една \
+                 пета).",
+                seconds_text(budget),
+                flat.join(", ")
+            ),
+        )
+    }
 }
 
 /// The pixels an error counts: those off the lamp, and not next to it — a
@@ -693,7 +936,7 @@ fn photon_blur(
     )
     .map_err(|e| anyhow!(e))?;
     let options = RenderOptions {
-        spp: 16,
+        spp: 8,
         progress: false,
         ..base.clone()
     };
@@ -711,9 +954,15 @@ fn photon_blur(
     c.section.figures.push(Figure::new(
         &tour.out,
         &picture,
-        &format!(
-            "{name}, photon mapping with {photons} light paths and a fixed search radius of \
-             {radius}: little noise, so the blur shows."
+        &lang::pick(
+            format!(
+                "{name}, photon mapping with {photons} light paths and a fixed search radius of \
+                 {radius}: little noise, so the blur shows."
+            ),
+            format!(
+                "{name}, photon mapping с {photons} светлинни пътя и постоянен радиус на търсене \
+                 {radius}: малко шум, затова размазването се вижда."
+            ),
         ),
     ));
     let error: Vec<f32> = image
@@ -728,10 +977,17 @@ fn photon_blur(
         &format!("{name}-photon-error"),
         &error,
         (image.width, image.height),
-        &format!(
-            "{name}, photon mapping − {} for the picture before, in luminance (red: too bright, \
-             blue: too dark): {what}.",
-            reference.name
+        &lang::pick(
+            format!(
+                "{name}, photon mapping − {} for the picture before, in luminance (red: too \
+                 bright, blue: too dark): {what}.",
+                reference.name
+            ),
+            format!(
+                "{name}, photon mapping − {} за картината преди това, в яркост (червено: твърде \
+                 светло, синьо: твърде тъмно): {what}.",
+                reference.name
+            ),
         ),
     )
 }
@@ -786,20 +1042,38 @@ fn irradiance_records(
         c.section.figures.push(Figure::new(
             &tour.out,
             &picture,
-            &format!(
-                "Irradiance caching, a = {a}: {} records, RMSE {error:.4} against {} off the lamp; a larger a \
-                 lets each record cover more, and its interpolation shows as blotches.",
-                cache.records().len(),
-                reference.name
+            &lang::pick(
+                format!(
+                    "Irradiance caching, a = {a}: {} records, RMSE {error:.4} against {} off the \
+                     lamp; a larger a lets each record cover more, and its interpolation shows as \
+                     blotches.",
+                    cache.records().len(),
+                    reference.name
+                ),
+                format!(
+                    "Irradiance caching, a = {a}: {} записа, RMSE {error:.4} спрямо {} без \
+                     лампата; по-голямо a дава на всеки запис по-голяма област, а интерполацията \
+                     му личи като петна.",
+                    cache.records().len(),
+                    reference.name
+                ),
             ),
         ));
         let picture = write_image(&c.dir, &format!("{stem}-records"), &dots, spp, 0.0, None)?;
         c.section.figures.push(Figure::new(
             &tour.out,
             &picture,
-            &format!(
-                "Irradiance caching, a = {a}: the {shown} records seen from the camera as red dots, \
-                 dense where the irradiance changes fast (corners, edges), sparse on open walls."
+            &lang::pick(
+                format!(
+                    "Irradiance caching, a = {a}: the {shown} records seen from the camera as red \
+                     dots, dense where the irradiance changes fast (corners, edges), sparse on open \
+                     walls."
+                ),
+                format!(
+                    "Irradiance caching, a = {a}: {shown}-те записа, видими от камерата, като \
+                     червени точки, гъсти там, където облъчеността се мени бързо (ъгли, ръбове), \
+                     редки по откритите стени."
+                ),
             ),
         ));
     }

@@ -19,7 +19,7 @@ pub mod signed_map;
 pub mod solid_angle;
 pub mod zmap;
 
-pub use bars::Bars;
+pub use bars::{Bars, Part};
 pub use chart::{Chart, Scale};
 pub use hemisphere::{Hemisphere, HemisphereWords, LANGS, hemisphere_svg};
 pub use palette::Drawn;
