@@ -74,18 +74,31 @@ type Measured = (Image, u32, f64, Vec<(f64, f64)>);
 fn render_for(run: &Run, seconds: f64, reference: &Image) -> Option<Measured> {
     let mut curve = Vec::new();
     let mut spp = 1;
-    let (fixed, per_spp) = loop {
+    let (fixed, per_spp, last) = loop {
         let (image, secs, fixed) = run(spp)?;
         curve.push((secs, rmse(&image, reference) as f64));
         if secs * 2.0 > seconds / 2.0 || spp >= 1 << 15 {
             let fixed = fixed.clamp(0.0, secs / 2.0);
-            break (fixed, (secs - fixed) / spp as f64);
+            break (fixed, (secs - fixed) / spp as f64, (image, spp, secs));
         }
         spp *= 2;
     };
-    let spp = (((seconds - fixed) / per_spp) as u32).clamp(1, 1 << 16);
-    let (image, secs, _) = run(spp)?;
-    curve.push((secs, rmse(&image, reference) as f64));
+    let fitted = (((seconds - fixed) / per_spp) as u32).clamp(1, 1 << 16);
+    // A budget that fits no more than the last run: that run is the
+    // picture (rendering it again would only draw a second point on the first).
+    let (image, spp, secs) = if fitted > last.1 {
+        let (image, secs, _) = run(fitted)?;
+        curve.push((secs, rmse(&image, reference) as f64));
+        (image, fitted, secs)
+    } else {
+        last
+    };
+    // A curve of one point gets a second with twice the work, past the
+    // budget, unless that would take more than twice the budget.
+    if curve.len() < 2 && secs <= seconds {
+        let (more, more_secs, _) = run(2 * spp)?;
+        curve.push((more_secs, rmse(&more, reference) as f64));
+    }
     curve.sort_by(|a, b| a.0.total_cmp(&b.0));
     Some((image, spp, secs, curve))
 }

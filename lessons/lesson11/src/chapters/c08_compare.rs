@@ -38,27 +38,52 @@ fn render(tour: &Tour) -> Result<Section> {
     };
     let mut c = tour.chapter(
         "08-compare",
-        "8 · Comparison at equal time",
-        &format!(
-            "Each algorithm gets the same time (about {budget} s here) and the same maximum depth, \
-             and its error is the RMSE against an independent reference, never a render that shares \
-             its samples. For the Cornell box the reference is Mitsuba 3's image (2048 spp, max \
-             depth 65, roulette from depth 5), reduced exactly to this size by averaging blocks of \
-             its pixels, so every algorithm here also runs to max depth 65. For the door scene it is \
-             our bidirectional path tracer with a seed of its own and thousands of samples, stored \
-             with the lesson (max depth 5). A reference is an estimate too: its noise floor, \
-             √(mean variance of the reference), is printed with the table and drawn in the plots, \
-             and no RMSE measured against it can fall below it. In the door scene the only lamp is \
-             in the next room: a path tracer must find the gap by chance, light paths pass through \
-             it on their own, and bidirectional path tracing joins the two rooms directly; Metropolis \
-             light transport, Markov chains over bidirectional paths, keeps a path that found the gap \
-             and explores its neighbours (its spp are mutations per pixel, its time includes the \
-             bootstrap that estimates the brightness b). On the \
-             Cornell box naive recursion (N = {NAIVE_N} rays at every hit, the full tree to depth 5 \
-             — at most 341 rays per pixel sample — and below it one ray per hit, ended by Russian \
-             roulette) spends its time on \
-             the trees of a few pixel samples, path tracing on many samples per pixel. Unbiased \
-             algorithms differ only in their noise: at equal time, the lowest error wins."
+        lang::pick("8 · Comparison at equal time", "8 · Сравнение при равно време"),
+        &lang::pick(
+            format!(
+                "Each algorithm gets the same time (about {budget} s here) and the same maximum depth, \
+                 and its error is the RMSE against an independent reference, never a render that shares \
+                 its samples. For the Cornell box the reference is Mitsuba 3's image (2048 spp, max \
+                 depth 65, roulette from depth 5), reduced exactly to this size by averaging blocks of \
+                 its pixels, so every algorithm here also runs to max depth 65. For the door scene it is \
+                 our bidirectional path tracer with a seed of its own and thousands of samples, stored \
+                 with the lesson (max depth 5). A reference is an estimate too: its noise floor, \
+                 √(mean variance of the reference), is printed with the table and drawn in the plots, \
+                 and no RMSE measured against it can fall below it. In the door scene the only lamp is \
+                 in the next room: a path tracer must find the gap by chance, light paths pass through \
+                 it on their own, and bidirectional path tracing joins the two rooms directly; Metropolis \
+                 light transport, Markov chains over bidirectional paths, keeps a path that found the gap \
+                 and explores its neighbours (its spp are mutations per pixel, its time includes the \
+                 bootstrap that estimates the brightness b). On the \
+                 Cornell box naive recursion (N = {NAIVE_N} rays at every hit, the full tree to depth 5 \
+                 — at most 341 rays per pixel sample — and below it one ray per hit, ended by Russian \
+                 roulette) spends its time on \
+                 the trees of a few pixel samples, path tracing on many samples per pixel. Unbiased \
+                 algorithms differ only in their noise: at equal time, the lowest error wins."
+            ),
+            format!(
+                "Всеки алгоритъм получава едно и също време (тук около {budget} s) и една и съща \
+                 максимална дълбочина, а грешката му е RMSE спрямо независим еталон, никога спрямо \
+                 рендериране, което споделя извадките му. За Cornell box еталонът е картината на \
+                 Mitsuba 3 (2048 spp, максимална дълбочина 65, руска рулетка от дълбочина 5), \
+                 намалена точно до този размер чрез осредняване на блокове пиксели, затова всеки \
+                 алгоритъм тук също стига до дълбочина 65. За сцената с вратата това е нашият \
+                 bidirectional path tracer с отделен seed и хиляди извадки, запазен с урока \
+                 (максимална дълбочина 5). И еталонът е оценка: дъното на шума му, √(средната \
+                 дисперсия на еталона), е отпечатано с таблицата и начертано в графиките, и никоя \
+                 RMSE, измерена спрямо него, не пада под него. В сцената с вратата единствената \
+                 лампа е в съседната стая: path tracer трябва да намери процепа случайно, \
+                 светлинните пътища минават през него сами, а bidirectional path tracing свързва \
+                 двете стаи направо; Metropolis light transport, вериги на Марков върху пътищата \
+                 на bidirectional path tracing, пази път, намерил процепа, и изследва съседите му \
+                 (spp при него \
+                 са мутации на пиксел, а времето включва bootstrap, който оценява яркостта b). В \
+                 Cornell box наивната рекурсия (N = {NAIVE_N} лъча във всяка точка, цялото дърво \
+                 до дълбочина 5 – най-много 341 лъча на извадка на пиксел – и под него по един \
+                 лъч, спиран от руска рулетка) харчи времето си за дърветата на няколко извадки, а \
+                 path tracing – за много извадки на пиксел. Неотместените алгоритми се различават \
+                 само по шума си: при равно време печели най-малката грешка."
+            ),
         ),
     )?;
     let mut table = Table::new(
@@ -113,10 +138,17 @@ fn render(tour: &Tour) -> Result<Section> {
             c.section.figures.push(Figure::new(
                 &tour.out,
                 &picture,
-                &format!(
-                    "door, the reference: {}, max depth {max_depth}; what every render below \
-                     converges to.",
-                    reference.source
+                &lang::pick(
+                    format!(
+                        "door, the reference: {}, max depth {max_depth}, exposure +{DOOR_EXPOSURE} \
+                         EV; what every render below converges to.",
+                        reference.source
+                    ),
+                    format!(
+                        "вратата, еталонът: {}, максимална дълбочина {max_depth}, експозиция \
+                         +{DOOR_EXPOSURE} EV; към това се приближава всяко рендериране по-долу.",
+                        reference.source
+                    ),
                 ),
             ));
         }
@@ -158,13 +190,27 @@ fn render(tour: &Tour) -> Result<Section> {
             };
             chart.write(&c.dir.join(format!("{name}-convergence-{lang}.svg")))?;
         }
-        let svg = c.dir.join(format!("{name}-convergence-en.svg"));
+        let svg = c.dir.join(format!("{name}-convergence-{}.svg", lang::current().code()));
         c.section.figures.push(Figure::plot(
             &tour.out,
             &svg,
-            &format!(
-                "{name}: RMSE against render time, log–log (a slope of −1/2 is Monte Carlo's 1/√N), \
-                 max depth {max_depth}; the flat line is the reference's own noise floor, {floor:.5}."
+            &lang::pick(
+                format!(
+                    "{name}: RMSE against render time, log–log (a slope of −1/2 is Monte Carlo's \
+                     1/√N), {}×{}, {budget} s per algorithm, max depth {max_depth}, RMSE over all \
+                     pixels (the table gives each one's spp); the dashed line is the reference's \
+                     own noise floor, {floor:.5}.",
+                    scene.camera.width, scene.camera.height
+                ),
+                format!(
+                    "{}: RMSE спрямо времето, log–log (наклон −1/2 е 1/√N на Monte Carlo), \
+                     {}×{}, по {budget} s на алгоритъм, максимална дълбочина {max_depth}, RMSE по \
+                     всички пиксели (таблицата дава spp на всеки); прекъснатата линия е дъното на \
+                     шума на самия еталон, {floor:.5}.",
+                    in_bulgarian(name),
+                    scene.camera.width,
+                    scene.camera.height
+                ),
             ),
         ));
         let exposure = if name == "door" { DOOR_EXPOSURE } else { 0.0 };
@@ -182,10 +228,27 @@ fn render(tour: &Tour) -> Result<Section> {
                 exposure,
                 Some(row.seconds),
             )?;
-            let caption = format!(
-                "{name}, {}, equal time, max depth {max_depth}: RMSE {:.5} against {} (noise floor \
-                 {floor:.5}).",
-                row.algorithm, row.rmse, reference.name
+            let (w, h) = (scene.camera.width, scene.camera.height);
+            let caption = lang::pick(
+                format!(
+                    "{name}, {}, equal time: {} spp in {} ({w}×{h}, max depth {max_depth}): RMSE \
+                     {:.5} against {} (noise floor {floor:.5}).",
+                    row.algorithm,
+                    row.spp,
+                    seconds_text(row.seconds),
+                    row.rmse,
+                    reference.name
+                ),
+                format!(
+                    "{}, {}, при равно време: {} spp за {} ({w}×{h}, максимална дълбочина \
+                     {max_depth}): RMSE {:.5} спрямо {} (дъно на шума {floor:.5}).",
+                    in_bulgarian(name),
+                    row.algorithm,
+                    row.spp,
+                    seconds_text(row.seconds),
+                    row.rmse,
+                    reference.name
+                ),
             );
             c.section
                 .figures
@@ -202,10 +265,18 @@ fn render(tour: &Tour) -> Result<Section> {
             ]);
         }
     }
-    table.caption = format!(
-        "{}. The references' noise floors, √(mean variance of the reference): {}.",
-        table.caption.trim_end_matches('.'),
-        floors.join("; ")
+    table.caption = lang::pick(
+        format!(
+            "{}. The references' noise floors, √(mean variance of the reference): {}.",
+            table.caption.trim_end_matches('.'),
+            floors.join("; ")
+        ),
+        format!(
+            "Сравнение при равно време (RMSE спрямо еталон, рендериран с други случайни числа; \
+             по-малкото е по-добре). Дъната на шума на еталоните, √(средната дисперсия на \
+             еталона): {}.",
+            floors.join("; ")
+        ),
     );
     table.write_csv(&c.dir.join("equal-time.csv"))?;
     c.section.tables.push(table);
@@ -268,15 +339,29 @@ fn metropolis_noise(
             image.clone(),
             mutations,
             seconds,
-            format!(
-                "door, Metropolis light transport over bidirectional paths, {mutations} mutations per pixel in {} \
-                 chains ({}), max depth {max_depth}: the errors come in streaks and blobs, each the trail of a \
-                 chain that lingered on a bright path — not all noise is white. RMSE {:.5} against {}; the \
-                 spread of the independent chains predicts {predicted:.5}.",
-                mlt.chains,
-                seconds_text(seconds),
-                rmse(&image, truth),
-                reference.name
+            lang::pick(
+                format!(
+                    "door, Metropolis light transport over bidirectional paths, {mutations} \
+                     mutations per pixel in {} chains ({}), max depth {max_depth}: the errors come \
+                     in streaks and blobs, each the trail of a chain that lingered on a bright path \
+                     — not all noise is white. RMSE {:.5} against {}; the spread of the independent \
+                     chains predicts {predicted:.5}.",
+                    mlt.chains,
+                    seconds_text(seconds),
+                    rmse(&image, truth),
+                    reference.name
+                ),
+                format!(
+                    "вратата, Metropolis light transport върху пътищата на bidirectional path tracing, {mutations} \
+                     мутации на пиксел в {} вериги ({}), максимална дълбочина {max_depth}: \
+                     грешките идват на ивици и петна, всяко – следа от верига, задържала се на ярък \
+                     път: не всеки шум е бял. RMSE {:.5} спрямо {}; разсейването на независимите \
+                     вериги предсказва {predicted:.5}.",
+                    mlt.chains,
+                    seconds_text(seconds),
+                    rmse(&image, truth),
+                    reference.name
+                ),
             ),
         ),
         (
@@ -284,12 +369,23 @@ fn metropolis_noise(
             other.film.image(),
             spp,
             other.stats.elapsed.as_secs_f64(),
-            format!(
-                "door, bidirectional path tracing in the same time ({spp} spp, {}), max depth {max_depth}: \
-                 independent samples, white noise, pixel by pixel. RMSE {:.5} against {}.",
-                seconds_text(other.stats.elapsed.as_secs_f64()),
-                rmse(&other.film.image(), truth),
-                reference.name
+            lang::pick(
+                format!(
+                    "door, bidirectional path tracing in the same time ({spp} spp, {}), max depth \
+                     {max_depth}: independent samples, white noise, pixel by pixel. RMSE {:.5} \
+                     against {}.",
+                    seconds_text(other.stats.elapsed.as_secs_f64()),
+                    rmse(&other.film.image(), truth),
+                    reference.name
+                ),
+                format!(
+                    "вратата, bidirectional path tracing за същото време ({spp} spp, {}), \
+                     максимална дълбочина {max_depth}: независими извадки, бял шум, пиксел по \
+                     пиксел. RMSE {:.5} спрямо {}.",
+                    seconds_text(other.stats.elapsed.as_secs_f64()),
+                    rmse(&other.film.image(), truth),
+                    reference.name
+                ),
             ),
         ),
     ];
