@@ -19,7 +19,9 @@ fn every_part_of_every_bar_is_drawn_with_its_legend() {
     assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
     // Four parts, three legend swatches, the frame and the background.
     assert_eq!(svg.matches("<rect").count(), 4 + 3 + 2);
-    for text in ["path", "photon", "bias²", "variance", "MSE", "at most", "1e-5"] {
+    for text in [
+        "path", "photon", "bias²", "variance", "MSE", "at most", "1e-5",
+    ] {
         assert!(svg.contains(text), "{text}");
     }
 }
