@@ -436,13 +436,15 @@ fn every_command_run_at_tiny_size_writes_the_pictures_of_its_slide() {
 }
 
 /// The DOM of `url` after its load event, in headless Chromium with a window
-/// of `width`×`height` and a fresh profile; an error after a minute.
+/// of `width`×`height` and a fresh profile; an error after three minutes (a
+/// guard against a hang, not a speed check: on a two-core machine at a load
+/// of 20–40 the deck's check of every slide took more than one).
 fn dump_dom(chromium: &Path, url: &str, width: u32, height: u32) -> Result<String, String> {
     let extra = [
         format!("--window-size={width},{height}"),
         "--dump-dom".to_string(),
     ];
-    chromium::run(chromium, url, &extra, Duration::from_secs(60))
+    chromium::run(chromium, url, &extra, Duration::from_secs(180))
 }
 
 /// The deck's `#check` report: the size the page had, how many slides it
