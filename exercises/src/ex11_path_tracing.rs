@@ -26,12 +26,46 @@
 //! Toolbox: as in exercise 10. Returns: the path's radiance estimate.
 //! `exercises::plug::StudentPathTracer` renders with it
 //! (`lesson11 render --student`).
+//!
+//! ---
+//!
+//! # На български
+//!
+//! Задача 11 — цикълът на path tracing: throughput и руска рулетка.
+//!
+//! Слайдове: „Принципна схема на path tracing“, „Руска рулетка“, „Path tracing:
+//! проби на пиксел“.
+//!
+//! Path tracing следва по едно случайно продължение във всяко пресичане вместо
+//! N: интегралът от транспортното уравнение се оценява с една проба на
+//! отражение (Monte Carlo оценката от слайда „Решаване чрез Monte Carlo метод“
+//! с N = 1), а теглата на всички досегашни отражения се умножават в throughput
+//! β на пътя. Лампите се намират само като бъдат ударени: тук няма избор на
+//! точки от лампите. Уговорките са като в задача 10: посоките сочат навън от
+//! повърхността, `cos θ_i = ω_i·n` с нормалата откъм страната на `ω_o`, а D
+//! брои отсечките на пътя.
+//!
+//! Задача: проследете един път от лъча от камерата `ray` и върнете оценката му
+//! на radiance: светлината, излъчена към камерата във всеки връх на пътя, всяка
+//! претеглена с throughput на пътя там, плюс radiance на околната среда, ако
+//! пътят излезе от сцената.
+//! - `max_depth`: `Some(D)` — най-много D отсечки, както в задача 10; `None` —
+//!   без ограничение.
+//! - Руска рулетка, щом пътят е направил `rr_depth` отражения: продължете с
+//!   вероятност за оцеляване q по ваш избор (например от β), а иначе прекратете
+//!   пътя, така че оценката да остане неотместена. Всеки път трябва да свърши.
+//!
+//! Инструменти: както в задача 10. Връща: оценката на radiance на пътя.
+//! `exercises::plug::StudentPathTracer` рендерира с нея
+//! (`lesson11 render --student`).
 
 use raytracer::math::{Color, Ray};
 use raytracer::sampling::Sampler;
 use raytracer::scene::Scene;
 
 /// The radiance estimate of one path starting with `ray`.
+///
+/// Оценката на radiance на един път, който започва с `ray`.
 pub fn path_radiance(
     scene: &Scene,
     ray: Ray,
@@ -40,5 +74,6 @@ pub fn path_radiance(
     sampler: &mut Sampler,
 ) -> Color {
     // TODO: a loop, not a recursion: throughput, emission, one BRDF sample, roulette.
+    // TODO (бг): цикъл, не рекурсия: throughput, излъчване, една проба от BRDF, рулетка.
     todo!()
 }

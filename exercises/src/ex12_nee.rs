@@ -58,25 +58,98 @@
 //! scene, a camera ray, the depths, the sampler.
 //! Returns: the solid-angle density / the direct light estimate / the
 //! path's radiance estimate.
+//!
+//! ---
+//!
+//! # На български
+//!
+//! Задача 12 — next event estimation: path tracing, който се цели в лампите.
+//!
+//! Слайдове: „Посоките в една точка“, „Next event estimation“, „Светлината,
+//! намерена случайно“, „Транспортното уравнение: интегралът“, „Принципна схема
+//! на path tracing“.
+//!
+//! Вместо да чакаме пътят да удари лампа, се целим в нея: избираме точка y от
+//! лампа и свързваме x с нея с лъч за сянка. Точката се избира с плътност на
+//! единица *площ* от лампата, `p_A(y)`; транспортното уравнение интегрира по
+//! *посоките* в x, така че оценката има нужда от плътността на единица
+//! пространствен ъгъл.
+//!
+//! Част 1: `area_pdf_to_solid_angle(pdf_area, x, y, n_y)`: плътността на
+//! единица пространствен ъгъл в x на посоката към y (с нормала `n_y`), когато y
+//! е избрана с плътност `pdf_area` на единица площ; `x ≠ y`. Ако от x лампата
+//! се вижда точно в профил (`n_y ⟂ y − x`), на площта не съответства никакъв
+//! пространствен ъгъл: върнете 0 (извикващият изхвърля проба с плътност 0;
+//! нейното `L_e cos θ_y` и без това би било 0).
+//!
+//! Част 2: `estimate_direct(scene, it, sampler)`: оценка с една проба на
+//! директната светлина, отразена в пресичането `it` към `it.wo` — частта от
+//! `∫ f_r L_i cos θ_i dω_i`, която идва направо от лампите (посоките са като в
+//! задача 10: `ω_i` от x към y, `cos θ_i = ω_i·n` с нормалата откъм страната на
+//! `ω_o`):
+//! - изберете лампа със `Scene::choose_light` (едно случайно число); тя връща
+//!   `LightChoice`: лампата и вероятността тя да бъде избрана (`choice.light`,
+//!   `choice.pmf`);
+//! - за `Light::Area` вземете точка, равномерна по площта,
+//!   `AreaShape::sample_area` (плътност `1 / AreaShape::area`); radiance, която
+//!   напуска y към x, е `AreaLight::le` (нула зад едностранна лампа);
+//! - другите лампи (точкова, околна светлина): `Light::sample_li` дава
+//!   посоката, пристигащата radiance и плътността ѝ на единица пространствен
+//!   ъгъл;
+//! - BRDF: `Brdf::eval` в локалната система; видимост: `Scene::unoccluded` с
+//!   лъча за сянка `Interaction::spawn_ray_to` (към околната светлина:
+//!   `Interaction::spawn_ray`).
+//!
+//! Част 3: `path_radiance_nee(scene, ray, max_depth, rr_depth, sampler)`:
+//! вашият path tracer от задача 11 (копирайте собствения си цикъл) с next event
+//! estimation. Във всеки връх, до който стигне пътят, преди да продължи,
+//! добавете една проба от лампите (част 2), претеглена с throughput β там. Сега
+//! директната светлина на един връх се намира от пробата от лампите — затова
+//! излъчването, което *следващият* лъч случайно удари, не бива да се брои пак:
+//! пътят брои `L_e` (и околната среда, когато излезе от сцената) само там,
+//! където никоя проба от лампите не би могла да го намери — лъчът от камерата и
+//! лъч, излязъл от делта лоб (огледало, стъкло), в чийто връх `Brdf::eval` е
+//! нула и пробата от лампите не е намерила нищо (`BrdfSample::is_delta`;
+//! `Brdf::is_delta` казва същото за целия модел). Дълбочината е като в задача
+//! 11: при `max_depth` D пътят има най-много D отсечки, а пробата от лампите
+//! във връх е още една отсечка (D = 2: излъчвателите, видени направо, плюс
+//! пробата от лампите в първото пресичане — директната светлина от част 2).
+//! Руската рулетка е като в задача 11. `exercises::plug::StudentPathTracer` я
+//! рендерира със `StudentRender::PathNee`
+//! (`lesson11 render --student -i path-nee`).
+//!
+//! Получава: плътности и точки / сцената, пресичане, sampler-а / сцената, лъч
+//! от камерата, дълбочините, sampler-а. Връща: плътността на единица
+//! пространствен ъгъл / оценката на директната светлина / оценката на radiance
+//! на пътя.
 
 use raytracer::math::{Color, Ray, Vec3A};
 use raytracer::sampling::Sampler;
 use raytracer::scene::{Interaction, Scene};
 
 /// The density per unit solid angle at `x` of the direction towards `y`.
+///
+/// Плътността на единица пространствен ъгъл в `x` на посоката към `y`.
 pub fn area_pdf_to_solid_angle(pdf_area: f32, x: Vec3A, y: Vec3A, n_y: Vec3A) -> f32 {
     // TODO: how large a solid angle does a small patch dA at y cover, seen from x?
+    // TODO (бг): колко голям пространствен ъгъл заема малка площадка dA в y, видяна от x?
     todo!()
 }
 
 /// One next-event estimate of the direct light at `it`.
+///
+/// Една оценка (next event estimation) на директната светлина в `it`.
 pub fn estimate_direct(scene: &Scene, it: &Interaction, sampler: &mut Sampler) -> Color {
     // TODO: choose a light, a point on it, convert the density, test visibility.
+    // TODO (бг): изберете лампа, точка от нея, преобразувайте плътността, проверете видимостта.
     todo!()
 }
 
 /// The radiance estimate of one path starting with `ray`, with next event
 /// estimation at every vertex.
+///
+/// Оценката на radiance на един път, който започва с `ray`, с next event
+/// estimation във всеки връх.
 pub fn path_radiance_nee(
     scene: &Scene,
     ray: Ray,
@@ -85,5 +158,7 @@ pub fn path_radiance_nee(
     sampler: &mut Sampler,
 ) -> Color {
     // TODO: your loop of exercise 11, a light sample at each vertex, and emission counted only where no light sample could have found it.
+    // TODO (бг): вашият цикъл от задача 11, проба от лампите във всеки връх и излъчване, броено
+    // само там, където никоя проба от лампите не би могла да го намери.
     todo!()
 }

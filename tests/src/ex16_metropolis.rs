@@ -92,11 +92,31 @@ const DIMS: usize = 3;
 struct Target<'a> {
     f: &'a dyn Fn(f64) -> f64,
     pixel: &'a dyn Fn(f64) -> usize,
-    bad: Cell<Option<String>>,
+    bad: Cell<Option<BadState>>,
     calls: Cell<u64>,
     /// Numbers evaluated that lie exactly on the edge of [0, 1): 0, or
     /// within 1e-5 of 1 (where a clamped step stops).
     on_edge: Cell<u64>,
+}
+
+/// A vector the chain should not have evaluated: kept as found, put in
+/// words by [`run`] (on the grader's thread, whose language a test may have
+/// chosen).
+#[derive(Clone, Copy)]
+enum BadState {
+    /// Its length is not the settings' dimensions.
+    Length { len: usize, call: u64 },
+    /// Its number `d` lies outside `[0, 1)`.
+    Outside { d: usize, v: f32, call: u64 },
+}
+
+impl BadState {
+    fn message(self) -> String {
+        match self {
+            BadState::Length { len, call } => crate::tr!("ex16.length", len, call, dims = DIMS),
+            BadState::Outside { d, v, call } => crate::tr!("ex16.outside", d, v, call),
+        }
+    }
 }
 
 impl<'a> Target<'a> {
@@ -114,14 +134,9 @@ impl<'a> Target<'a> {
         let call = self.calls.get();
         self.calls.set(call + 1);
         if u.len() != DIMS {
-            self.complain(format!(
-                "your chain evaluated a vector of {} numbers (evaluation {call}), the settings ask for {DIMS}",
-                u.len()
-            ));
-        } else if let Some((d, v)) = u.iter().enumerate().find(|(_, v)| !(0.0..1.0).contains(*v)) {
-            self.complain(format!(
-                "your chain evaluated a state whose number {d} is {v} (evaluation {call}): the numbers leave [0, 1), the unit hypercube of primary sample space — a small step near 0 or 1 must stay inside it, and symmetric"
-            ));
+            self.complain(BadState::Length { len: u.len(), call });
+        } else if let Some((d, &v)) = u.iter().enumerate().find(|(_, v)| !(0.0..1.0).contains(*v)) {
+            self.complain(BadState::Outside { d, v, call });
         }
         let edge = u
             .iter()
@@ -141,7 +156,7 @@ impl<'a> Target<'a> {
         }
     }
 
-    fn complain(&self, why: String) {
+    fn complain(&self, why: BadState) {
         let first = self.bad.take();
         self.bad.set(first.or(Some(why)));
     }
@@ -164,14 +179,11 @@ fn run(
         &mut image,
     );
     if let Some(why) = target.bad.take() {
-        return Err(why);
+        return Err(why.message());
     }
     let sums: Vec<f64> = image.sums.iter().map(|s| s[0]).collect();
     if let Some(j) = sums.iter().position(|v| !v.is_finite() || *v < 0.0) {
-        return Err(format!(
-            "your chain's image has pixel {j} = {} (NaN, infinite or negative): a state with f = 0 brings nothing, and nothing divides by it",
-            sums[j]
-        ));
+        return Err(crate::tr!("ex16.pixel_nonfinite", j, value = sums[j]));
     }
     Ok(sums)
 }
@@ -226,9 +238,7 @@ pub fn check_symmetric_steps(chain: MetropolisChainFn) -> Result<(), String> {
     run(chain, &target, &settings(16, 4000, 0.1, 0.1), 2, 40)?;
     let on_edge = target.on_edge.get();
     if on_edge > EDGE_ALLOWED {
-        return Err(format!(
-            "a target whose light sits near 0 and near 1, 4000 steps: {on_edge} of the numbers your chain evaluated lie exactly on the edge of [0, 1) (0, or within 1e-5 of 1), where fresh numbers almost never fall — a small step that would leave the hypercube stops at its edge. Such a step is not symmetric: the chance of stepping from x to the edge is not the chance of stepping back, so the chain no longer visits u in proportion to f near 0 and 1"
-        ));
+        return Err(crate::tr!("ex16.clamped", count = on_edge));
     }
     Ok(())
 }
@@ -245,43 +255,33 @@ pub fn check_constant(chain: MetropolisChainFn) -> Result<(), String> {
     }
     let near = |r: f64| (ratio / r - 1.0).abs() < 1e-3;
     let why = if total == 0.0 {
-        "nothing was splatted".to_string()
+        crate::tr!("ex16.nothing")
     } else if near(1.0 / 3.0) {
-        "the picture is too dark by the factor b̂ = 3: the splats leave out the normalization b̂, which only the bootstrap knows".to_string()
+        crate::tr!("ex16.no_b")
     } else if near(3.0) {
-        "the picture is too bright by the factor f = 3: the splats are not divided by the scalar contribution f of their state (the chain already visits states in proportion to f)".to_string()
+        crate::tr!("ex16.no_f")
     } else if near(steps as f64) {
-        format!(
-            "the picture is too bright by the factor N = {steps}: the splats are not shared among the N mutations"
-        )
+        crate::tr!("ex16.no_n", steps)
     } else if near(n as f64 / (n as f64 - 1.0)) {
-        format!(
-            "the picture is too bright by n/(n − 1) = {n}/{}: b̂ is not the mean over the n = {n} bootstrap paths",
-            n - 1
-        )
+        crate::tr!("ex16.n_minus_one", n, m = n - 1)
     } else if near(n as f64 / steps as f64) {
-        format!(
-            "the picture is off by n/N = {n}/{steps}: b̂ is not the mean over the n = {n} bootstrap paths (divided by the number of mutations?)"
-        )
+        crate::tr!("ex16.over_mutations", n, steps)
     } else if near(2.0) {
-        "the picture is too bright by the factor 2: every step must splat b̂/N of luminance in all, shared by the two states".to_string()
+        crate::tr!("ex16.twice")
     } else {
-        format!("its brightness is off by the factor ×{ratio:.4}")
+        crate::tr!("ex16.off", ratio)
     };
-    Err(format!(
-        "a target with f ≡ 3 everywhere (so b̂ = 3 exactly, and every step adds b̂/N of luminance in all, shared by the two states): your {steps}-step chain's image has total luminance {total:.5}, expected 3 — {why}"
-    ))
+    Err(crate::tr!("ex16.constant", steps, total, why))
 }
 
 /// `f ≡ 0`: black, and finite.
 pub fn check_black(chain: MetropolisChainFn) -> Result<(), String> {
     let target = Target::new(&|_| 0.0, &half);
     let image = run(chain, &target, &settings(16, 50, 0.3, 0.1), 2, 1)
-        .map_err(|e| format!("a target with no light at all (f ≡ 0): {e}"))?;
+        .map_err(|why| crate::tr!("ex16.no_light", why))?;
     if image.iter().any(|&v| v != 0.0) {
-        return Err(format!(
-            "a target with no light at all (f ≡ 0): your image is {image:?}, not black"
-        ));
+        let why = crate::tr!("ex16.not_black", image = format!("{image:?}"));
+        return Err(crate::tr!("ex16.no_light", why));
     }
     Ok(())
 }
@@ -293,15 +293,10 @@ pub fn check_half_dark(chain: MetropolisChainFn) -> Result<(), String> {
     let image = run(chain, &target, &settings(n, 100, 0.3, 0.1), 2, 2)?;
     let total: f64 = image.iter().sum();
     if (total - 2.0).abs() < 1e-4 {
-        return Err(format!(
-            "a target with f = 0 on half the space and 2 on the other (b = 1): your image's total luminance is exactly 2 — b̂ is averaged over the bootstrap paths that found light only, but the dark ones are part of ∫ f (here half of the {n})"
-        ));
+        return Err(crate::tr!("ex16.b_over_lit", n));
     }
     if image[0] != 0.0 {
-        return Err(format!(
-            "a target with f = 0 on half the space: your image has {:.5} in the dark pixel, where no path brings light",
-            image[0]
-        ));
+        return Err(crate::tr!("ex16.dark_pixel", value = image[0]));
     }
     Ok(())
 }
@@ -321,9 +316,7 @@ pub fn check_expected_values(chain: MetropolisChainFn) -> Result<(), String> {
         integer &= total > 0.0 && counts.into_iter().all(|c| (c - c.round()).abs() < 1e-3);
     }
     if integer {
-        return Err(format!(
-            "a target with f = 1 in one pixel and e in the other: in four chains of {steps} steps every pixel received a whole number of steps' shares b̂/N — only the state the chain moves to is splatted; the task asks for the expected value of every step over the accept coin (both states, each with its probability), which is less noisy and never wastes a proposal"
-        ));
+        return Err(crate::tr!("ex16.accepted_only", steps));
     }
     Ok(())
 }
@@ -356,17 +349,26 @@ pub fn check_start(chain: MetropolisChainFn) -> Result<(), String> {
         let se = (var / k).sqrt();
         let t = (mean - exact[j]) / se.max(1e-300);
         if t.abs() > T_MAX {
-            let which = if j == 1 { "bright" } else { "dark" };
-            let hint = if j == 1 && mean < exact[j] {
-                " — the chains start too often where there is little light: start-up bias, the start is not distributed as the bootstrap's contributions (with b̂ from the same paths, a chain started in proportion to f is unbiased from its first step)"
+            let which = if j == 1 {
+                crate::tr!("ex16.bright")
             } else {
-                ""
+                crate::tr!("ex16.dark")
             };
-            return Err(format!(
-                "{SHORT_CHAINS} short chains ({SHORT_STEPS} small steps each after a bootstrap of 16) on a target with f = 0.1 on 90 % of the space and 10 on the rest: the {which} pixel's mean is {mean:.4}, exactly {:.4} ({:+.1} %, {:.1} standard errors){hint}",
-                exact[j],
-                100.0 * (mean - exact[j]) / exact[j],
-                t.abs()
+            let hint = if j == 1 && mean < exact[j] {
+                crate::tr!("ex16.start_bias")
+            } else {
+                String::new()
+            };
+            return Err(crate::tr!(
+                "ex16.start",
+                chains = SHORT_CHAINS,
+                steps = SHORT_STEPS,
+                which,
+                mean,
+                exact = exact[j],
+                percent = 100.0 * (mean - exact[j]) / exact[j],
+                t = t.abs(),
+                hint
             ));
         }
     }
@@ -459,14 +461,22 @@ pub fn check_chain(chain: MetropolisChainFn) -> Result<(), String> {
     let (mean, se) = got[j];
     let exact = exact_pixel(j);
     let why = if matches {
-        "the acceptance ratio is upside down: the chain prefers darker states, so it lingers where f is small (the brighter proposal must always be taken)"
+        crate::tr!("ex16.upside_down")
     } else {
-        "the chain is biased: check that it visits states in proportion to f (the acceptance for a symmetric proposal), that both proposals are symmetric, and what each step splats"
+        crate::tr!("ex16.biased")
     };
-    Err(format!(
-        "{CHAINS} independent chains of {STEPS} steps on a 1-D image with f(u) = 0.2 + u² ({BINS} pixels, exact answer known): pixel {j} is {mean:.5}, exactly {exact:.5} ({:+.1} %, {:.1} standard errors, more than the {T_MAX} allowed) — {why}",
-        100.0 * (mean - exact) / exact,
-        (mean - exact).abs() / se.max(1e-300)
+    Err(crate::tr!(
+        "ex16.long",
+        chains = CHAINS,
+        steps = STEPS,
+        bins = BINS,
+        j,
+        mean,
+        exact,
+        percent = 100.0 * (mean - exact) / exact,
+        t = (mean - exact).abs() / se.max(1e-300),
+        t_max = T_MAX,
+        why
     ))
 }
 
@@ -499,9 +509,7 @@ pub fn door_max_t(chain: MetropolisChainFn, seed: u64) -> Result<f64, String> {
     let c = &EX16_DOOR;
     let (mean_path, var_path) = reference_paths(c);
     let read = |p: &std::path::Path| {
-        Image::read_exr(p).map_err(|e| {
-            format!("grader: the reference {} is missing or unreadable ({e}): run `cargo run --release -p lesson11 -- references --grader-only`", p.display())
-        })
+        Image::read_exr(p).map_err(|e| crate::tr!("compare.missing", path = p.display(), e))
     };
     let (reference, reference_var) = (read(&mean_path)?, read(&var_path)?);
     let scene = door_scene()?;
@@ -517,15 +525,17 @@ pub fn door_max_t(chain: MetropolisChainFn, seed: u64) -> Result<f64, String> {
     let film = exercises::plug::chains_film(&images, c.size, c.size);
     let student = film.image();
     if (student.width, student.height) != (reference.width, reference.height) {
-        return Err(format!(
-            "grader: the reference of {} is {}×{}, not {}×{}: run `cargo run --release -p lesson11 -- references --grader-only`",
-            c.name, reference.width, reference.height, student.width, student.height
+        return Err(crate::tr!(
+            "compare.size",
+            name = c.name,
+            rw = reference.width,
+            rh = reference.height,
+            w = student.width,
+            h = student.height
         ));
     }
     if let Some(p) = student.pixels.iter().find(|p| !p.is_finite()) {
-        return Err(format!(
-            "door: your chains' image has a pixel {p} (NaN or infinite)"
-        ));
+        return Err(crate::tr!("ex16.door_nonfinite", p));
     }
     // Each chain's tile means, then their mean and spread over the chains.
     let per_chain: Vec<Vec<Color>> = images
@@ -567,22 +577,22 @@ pub fn door_max_t(chain: MetropolisChainFn, seed: u64) -> Result<f64, String> {
     });
     let mean = |img: &Image| raytracer::metrics::mean(img).element_sum() / 3.0;
     let (z, tile, got, expected) = worst;
-    let mut msg = format!(
-        "door ({} chains of {} mutations over bidirectional path tracing, {}×{}): your picture differs from the reference in tile {tile} (mean {got:.5} against {expected:.5}, |t| = {z:.1} > {DOOR_T_MAX}, the standard error from the spread of the independent chains); mean of your image {:.5}, of the reference {:.5}",
-        DOOR_CHAINS,
-        door_settings().mutations,
-        c.size,
-        c.size,
-        mean(&student),
-        mean(&reference)
+    let mut msg = crate::tr!(
+        "ex16.door",
+        chains = DOOR_CHAINS,
+        mutations = door_settings().mutations,
+        size = c.size,
+        tile,
+        got,
+        expected,
+        z,
+        t_max = DOOR_T_MAX,
+        yours = mean(&student),
+        reference = mean(&reference)
     );
     match written {
-        Ok(()) => msg.push_str(&format!(
-            "; see {}/{}_{{student,reference}}.png",
-            dir.display(),
-            c.name
-        )),
-        Err(e) => msg.push_str(&format!(" (could not write the images: {e})")),
+        Ok(()) => msg.push_str(&crate::tr!("ex16.see", dir = dir.display(), name = c.name)),
+        Err(e) => msg.push_str(&crate::tr!("compare.no_images", e)),
     }
     Err(msg)
 }

@@ -1,10 +1,12 @@
 //! Both languages of the toolkit, checked: every message of the grader
 //! exists in English and in Bulgarian with the same placeholders (a missing
-//! one is named), every key the grader uses exists, the graders whose
-//! messages are still English only are listed, and the Bulgarian texts use
-//! the glossary's words (`lang/glossary.toml`). That a Bulgarian failure
-//! names the same mistake as the English one is checked on the wrong
-//! fixtures, in `check_grader.rs` (`fails_in_both`).
+//! one is named), every key the grader uses exists, no grader makes a
+//! message of English prose outside the tables, and the Bulgarian texts use
+//! the glossary's words (`lang/glossary.toml`). With `--features solutions`
+//! (the stubs are the student's to edit) every stub carries its task in
+//! Bulgarian too. That a Bulgarian failure names the same mistake as the
+//! English one is checked on the wrong fixtures, in `check_grader.rs`
+//! (`fails_in_both`).
 
 use std::collections::BTreeSet;
 
@@ -59,12 +61,6 @@ fn messages_exist_in_both_languages() {
     assert!(unused.is_empty(), "messages no grader uses: {unused:?}");
 }
 
-/// The graders whose messages are still written in English in their code
-/// (a `format!("…")` of English prose, or an English literal made a
-/// `String`), not keyed in `tests/messages/`: what remains to translate.
-/// The list must stay exact, so it only shrinks.
-const ENGLISH_ONLY: &[&str] = &["ex16_metropolis.rs"];
-
 /// Sources whose messages are for the instructor (the checks of the texts
 /// and of the messages themselves), not the student.
 const INSTRUCTOR_ONLY: &[&str] = &["messages.rs", "texts.rs"];
@@ -109,8 +105,11 @@ fn english_messages(source: &str) -> Vec<String> {
     out
 }
 
+/// No grader writes a message in English in its code (a `format!("…")` of
+/// English prose, or an English literal made a `String`): every message is
+/// keyed in `tests/messages/`, so it exists in both languages.
 #[test]
-fn bulgarian_everywhere_the_list_says() {
+fn no_grader_message_is_english_only() {
     let english: Vec<String> = grader_sources()
         .into_iter()
         .filter(|(name, _)| !INSTRUCTOR_ONLY.contains(&name.as_str()))
@@ -127,9 +126,9 @@ fn bulgarian_everywhere_the_list_says() {
         })
         .map(|(name, _)| name)
         .collect();
-    assert_eq!(
-        english, ENGLISH_ONLY,
-        "the graders whose messages are English only (left) and the list ENGLISH_ONLY (right) differ"
+    assert!(
+        english.is_empty(),
+        "graders with messages in English only, not in tests/messages/{{en,bg}}.toml: {english:?}"
     );
     assert!(english_messages("Err(format!(\"your code is wrong\"))").len() == 1);
     assert!(english_messages("tr!(\"ex03.albedo\", x = format!(\"{x:.3}\"))").is_empty());
@@ -187,8 +186,19 @@ fn bulgarian_texts_use_the_glossary_words() {
             ));
         }
     }
+    let found = avoided_words(&texts);
+    assert!(
+        found.is_empty(),
+        "words the glossary avoids:\n{}",
+        found.join("\n")
+    );
+}
+
+/// Every word the glossary avoids in `(place, text)`, one line each.
+fn avoided_words(texts: &[(String, String)]) -> Vec<String> {
+    let terms = glossary();
     let mut found = Vec::new();
-    for (place, text) in &texts {
+    for (place, text) in texts {
         let lower = text.to_lowercase();
         for (en, bg, avoid) in &terms {
             for w in avoid.iter().filter(|w| lower.contains(&w.to_lowercase())) {
@@ -198,9 +208,154 @@ fn bulgarian_texts_use_the_glossary_words() {
             }
         }
     }
-    assert!(
-        found.is_empty(),
-        "words the glossary avoids:\n{}",
-        found.join("\n")
+    found
+}
+
+/// The heading of a stub's task in Bulgarian, under the English one.
+const BULGARIAN_HEADING: &str = "//! # На български";
+
+/// Whether a text has Bulgarian letters in it.
+fn has_cyrillic(text: &str) -> bool {
+    text.chars()
+        .any(|c| ('а'..='я').contains(&c.to_lowercase().next().unwrap_or(c)))
+}
+
+/// What is missing from a stub's Bulgarian, one line each (empty: nothing):
+/// the section `# На български` with the exercise's number and the
+/// Bulgarian deck's slides (`„Заглавие“`, as the registry's `slides_bg`),
+/// a Bulgarian line in each function's doc, a `// TODO (бг):` line in each
+/// function.
+fn bulgarian_problems(e: &exercises::Exercise, text: &str) -> Vec<String> {
+    let file = &e.file;
+    let Some((english, bulgarian)) = text.split_once(BULGARIAN_HEADING) else {
+        return vec![format!("{file}: no section \"{BULGARIAN_HEADING}\"")];
+    };
+    let mut out = Vec::new();
+    let task: String = bulgarian
+        .lines()
+        .skip(1)
+        .map_while(|l| l.strip_prefix("//!"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let number = e.number().unwrap_or(0);
+    if !task
+        .trim_start()
+        .starts_with(&format!("Задача {number} — "))
+    {
+        out.push(format!(
+            "{file}: the Bulgarian section opens with \"Задача {number} — \""
+        ));
+    }
+    if task.len() < english.len() / 3 || !has_cyrillic(&task) {
+        out.push(format!(
+            "{file}: the Bulgarian section is not the task in Bulgarian"
+        ));
+    }
+    let slides: Vec<String> = task
+        .split_once("Слайдове:")
+        .or_else(|| task.split_once("Слайд:"))
+        .map(|(_, rest)| {
+            let paragraph = rest.split("\n\n").next().unwrap_or_default();
+            paragraph
+                .split('„')
+                .skip(1)
+                .filter_map(|q| q.split_once('“').map(|(t, _)| t))
+                .map(|t| t.split_whitespace().collect::<Vec<_>>().join(" "))
+                .collect()
+        })
+        .unwrap_or_default();
+    if slides != e.slides_bg {
+        out.push(format!(
+            "{file}: the Bulgarian section cites the slides {slides:?}, the registry's slides_bg {:?}",
+            e.slides_bg
+        ));
+    }
+    let lines: Vec<&str> = text.lines().collect();
+    for (i, line) in lines.iter().enumerate() {
+        let Some(name) = line.strip_prefix("pub fn ") else {
+            continue;
+        };
+        let name = name.split('(').next().unwrap_or_default();
+        let doc: String = lines[..i]
+            .iter()
+            .rev()
+            .skip_while(|l| !l.starts_with("///"))
+            .take_while(|l| l.starts_with("///"))
+            .copied()
+            .collect();
+        if !has_cyrillic(&doc) {
+            out.push(format!("{file}: `{name}` has no Bulgarian line in its doc"));
+        }
+        let body: String = lines[i..]
+            .iter()
+            .take_while(|l| **l != "}")
+            .copied()
+            .collect();
+        if !body.contains("// TODO (бг): ") {
+            out.push(format!("{file}: `{name}` has no `// TODO (бг):` line"));
+        }
+    }
+    out
+}
+
+/// Each check of a stub's Bulgarian bites: a stub built here with its task
+/// in both languages has no problem, and each change is named.
+#[test]
+fn each_bulgarian_stub_check_catches_its_own_change() {
+    let reg = exercises::registry();
+    let e = &reg[2];
+    let slides: Vec<String> = e.slides_bg.iter().map(|t| format!("„{t}“")).collect();
+    let good = format!(
+        "//! Exercise 3 — the Lambertian BRDF.\n//!\n//! ---\n//!\n{BULGARIAN_HEADING}\n//!\n\
+         //! Задача 3 — ламбертовата BRDF.\n//!\n//! Слайдове: {}.\n//!\n\
+         //! Пресметнете f_r.\n\n\
+         /// f_r.\n///\n/// f_r на ламбертова повърхност.\n\
+         pub fn f_r() -> f32 {{\n    // TODO: the constant.\n    // TODO (бг): константата.\n    todo!()\n}}\n",
+        slides.join(", ")
     );
+    assert_eq!(bulgarian_problems(e, &good), Vec::<String>::new(), "{good}");
+    let only = |text: String, expected: &str| {
+        let problems = bulgarian_problems(e, &text);
+        assert!(
+            problems.len() == 1 && problems[0].contains(expected),
+            "expected only {expected:?}, got {problems:?} for:\n{text}"
+        );
+    };
+    only(
+        good.replace(BULGARIAN_HEADING, "//! # In Bulgarian"),
+        "no section",
+    );
+    only(good.replace("Задача 3 — ", "Задача 4 — "), "opens with");
+    only(
+        good.replace(&slides[0], "„Path tracing (II)“"),
+        "cites the slides",
+    );
+    only(
+        good.replace("/// f_r на ламбертова повърхност.\n", ""),
+        "no Bulgarian line in its doc",
+    );
+    only(
+        good.replace("    // TODO (бг): константата.\n", ""),
+        "no `// TODO (бг):` line",
+    );
+}
+
+/// Every stub carries its task in Bulgarian, under the English one, in the
+/// glossary's words. The stubs are the student's to edit: only in the
+/// instructor's run.
+#[cfg(feature = "solutions")]
+#[test]
+fn every_stub_has_its_task_in_bulgarian() {
+    let mut problems = Vec::new();
+    let mut sections = Vec::new();
+    for e in exercises::registry() {
+        let text =
+            std::fs::read_to_string(exercises::crate_dir().join(&e.file)).expect("exercise file");
+        problems.extend(bulgarian_problems(&e, &text));
+        if let Some((_, bulgarian)) = text.split_once(BULGARIAN_HEADING) {
+            sections.push((format!("exercises/{}", e.file), bulgarian.to_string()));
+        }
+    }
+    problems.extend(avoided_words(&sections));
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
 }
