@@ -36,7 +36,7 @@ use crate::scene::Scene;
 /// zero). Every density is the one
 /// its strategy actually samples with, also that of the light point that
 /// `s = 1` resamples by next event estimation (a sphere light's cone), so
-/// the weights of a path sum to 1 by construction (`tests::weights_sum_to_one`).
+/// the weights of a path sum to 1 by construction (`tests/unit/integrator_mis_weight.rs`).
 pub fn mis_weight(
     scene: &Scene,
     light: &mut [Vertex],
