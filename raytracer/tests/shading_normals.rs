@@ -54,6 +54,34 @@ fn film(scene: &Scene, integrator: &dyn Integrator, spp: u32, seed: u64) -> Film
     render(scene, integrator, &options).film
 }
 
+/// The low-poly smooth ball at 24 × 24, the size of its comparisons of the
+/// light that exactly three segments carry.
+fn small_low_poly_ball() -> Scene {
+    let mut scene = low_poly_ball();
+    scene.set_resolution(24, 24);
+    scene
+}
+
+/// The light of exactly three segments on [`small_low_poly_ball`]: the path
+/// tracer at max depth 3 minus max depth 2, 4096 spp — the reference of both
+/// smooth-ball comparisons (instant radiosity's, and the biased
+/// integrators'), rendered once for the test binary.
+fn three_segment_reference() -> &'static Film {
+    static REFERENCE: std::sync::OnceLock<Film> = std::sync::OnceLock::new();
+    REFERENCE.get_or_init(|| {
+        let depth = |d| PathTracer {
+            max_depth: Some(d),
+            ..PathTracer::default()
+        };
+        let (deep, shallow) = (depth(3), depth(2));
+        let difference = DepthDifference {
+            deep: &deep,
+            shallow: &shallow,
+        };
+        film(&small_low_poly_ball(), &difference, 4096, 1)
+    })
+}
+
 /// Which pixels see the object `name` through their centre.
 fn mask(scene: &Scene, name: &str) -> Vec<bool> {
     let object = scene.objects.iter().position(|o| o.name == name).unwrap() as u32;
@@ -311,28 +339,9 @@ fn masked_mean(image: &Image, mask: &[bool]) -> f64 {
 fn vpl_sees_the_low_poly_smooth_ball_as_the_path_tracer_does() {
     use raytracer::integrator::{InstantRadiosity, VplSettings};
     use raytracer::metrics::{tile_means, tile_variances};
-    let mut scene = low_poly_ball();
-    scene.set_resolution(24, 24);
+    let scene = small_low_poly_ball();
     let tile = 6;
-    let (pt3, pt2) = (
-        PathTracer {
-            max_depth: Some(3),
-            ..PathTracer::default()
-        },
-        PathTracer {
-            max_depth: Some(2),
-            ..PathTracer::default()
-        },
-    );
-    let reference = film(
-        &scene,
-        &DepthDifference {
-            deep: &pt3,
-            shallow: &pt2,
-        },
-        4096,
-        1,
-    );
+    let reference = three_segment_reference();
     let (ref_image, ref_var) = (reference.image(), reference.variance_image());
     let masks = [mask(&scene, "floor"), mask(&scene, "ball")];
     // The path tracer's mean and variance of the mean, per region then per tile.
@@ -441,28 +450,8 @@ fn biased_integrators_see_the_low_poly_smooth_ball_as_the_path_tracer_does() {
     use raytracer::render::render_sppm;
     use raytracer::render::sppm::SppmSettings;
     let start = std::time::Instant::now();
-    let mut scene = low_poly_ball();
-    scene.set_resolution(24, 24);
-    let (pt3, pt2) = (
-        PathTracer {
-            max_depth: Some(3),
-            ..PathTracer::default()
-        },
-        PathTracer {
-            max_depth: Some(2),
-            ..PathTracer::default()
-        },
-    );
-    let reference = film(
-        &scene,
-        &DepthDifference {
-            deep: &pt3,
-            shallow: &pt2,
-        },
-        4096,
-        1,
-    )
-    .image();
+    let scene = small_low_poly_ball();
+    let reference = three_segment_reference().image();
     let masks = [mask(&scene, "floor"), mask(&scene, "ball")];
     let never = std::sync::atomic::AtomicBool::new(false);
     let runs = 0..8u64;
