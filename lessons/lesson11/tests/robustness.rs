@@ -730,7 +730,6 @@ fn ctrl_c_stops_every_integrator_and_keeps_its_work() {
         case("direct", vec![], "64", "10000000"),
         case("ao", vec![], "64", "10000000"),
     ];
-    let next = std::sync::atomic::AtomicUsize::new(0);
     let failures = std::sync::Mutex::new(Vec::new());
     let one = |c: &Case| {
         let Case {
@@ -781,17 +780,7 @@ fn ctrl_c_stops_every_integrator_and_keeps_its_work() {
         }
         std::fs::remove_dir_all(&dir).ok();
     };
-    std::thread::scope(|s| {
-        for _ in 0..2 {
-            s.spawn(|| {
-                while let Some(case) =
-                    cases.get(next.fetch_add(1, std::sync::atomic::Ordering::Relaxed))
-                {
-                    one(case);
-                }
-            });
-        }
-    });
+    on_two_workers(&cases, one);
     let failures = failures.into_inner().unwrap();
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
@@ -886,7 +875,6 @@ fn ctrl_c_stops_every_slow_phase() {
             ready("M samples/s"),
         ),
     ];
-    let next = std::sync::atomic::AtomicUsize::new(0);
     let failures = std::sync::Mutex::new(Vec::new());
     let one = |(name, args, ready): &(&str, Vec<&str>, Ready)| {
         let dir = fresh(&format!("phase-{}", name.replace([' ', '\''], "-")));
@@ -918,17 +906,7 @@ fn ctrl_c_stops_every_slow_phase() {
         }
         std::fs::remove_dir_all(&dir).ok();
     };
-    std::thread::scope(|s| {
-        for _ in 0..2 {
-            s.spawn(|| {
-                while let Some(case) =
-                    cases.get(next.fetch_add(1, std::sync::atomic::Ordering::Relaxed))
-                {
-                    one(case);
-                }
-            });
-        }
-    });
+    on_two_workers(&cases, one);
     let failures = failures.into_inner().unwrap();
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
@@ -1944,4 +1922,21 @@ fn light_tracing_says_it_cannot_see_the_sky() {
         text(&o.stderr)
     );
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Runs `one` on every case, two at a time (the machine's two cores): each
+/// case is a process to start and interrupt, most of it spent waiting.
+fn on_two_workers<T: Sync>(cases: &[T], one: impl Fn(&T) + Sync) {
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    std::thread::scope(|s| {
+        for _ in 0..2 {
+            s.spawn(|| {
+                while let Some(case) =
+                    cases.get(next.fetch_add(1, std::sync::atomic::Ordering::Relaxed))
+                {
+                    one(case);
+                }
+            });
+        }
+    });
 }
