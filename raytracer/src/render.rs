@@ -471,7 +471,7 @@ impl MemoryCap {
 }
 
 /// `bytes` in GiB with one decimal (`0.1 GiB` at least, for readability).
-fn gib(bytes: u64) -> String {
+pub fn gib(bytes: u64) -> String {
     let g = bytes as f64 / (1u64 << 30) as f64;
     if g >= 1000.0 {
         format!("{g:.0} GiB")

@@ -156,8 +156,11 @@ impl IntegratorKind {
                 check_work(
                     "SPPM",
                     settings.photons as f64 * options.spp as f64,
-                    "light paths",
-                    "--photons (per pass) or --spp (passes)",
+                    lang::pick("light paths", "светлинни пътя"),
+                    lang::pick(
+                        "--photons (per pass) or --spp (passes)",
+                        "--photons (на проход) или --spp (проходи)",
+                    ),
                     force,
                 )?;
                 return Ok(IntegratorPlan::Sppm(settings));
@@ -251,16 +254,27 @@ fn check_ray_budget(
 ) -> Result<()> {
     let depth = naive
         .max_depth()
-        .map_or_else(|| "unlimited".to_string(), |d| d.to_string());
+        .map_or_else(|| lang::pick("unlimited", "без граница").to_string(), |d| d.to_string());
     let Some(per_sample) = naive.rays_per_sample_bound() else {
+        let ends = match (naive.roulette_depth().is_some(), lang::current()) {
+            (true, lang::Lang::En) => "Russian roulette",
+            (false, lang::Lang::En) => "the cutoff",
+            (true, lang::Lang::Bg) => "руската рулетка",
+            (false, lang::Lang::Bg) => "прагът (cutoff)",
+        };
         crate::console::say!(
-            "naive recursion (N = {:?}, D = {depth}): no bound on the rays per sample; {} ends the recursion",
-            naive.branching(),
-            if naive.roulette_depth().is_some() {
-                "Russian roulette"
-            } else {
-                "the cutoff"
-            }
+            "{}",
+            lang::fill(
+                lang::pick(
+                    "naive recursion (N = {n}, D = {depth}): no bound on the rays per sample; {ends} ends the recursion",
+                    "наивна рекурсия (N = {n}, D = {depth}): няма граница на лъчите за проба; рекурсията я спира {ends}",
+                ),
+                &[
+                    ("n", &format!("{:?}", naive.branching())),
+                    ("depth", &depth),
+                    ("ends", &ends),
+                ]
+            )
         );
         return Ok(());
     };
@@ -268,22 +282,36 @@ fn check_ray_budget(
     let total = per_sample as f64 * samples;
     // The bound saturates at u64::MAX ("18446744073709551615 rays").
     let per_sample = if per_sample == u64::MAX {
-        format!("more than {:.1e}", u64::MAX as f64)
+        format!("{} {:.1e}", lang::pick("more than", "повече от"), u64::MAX as f64)
     } else {
         per_sample.to_string()
     };
     crate::console::say!(
-        "naive recursion (N = {:?}, D = {depth}): at most {per_sample} rays per sample, {total:.2e} rays for {}×{} at {} spp",
-        naive.branching(),
-        scene.camera.width,
-        scene.camera.height,
-        options.spp
+        "{}",
+        lang::fill(
+            lang::pick(
+                "naive recursion (N = {n}, D = {depth}): at most {per_sample} rays per sample, {total} rays for {w}×{h} at {spp} spp",
+                "наивна рекурсия (N = {n}, D = {depth}): най-много {per_sample} лъча за проба, {total} лъча за {w}×{h} при {spp} spp",
+            ),
+            &[
+                ("n", &format!("{:?}", naive.branching())),
+                ("depth", &depth),
+                ("per_sample", &per_sample),
+                ("total", &format!("{total:.2e}")),
+                ("w", &scene.camera.width),
+                ("h", &scene.camera.height),
+                ("spp", &options.spp),
+            ]
+        )
     );
     check_work(
-        "naive recursion",
+        lang::pick("naive recursion", "наивната рекурсия"),
         total,
-        "rays",
-        "--branching, --max-depth, --spp or the image size",
+        lang::pick("rays", "лъча"),
+        lang::pick(
+            "--branching, --max-depth, --spp or the image size",
+            "--branching, --max-depth, --spp или размера на картината",
+        ),
         force,
     )
 }
@@ -438,20 +466,37 @@ impl IntegratorArgs {
             .memory_needed(w, h, threads)
             .and_then(|m| m.checked_add(memory_needed(w, h)?));
         check_memory(
-            &format!(
-                "Metropolis light transport at {w}×{h} on {threads} threads with {} bootstrap paths",
-                metropolis.bootstrap_paths(w, h)
+            &lang::fill(
+                lang::pick(
+                    "Metropolis light transport at {w}×{h} on {threads} threads with {paths} bootstrap paths",
+                    "Metropolis light transport при {w}×{h} на {threads} нишки с {paths} пътя за bootstrap",
+                ),
+                &[
+                    ("w", &w),
+                    ("h", &h),
+                    ("threads", &threads),
+                    ("paths", &metropolis.bootstrap_paths(w, h)),
+                ],
             ),
             bytes,
-            "--width and --height, --bootstrap or --threads",
+            lang::pick(
+                "--width and --height, --bootstrap or --threads",
+                "--width и --height, --bootstrap или --threads",
+            ),
             force,
         )?;
         // Each mutation and each bootstrap path is one bidirectional sample.
         check_work(
             "Metropolis light transport",
             options.spp as f64 * pixels as f64 + metropolis.bootstrap_paths(w, h) as f64,
-            "bidirectional paths (mutations and bootstrap)",
-            "--spp, --bootstrap or the image size",
+            lang::pick(
+                "bidirectional paths (mutations and bootstrap)",
+                "двупосочни пътя (мутации и bootstrap)",
+            ),
+            lang::pick(
+                "--spp, --bootstrap or the image size",
+                "--spp, --bootstrap или размера на картината",
+            ),
             force,
         )?;
         Ok((bdpt, metropolis))

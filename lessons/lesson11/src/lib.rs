@@ -153,7 +153,7 @@ pub fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e:#}");
+            eprintln!("{} {e:#}", lang::pick("error:", "грешка:"));
             ExitCode::FAILURE
         }
     }

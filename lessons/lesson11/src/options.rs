@@ -10,7 +10,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use raytracer::film::output::StagedFile;
-use raytracer::render::{MemoryCap, RenderOptions, memory_needed, thread_limit};
+use lang::Lang;
+use raytracer::render::{MemoryCap, RenderOptions, gib, memory_needed, thread_limit};
 use raytracer::scene::{Scene, builtin};
 
 /// Scene and sampling options common to the chapters.
@@ -57,13 +58,24 @@ impl SceneArgs {
         let height = self.height.unwrap_or(scene.settings.height);
         if width == 0 || height == 0 {
             bail!(
-                "the image size must be positive, got {width}×{height}: pass e.g. --width 256 --height 256"
+                "{} {width}×{height}: {}",
+                lang::pick(
+                    "the image size must be positive, got",
+                    "размерът на картината трябва да е положителен, а е"
+                ),
+                lang::pick(
+                    "pass e.g. --width 256 --height 256",
+                    "дайте например --width 256 --height 256"
+                )
             );
         }
         check_memory(
-            &format!("a {width}×{height} render"),
+            &lang::pick(
+                format!("a {width}×{height} render"),
+                format!("рендериране {width}×{height}"),
+            ),
             memory_needed(width, height),
-            "--width and --height",
+            lang::pick("--width and --height", "--width и --height"),
             self.force,
         )?;
         if width != scene.settings.width || height != scene.settings.height {
@@ -74,7 +86,10 @@ impl SceneArgs {
         }
         let spp = self.spp.unwrap_or(scene.settings.spp);
         if spp == 0 {
-            bail!("--spp must be at least 1");
+            bail!(lang::pick(
+                "--spp must be at least 1",
+                "--spp трябва да е поне 1"
+            ));
         }
         scene.settings.spp = spp;
         let options = RenderOptions {
@@ -93,7 +108,11 @@ impl SceneArgs {
 pub fn check_exposure(stops: f32) -> Result<()> {
     if !(-64.0..=64.0).contains(&stops) {
         bail!(
-            "--exposure must be a number of stops in [-64, 64] (+1 doubles the brightness), got {stops}"
+            "{} {stops}",
+            lang::pick(
+                "--exposure must be a number of stops in [-64, 64] (+1 doubles the brightness), got",
+                "--exposure трябва да е брой стъпки в [-64, 64] (+1 удвоява яркостта), а е"
+            )
         );
     }
     Ok(())
@@ -102,10 +121,21 @@ pub fn check_exposure(stops: f32) -> Result<()> {
 /// `--threads`: at least 1 and at most [`thread_limit`].
 pub fn check_threads(threads: Option<usize>) -> Result<()> {
     match threads {
-        Some(0) => bail!("--threads must be at least 1 (or left out to use every core)"),
+        Some(0) => bail!(lang::pick(
+            "--threads must be at least 1 (or left out to use every core)",
+            "--threads трябва да е поне 1 (или да се пропусне, за да се ползват всички ядра)"
+        )),
         Some(n) if n > thread_limit() => bail!(
-            "--threads {n} is more than the {} threads a render may use here (4 per core, at least 64)",
-            thread_limit()
+            "{}",
+            lang::fill(
+                lang::pick(
+                    "--threads {n} is more than the {limit} threads a render may use here \
+                     (4 per core, at least 64)",
+                    "--threads {n} е повече от {limit}-те нишки, които едно рендериране може да \
+                     ползва тук (4 на ядро, поне 64)",
+                ),
+                &[("n", &n), ("limit", &thread_limit())]
+            )
         ),
         _ => Ok(()),
     }
@@ -125,8 +155,22 @@ pub const WORK_BUDGET: f64 = 1e10;
 pub fn check_work(what: &str, count: f64, units: &str, options: &str, force: bool) -> Result<()> {
     if count > WORK_BUDGET && !force {
         bail!(
-            "{what} would trace up to {count:.2e} {units}, more than the budget of \
-             {WORK_BUDGET:.0e}: lower {options}, or pass --force"
+            "{}",
+            lang::fill(
+                lang::pick(
+                    "{what} would trace up to {count} {units}, more than the budget of \
+                     {budget}: lower {options}, or pass --force",
+                    "{what} би проследил(а) до {count} {units}, повече от бюджета от \
+                     {budget}: намалете {options} или дайте --force",
+                ),
+                &[
+                    ("what", &what),
+                    ("count", &format!("{count:.2e}")),
+                    ("units", &units),
+                    ("budget", &format!("{WORK_BUDGET:.0e}")),
+                    ("options", &options),
+                ]
+            )
         );
     }
     Ok(())
@@ -144,13 +188,38 @@ pub fn check_memory(what: &str, bytes: Option<u64>, options: &str, force: bool) 
     let cap = if force { &forced } else { &usual };
     cap.check(what, bytes).map_err(|e| {
         // Suggest --force only where it would help.
-        let advice = if !force && forced.check(what, bytes).is_ok() {
-            format!("choose smaller {options}, or pass --force")
-        } else {
-            format!("choose smaller {options}")
+        let helps = !force && forced.check(what, bytes).is_ok();
+        let advice = match (lang::current(), helps) {
+            (Lang::En, true) => format!("choose smaller {options}, or pass --force"),
+            (Lang::En, false) => format!("choose smaller {options}"),
+            (Lang::Bg, true) => format!("изберете по-малки {options} или дайте --force"),
+            (Lang::Bg, false) => format!("изберете по-малки {options}"),
+        };
+        let e = match lang::current() {
+            Lang::En => e,
+            Lang::Bg => memory_bg(what, bytes, cap, force),
         };
         anyhow::anyhow!("{e}: {advice}")
     })
+}
+
+/// [`MemoryCap::check`]'s refusal in Bulgarian.
+fn memory_bg(what: &str, bytes: Option<u64>, cap: &MemoryCap, force: bool) -> String {
+    let Some(bytes) = bytes else {
+        return format!("{what} иска повече от 2^64 байта памет, повече от всяка машина");
+    };
+    let source = if force {
+        "с --force: двойно обичайната граница"
+    } else if cap.source.contains("/proc/meminfo") && !cap.source.starts_with("a fixed") {
+        "половината от физическата памет, по /proc/meminfo"
+    } else {
+        "фиксирани 4 GiB (няма /proc/meminfo, от който да се прочете физическата памет)"
+    };
+    format!(
+        "{what} иска около {} памет, повече от границата от {} ({source})",
+        gib(bytes),
+        gib(cap.bytes)
+    )
 }
 
 /// A built-in scene by name, or a scene file by path. A built-in name wins
@@ -166,8 +235,16 @@ pub fn load_scene(name: &str) -> Result<Scene> {
     if builtin(name).is_some() {
         if path.exists() && !NOTED.swap(true, Ordering::Relaxed) {
             eprintln!(
-                "note: `{name}` is the built-in scene; to load the file {name} of this folder, \
-                 pass --scene ./{name}"
+                "{}",
+                lang::fill(
+                    lang::pick(
+                        "note: `{name}` is the built-in scene; to load the file {name} of this \
+                         folder, pass --scene ./{name}",
+                        "бележка: `{name}` е вградената сцена; за файла {name} от тази папка \
+                         дайте --scene ./{name}",
+                    ),
+                    &[("name", &name)]
+                )
             );
         }
         return Ok(Scene::builtin(name)?);
@@ -189,23 +266,35 @@ pub fn create_dir(dir: &Path) -> Result<()> {
 pub fn create_dir_for(dir: &Path, flag: &str) -> Result<()> {
     if dir.exists() && !dir.is_dir() {
         bail!(
-            "the output folder {} is a file, not a folder: choose another with {flag}",
-            dir.display()
+            "{}",
+            lang::fill(
+                lang::pick(
+                    "the output folder {dir} is a file, not a folder: choose another with {flag}",
+                    "папката за резултатите {dir} е файл, а не папка: изберете друга с {flag}",
+                ),
+                &[("dir", &dir.display()), ("flag", &flag)]
+            )
         );
     }
     std::fs::create_dir_all(dir).with_context(|| {
-        format!(
-            "cannot create the output folder {}: choose another with {flag}",
-            dir.display()
+        lang::fill(
+            lang::pick(
+                "cannot create the output folder {dir}: choose another with {flag}",
+                "не мога да създам папката за резултатите {dir}: изберете друга с {flag}",
+            ),
+            &[("dir", &dir.display()), ("flag", &flag)],
         )
     })?;
     // A staged file that is never committed: created, then removed.
     StagedFile::write(dir.join("write-test"), "a test file", |_| Ok(()))
         .map(drop)
         .with_context(|| {
-            format!(
-                "cannot write into the output folder {}: choose another with {flag}",
-                dir.display()
+            lang::fill(
+                lang::pick(
+                    "cannot write into the output folder {dir}: choose another with {flag}",
+                    "не мога да пиша в папката за резултатите {dir}: изберете друга с {flag}",
+                ),
+                &[("dir", &dir.display()), ("flag", &flag)],
             )
         })
 }

@@ -110,10 +110,17 @@ impl OutputFiles {
         if film.total_samples() == 0 && stats.interrupted {
             // A black picture would only replace a better one.
             crate::console::say!(
-                "  {}: interrupted before any sample was computed; nothing written",
-                png.display()
+                "  {}: {}",
+                png.display(),
+                lang::pick(
+                    "interrupted before any sample was computed; nothing written",
+                    "прекъснато преди да е изчислена и една проба; нищо не е записано",
+                )
             );
-            anyhow::bail!("interrupted before any sample was computed");
+            anyhow::bail!(lang::pick(
+                "interrupted before any sample was computed",
+                "прекъснато преди да е изчислена и една проба"
+            ));
         }
         let image = film.image();
         let note = partial_note(png);
@@ -142,7 +149,11 @@ impl OutputFiles {
         if !stats.interrupted {
             match std::fs::remove_file(&note) {
                 Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
-                    anyhow::bail!("cannot remove {}: {e}", note.display())
+                    anyhow::bail!(
+                        "{} {}: {e}",
+                        lang::pick("cannot remove", "не мога да изтрия"),
+                        note.display()
+                    )
                 }
                 _ => {}
             }
@@ -150,20 +161,38 @@ impl OutputFiles {
         let seconds = stats.elapsed.as_secs_f64();
         if stats.nonfinite > 0 {
             crate::console::say!(
-                "  note: {} samples were NaN, infinite or negative and counted as zero",
-                stats.nonfinite
+                "  {}",
+                lang::fill(
+                    lang::pick(
+                        "note: {n} samples were NaN, infinite or negative and counted as zero",
+                        "бележка: {n} проби бяха NaN, безкрайни или отрицателни и са броени за нула",
+                    ),
+                    &[("n", &stats.nonfinite)]
+                )
             );
         }
         if stats.interrupted {
-            crate::console::say!("  wrote {} and .exr: {}", png.display(), interrupted());
+            crate::console::say!(
+                "  {} {} {}: {}",
+                lang::pick("wrote", "записах"),
+                png.display(),
+                lang::pick("and .exr", "и .exr"),
+                interrupted()
+            );
             anyhow::bail!(
-                "interrupted; what was rendered so far is in {}",
+                "{} {}",
+                lang::pick(
+                    "interrupted; what was rendered so far is in",
+                    "прекъснато; рендерираното дотук е в"
+                ),
                 exr.display()
             );
         }
         crate::console::say!(
-            "  wrote {} and .exr ({spp} spp, {})",
+            "  {} {} {} ({spp} spp, {})",
+            lang::pick("wrote", "записах"),
             png.display(),
+            lang::pick("and .exr", "и .exr"),
             seconds_text(seconds)
         );
         Ok(Picture {
@@ -194,14 +223,27 @@ fn interrupted_summary(
 ) -> String {
     let pixels = scene.camera.width as u64 * scene.camera.height as u64;
     let expected = pixels * options.spp as u64;
-    format!(
-        "INTERRUPTED after {} of {expected} samples ({:.2} of {} spp on average, {:.2} s); \
-         {unsampled} of {pixels} pixels ({:.0} %) have no sample and are black",
-        stats.samples,
-        stats.samples as f64 / pixels.max(1) as f64,
-        options.spp,
-        stats.elapsed.as_secs_f64(),
-        100.0 * unsampled as f64 / pixels.max(1) as f64
+    let mean = stats.samples as f64 / pixels.max(1) as f64;
+    let percent = 100.0 * unsampled as f64 / pixels.max(1) as f64;
+    lang::fill(
+        lang::pick(
+            "INTERRUPTED after {done} of {expected} samples ({mean:.2} of {spp} spp on average, \
+             {seconds:.2} s); {unsampled} of {pixels} pixels ({percent:.0} %) have no sample and \
+             are black",
+            "ПРЕКЪСНАТО след {done} от {expected} проби (средно {mean:.2} от {spp} spp, \
+             {seconds:.2} s); {unsampled} от {pixels} пиксела ({percent:.0} %) нямат проба и са \
+             черни",
+        ),
+        &[
+            ("done", &stats.samples),
+            ("expected", &expected),
+            ("mean", &mean),
+            ("spp", &options.spp),
+            ("seconds", &stats.elapsed.as_secs_f64()),
+            ("unsampled", &unsampled),
+            ("pixels", &pixels),
+            ("percent", &percent),
+        ],
     )
 }
 
@@ -217,19 +259,35 @@ pub fn warn_if_unlit(scene: &Scene, integrator: &dyn Integrator) {
         && !SKYLESS.swap(true, Ordering::Relaxed)
     {
         eprintln!(
-            "warning: light tracing starts no path at the environment of `{}`: the sky's light \
-             is missing from this image (too dark, or black under a sky alone); path or bdpt \
-             render it",
-            scene.name
+            "{}",
+            lang::fill(
+                lang::pick(
+                    "warning: light tracing starts no path at the environment of `{scene}`: the \
+                     sky's light is missing from this image (too dark, or black under a sky \
+                     alone); path or bdpt render it",
+                    "внимание: light tracing не започва път от околната среда на `{scene}`: \
+                     светлината на небето липсва в тази картина (твърде тъмна или черна само под \
+                     небе); path или bdpt я рендерират",
+                ),
+                &[("scene", &scene.name)]
+            )
         );
     }
     static WARNED: AtomicBool = AtomicBool::new(false);
     if scene.lights.is_empty() && integrator.name() != "ao" && !WARNED.swap(true, Ordering::Relaxed)
     {
         eprintln!(
-            "warning: scene `{}` has no light, no emitting shape and no environment: \
-             its image is black (add an `emission`, a [[lights]] or an [environment])",
-            scene.name
+            "{}",
+            lang::fill(
+                lang::pick(
+                    "warning: scene `{scene}` has no light, no emitting shape and no \
+                     environment: its image is black (add an `emission`, a [[lights]] or an \
+                     [environment])",
+                    "внимание: сцената `{scene}` няма лампа, светеща форма или околна среда: \
+                     картината ѝ е черна (добавете `emission`, [[lights]] или [environment])",
+                ),
+                &[("scene", &scene.name)]
+            )
         );
     }
 }

@@ -171,20 +171,32 @@ impl Tour {
                 o.height.unwrap_or(scene.settings.height),
             );
             if w == 0 || h == 0 {
-                anyhow::bail!("the image size must be positive, got {w}×{h}");
+                anyhow::bail!(
+                    "{} {w}×{h}",
+                    lang::pick(
+                        "the image size must be positive, got",
+                        "размерът на картината трябва да е положителен, а е"
+                    )
+                );
             }
             scene.set_resolution(w, h);
         }
         let (w, h) = (scene.settings.width, scene.settings.height);
         check_memory(
-            &format!("a {w}×{h} render"),
+            &lang::pick(
+                format!("a {w}×{h} render"),
+                format!("рендериране {w}×{h}"),
+            ),
             memory_needed(w, h),
-            "--width and --height",
+            lang::pick("--width and --height", "--width и --height"),
             o.force,
         )?;
         if let Some(s) = o.spp {
             if s == 0 {
-                anyhow::bail!("--spp must be at least 1");
+                anyhow::bail!(lang::pick(
+                    "--spp must be at least 1",
+                    "--spp трябва да е поне 1"
+                ));
             }
             spp = s;
         }

@@ -42,6 +42,7 @@ fn the_estimate_reader_accepts_only_estimates() {
 fn bias_is_printed_with_its_error_and_shown_with_a_numbered_scale() {
     let dir = out_dir();
     let o = Command::new(env!("CARGO_BIN_EXE_lesson11"))
+        .env("LESSON11_LANG", "en")
         .args(["biased", "--quality", "tiny", "--out"])
         .arg(&dir)
         .output()

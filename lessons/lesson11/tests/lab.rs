@@ -25,6 +25,7 @@ struct Lab {
 impl Lab {
     fn start(extra: &[&str]) -> Lab {
         let mut child = Command::new(env!("CARGO_BIN_EXE_lesson11"))
+            .env("LESSON11_LANG", "en")
             .args(["lab", "--port", "0"])
             .args(extra)
             .stdin(Stdio::null())
@@ -607,6 +608,7 @@ fn sppm_and_mlt_render_progressively() {
 /// Runs `lesson11 render` with `args` into `dir`.
 fn render(dir: &Path, args: &[&str]) -> Output {
     let out = Command::new(env!("CARGO_BIN_EXE_lesson11"))
+        .env("LESSON11_LANG", "en")
         .arg("render")
         .args(args)
         .arg("--out")
@@ -1027,6 +1029,7 @@ fn stereo_pairs_compose_and_brdfs_get_their_verdict() {
 fn scene_files_come_only_from_the_folder_given() {
     let dir = temp_dir("scenes");
     let furnace = Command::new(env!("CARGO_BIN_EXE_lesson11"))
+        .env("LESSON11_LANG", "en")
         .args(["scenes", "--write", "furnace", "--to"])
         .arg(&dir)
         .output()
@@ -1055,6 +1058,7 @@ fn a_port_in_use_and_a_missing_folder_are_one_line_errors() {
     let lab = Lab::start(&[]);
     let port = lab.address.port().to_string();
     let out = Command::new(env!("CARGO_BIN_EXE_lesson11"))
+        .env("LESSON11_LANG", "en")
         .args(["lab", "--port", &port])
         .output()
         .unwrap();
@@ -1065,6 +1069,7 @@ fn a_port_in_use_and_a_missing_folder_are_one_line_errors() {
         "{err}"
     );
     let out = Command::new(env!("CARGO_BIN_EXE_lesson11"))
+        .env("LESSON11_LANG", "en")
         .args(["lab", "--port", "0", "--scenes", "/no/such/folder"])
         .output()
         .unwrap();

@@ -39,6 +39,7 @@ fn folder(name: &str) -> PathBuf {
 
 fn run(dir: &Path, args: &[&str]) -> Output {
     Command::new(EXE)
+        .env("LESSON11_LANG", "en")
         .args(args)
         .current_dir(dir)
         .output()
@@ -916,6 +917,7 @@ fn ctrl_c_stops_every_slow_phase() {
 fn start(dir: &Path, args: &[&str], env: &[(&str, &Path)]) -> std::process::Child {
     let file = |name: &str| std::fs::File::create(dir.join(name)).unwrap();
     Command::new(EXE)
+        .env("LESSON11_LANG", "en")
         .args(args)
         .envs(env.iter().copied())
         .current_dir(dir)
@@ -1258,6 +1260,7 @@ fn kill_9_during_a_rewrite_leaves_whole_files() {
         }
         let states: Vec<_> = targets.iter().map(|p| stat(p)).collect();
         let mut child = Command::new(EXE)
+        .env("LESSON11_LANG", "en")
             .args(args("6", "big"))
             .current_dir(&dir)
             .stdout(Stdio::null())
@@ -1382,6 +1385,7 @@ fn a_full_disk_leaves_the_previous_render_whole() {
     );
     let before = files(&dir);
     let o = Command::new("sh")
+        .env("LESSON11_LANG", "en")
         .args(["-c", &render])
         .current_dir(&dir)
         .output()
@@ -1761,6 +1765,7 @@ fn with_stdout(name: &str, args: &[&str], full: bool) -> (Output, PathBuf) {
         Stdio::piped()
     };
     let mut child = Command::new(EXE)
+        .env("LESSON11_LANG", "en")
         .args(args)
         .current_dir(&dir)
         .stdout(stdout)

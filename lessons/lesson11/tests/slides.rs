@@ -30,6 +30,7 @@ use std::time::{Duration, Instant};
 
 fn lesson11(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_lesson11"))
+        .env("LESSON11_LANG", "en")
         .args(args)
         .output()
         .expect("lesson11 runs")

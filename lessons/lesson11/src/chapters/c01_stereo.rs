@@ -186,27 +186,54 @@ pub fn parse_modes(names: &[String]) -> Result<Vec<Composite>> {
 fn check(args: &StereoArgs) -> Result<()> {
     if !(0.0..=1.0).contains(&args.desaturate) {
         bail!(
-            "--desaturate must lie in [0, 1] (0 = colours unchanged, 1 = grey), got {}",
+            "{} {}",
+            lang::pick(
+                "--desaturate must lie in [0, 1] (0 = colours unchanged, 1 = grey), got",
+                "--desaturate трябва да е в [0, 1] (0 = цветовете без промяна, 1 = сиво), а е"
+            ),
             args.desaturate
         );
     }
     if !(0.0..=1.0).contains(&args.leakage) {
-        bail!("--leakage must lie in [0, 1], got {}", args.leakage);
+        bail!(
+            "{} {}",
+            lang::pick(
+                "--leakage must lie in [0, 1], got",
+                "--leakage трябва да е в [0, 1], а е"
+            ),
+            args.leakage
+        );
     }
     if args.lf_views > 0 && !(args.lf_aperture.is_finite() && args.lf_aperture >= 0.0) {
         bail!(
-            "--lf-aperture must be a distance ≥ 0, got {}",
+            "{} {}",
+            lang::pick(
+                "--lf-aperture must be a distance ≥ 0, got",
+                "--lf-aperture трябва да е разстояние ≥ 0, а е"
+            ),
             args.lf_aperture
         );
     }
     if args.lf_downscale == 0 {
-        bail!("--lf-downscale must be at least 1");
+        bail!(lang::pick(
+            "--lf-downscale must be at least 1",
+            "--lf-downscale трябва да е поне 1"
+        ));
     }
     if args.lf_spp == Some(0) {
-        bail!("--lf-spp must be at least 1");
+        bail!(lang::pick(
+            "--lf-spp must be at least 1",
+            "--lf-spp трябва да е поне 1"
+        ));
     }
     if let Some(d) = args.refocus.iter().find(|d| !(d.is_finite() && **d > 0.0)) {
-        bail!("--refocus depths must be positive, got {d}");
+        bail!(
+            "{} {d}",
+            lang::pick(
+                "--refocus depths must be positive, got",
+                "дълбочините на --refocus трябва да са положителни, а една е"
+            )
+        );
     }
     check_exposure(args.exposure)
 }
@@ -221,13 +248,25 @@ fn check_light_field_memory(args: &StereoArgs, w: u32, h: u32) -> Result<()> {
         .and_then(|v| v.checked_mul(w as u64 * h as u64 * 12));
     let bytes = views.and_then(|v| v.checked_add(memory_needed(w, h)?));
     check_memory(
-        &format!("a light field of {n}×{n} views of {w}×{h}"),
+        &lang::pick(
+            format!("a light field of {n}×{n} views of {w}×{h}"),
+            format!("светлинно поле от {n}×{n} изгледа по {w}×{h}"),
+        ),
         bytes,
-        "--lf-views or a larger --lf-downscale",
+        lang::pick(
+            "--lf-views or a larger --lf-downscale",
+            "--lf-views или по-голям --lf-downscale",
+        ),
         args.scene.force,
     )?;
     if n > 0xffff {
-        bail!("--lf-views must be at most 65535 (the views are counted in 32 bits), got {n}");
+        bail!(
+            "{} {n}",
+            lang::pick(
+                "--lf-views must be at most 65535 (the views are counted in 32 bits), got",
+                "--lf-views трябва да е най-много 65535 (изгледите се броят в 32 бита), а е"
+            )
+        );
     }
     Ok(())
 }

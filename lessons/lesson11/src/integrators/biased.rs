@@ -330,14 +330,24 @@ pub fn plan(
                 "photons",
                 PHOTON_PEAK_BYTES,
             );
-            check_memory(&what, bytes, "--photons (or --max-depth)", force)?;
+            check_memory(
+                &what,
+                bytes,
+                lang::pick("--photons (or --max-depth)", "--photons (или --max-depth)"),
+                force,
+            )?;
             BiasedPlan::Photon(s)
         }
         BiasedKind::Vpl => {
             let s = args.vpl(max_depth, rr_depth, seed)?;
             let (what, bytes) =
                 tracing_memory(scene, s.paths, max_depth, rr_depth, "VPLs", VPL_PEAK_BYTES);
-            check_memory(&what, bytes, "--vpl-paths (or --max-depth)", force)?;
+            check_memory(
+                &what,
+                bytes,
+                lang::pick("--vpl-paths (or --max-depth)", "--vpl-paths (или --max-depth)"),
+                force,
+            )?;
             BiasedPlan::Vpl(s)
         }
         BiasedKind::IrradianceCache => {
@@ -367,9 +377,9 @@ pub fn sppm_plan(
         PHOTON_PEAK_BYTES,
     );
     check_memory(
-        &format!("{what} per pass"),
+        &format!("{what} {}", lang::pick("per pass", "на проход")),
         bytes,
-        "--photons (or --max-depth)",
+        lang::pick("--photons (or --max-depth)", "--photons (или --max-depth)"),
         force,
     )?;
     Ok(settings)
@@ -389,15 +399,21 @@ impl BiasedPlan {
                 check_work(
                     "photon mapping",
                     s.photons as f64,
-                    "light paths",
+                    lang::pick("light paths", "светлинни пътя"),
                     "--photons",
                     force,
                 )?;
                 check_work(
-                    "photon mapping's final gather",
+                    lang::pick(
+                        "photon mapping's final gather",
+                        "final gather на photon mapping",
+                    ),
                     s.final_gather as f64 * samples,
-                    "rays",
-                    "--final-gather, --spp or the image size",
+                    lang::pick("rays", "лъча"),
+                    lang::pick(
+                        "--final-gather, --spp or the image size",
+                        "--final-gather, --spp или размера на картината",
+                    ),
                     force,
                 )
             }
@@ -407,16 +423,28 @@ impl BiasedPlan {
                 check_work(
                     "instant radiosity",
                     vpls * samples,
-                    "shadow rays (one per VPL and sample)",
-                    "--vpl-paths, --spp or the image size",
+                    lang::pick(
+                        "shadow rays (one per VPL and sample)",
+                        "лъча за сянка (по един на VPL и проба)",
+                    ),
+                    lang::pick(
+                        "--vpl-paths, --spp or the image size",
+                        "--vpl-paths, --spp или размера на картината",
+                    ),
                     force,
                 )
             }
             BiasedPlan::IrradianceCache(s) => check_work(
-                "the irradiance cache",
+                lang::pick("the irradiance cache", "irradiance кешът"),
                 s.rays as f64 * pixels,
-                "rays (--ic-rays for each of up to one record per pixel)",
-                "--ic-rays or the image size",
+                lang::pick(
+                    "rays (--ic-rays for each of up to one record per pixel)",
+                    "лъча (--ic-rays за всеки от най-много един запис на пиксел)",
+                ),
+                lang::pick(
+                    "--ic-rays or the image size",
+                    "--ic-rays или размера на картината",
+                ),
                 force,
             ),
         }

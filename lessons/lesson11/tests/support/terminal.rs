@@ -153,6 +153,8 @@ pub fn signalled(
         // `script` runs the command with $SHELL: make it one that knows `exec`
         // and these quotes.
         .env("SHELL", "/bin/sh")
+        // The tests match the program's English.
+        .env("LESSON11_LANG", "en")
         .current_dir(dir)
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
