@@ -13,6 +13,7 @@
 //! built afterwards ([`IntegratorPlan::build`]) and can be stopped.
 
 pub mod biased;
+pub mod build_summary;
 
 pub use biased::{BiasedArgs, BiasedKind, BiasedPlan, render_sppm_to_files};
 

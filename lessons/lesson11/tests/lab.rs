@@ -1378,13 +1378,11 @@ fn the_page_speaks_bulgarian_when_asked() {
     );
 }
 
-/// What the Bulgarian page still shows in English (issue 27), each the start
-/// of a text: messages the lab passes on as `lesson11 render` and the
-/// renderer write them, in English only — a render's refusal
-/// (`options.rs`: naive recursion's ray budget) and a build's summary
-/// (`raytracer`'s photon mapping; instant radiosity's and the irradiance
-/// cache's alike). This list may only shrink.
-const ENGLISH_LEFT: &[&str] = &["naive recursion would trace up to", "photon maps: "];
+/// What the Bulgarian page still shows in English (issues 27 and 30), each
+/// the start of a text. Empty since issue 30 (the naive ray budget's refusal
+/// and the biased builds' summaries are said in Bulgarian); it may only stay
+/// empty.
+const ENGLISH_LEFT: &[&str] = &[];
 
 /// The README presents the lab, and its first screen still gives exactly
 /// the two set-up commands.

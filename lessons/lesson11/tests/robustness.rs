@@ -1945,3 +1945,56 @@ fn on_two_workers<T: Sync>(cases: &[T], one: impl Fn(&T) + Sync) {
         }
     });
 }
+
+/// The same refusals in Bulgarian (issue 30): under `LANG=bg_BG.UTF-8` each
+/// is one line that starts "грешка: " and names the same flag and value as
+/// the English one, with no English sentence left in it.
+#[test]
+fn a_bulgarian_error_names_the_same_thing() {
+    let cases: [(&[&str], &str, &str); 5] = [
+        (&["render", "--threads", "0"], "--threads", "трябва да е поне 1"),
+        (&["render", "--exposure=NaN"], "--exposure", "NaN"),
+        (&["render", "--width", "0"], "0×", "размерът на картината"),
+        (&["stereo", "--leakage", "2"], "--leakage", "а е 2"),
+        (
+            &[
+                "render",
+                "--integrator",
+                "naive",
+                "--branching",
+                "64",
+                "--max-depth",
+                "8",
+            ],
+            "--branching",
+            "наивната рекурсия би проследил(а) до",
+        ),
+    ];
+    for (args, named, bulgarian) in cases {
+        let mut all = args.to_vec();
+        all.extend(TINY);
+        all.extend(["--out", "out"]);
+        let dir = folder("bulgarian-errors");
+        let o = Command::new(EXE)
+            .env_remove("LESSON11_LANG")
+            .env_remove("LC_ALL")
+            .env_remove("LC_MESSAGES")
+            .env("LANG", "bg_BG.UTF-8")
+            .args(&all)
+            .current_dir(&dir)
+            .output()
+            .expect("lesson11 runs");
+        let err = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "{all:?}: {err}");
+        let last = err.trim_end().lines().last().unwrap_or_default();
+        assert!(last.starts_with("грешка: "), "{all:?}: {err}");
+        assert!(
+            last.contains(named) && last.contains(bulgarian),
+            "{all:?}: {last}\nexpected {named:?} and {bulgarian:?}"
+        );
+        for english in [" must ", " got ", "would trace", " or pass "] {
+            assert!(!last.contains(english), "{all:?}: English left: {last}");
+        }
+        std::fs::remove_dir_all(&dir).ok();
+    }
+}

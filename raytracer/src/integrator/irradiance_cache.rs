@@ -452,7 +452,7 @@ impl IrradianceCache {
     }
 
     /// Bytes one record holds (with its gradients, if any).
-    fn record_bytes(&self) -> usize {
+    pub fn record_bytes(&self) -> usize {
         std::mem::size_of::<Record>()
             + if self.settings.gradients {
                 std::mem::size_of::<Gradients>()

@@ -475,19 +475,19 @@ impl BiasedPlan {
             BiasedPlan::Photon(s) => {
                 let pm = in_pool(options.threads, || PhotonMapping::build(scene, s, stop))
                     .map_err(anyhow::Error::msg)?;
-                let line = pm.summary();
+                let line = super::build_summary::photon_maps(&pm);
                 (Box::new(pm), line)
             }
             BiasedPlan::Vpl(s) => {
                 let ir = in_pool(options.threads, || InstantRadiosity::build(scene, s, stop))
                     .map_err(anyhow::Error::msg)?;
-                let line = ir.summary();
+                let line = super::build_summary::vpls(&ir);
                 (Box::new(ir), line)
             }
             BiasedPlan::IrradianceCache(s) => {
                 let ic = in_pool(options.threads, || IrradianceCache::build(scene, s, stop))
                     .map_err(anyhow::Error::msg)?;
-                let line = ic.summary();
+                let line = super::build_summary::irradiance_cache(&ic);
                 (Box::new(ic), line)
             }
         };

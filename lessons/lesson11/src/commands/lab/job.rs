@@ -407,8 +407,11 @@ impl Job {
         let spawned = std::thread::Builder::new()
             .name(format!("lab-job-{id}"))
             .spawn(move || {
-                let outcome = job2.run(work, options);
-                job2.finish(outcome, &counter);
+                // The build's summary and the errors in the page's language.
+                lang::with(job2.language, || {
+                    let outcome = job2.run(work, options);
+                    job2.finish(outcome, &counter);
+                });
             });
         if let Err(e) = spawned {
             running.fetch_sub(1, Ordering::SeqCst);
