@@ -39,6 +39,7 @@
 pub mod algorithms;
 pub mod bias;
 pub mod chapters;
+pub mod cli_errors;
 pub mod commands;
 pub mod console;
 pub mod engine;
@@ -81,8 +82,10 @@ impl Cli {
     fn parse_localized() -> Cli {
         let args: Vec<String> = std::env::args().collect();
         let language = language::choose(&args);
-        let matches = language::localize(Cli::command(), language).get_matches_from(args);
-        Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit())
+        let matches = language::localize(Cli::command(), language)
+            .try_get_matches_from(args)
+            .unwrap_or_else(|e| cli_errors::exit(e));
+        Cli::from_arg_matches(&matches).unwrap_or_else(|e| cli_errors::exit(e))
     }
 }
 

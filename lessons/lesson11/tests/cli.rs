@@ -48,6 +48,79 @@ fn the_language_comes_from_lang_or_the_locale() {
     assert!(help(&[bg], &["path", "--help"]).contains("Проби на пиксел"));
 }
 
+/// `lesson11 ARGS` under `LANG=bg_BG.UTF-8` (nothing else choosing).
+fn in_bulgarian(args: &[&str]) -> Output {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_lesson11"));
+    for v in ["LESSON11_LANG", "LC_ALL", "LC_MESSAGES"] {
+        c.env_remove(v);
+    }
+    c.env("LANG", "bg_BG.UTF-8")
+        .args(args)
+        .output()
+        .expect("lesson11 runs")
+}
+
+/// clap's own error lines (issue 30): under Bulgarian each kind of command
+/// line error is our Bulgarian line naming the same argument and value,
+/// with clap's exit code 2, and no English of clap's is left; under English
+/// clap's own text, unchanged.
+#[test]
+fn command_line_errors_speak_bulgarian() {
+    let cases: [(&[&str], &[&str]); 6] = [
+        (&["--quality", "tiny"], &["непознат аргумент", "--quality"]),
+        (&["tour", "--quality", "huge"], &["„huge“", "--quality", "tiny, quick, full"]),
+        (&["tour", "--spp", "abc"], &["„abc“", "--spp", "не е цяло"]),
+        (&["tour", "--sp", "3"], &["--sp", "може би „--spp“"]),
+        (&["frobnicate"], &["непозната команда „frobnicate“"]),
+        (&["hint"], &["липсва задължителният аргумент"]),
+    ];
+    for (args, named) in cases {
+        let o = in_bulgarian(args);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.starts_with("грешка: "), "{args:?}: {err}");
+        for n in named {
+            assert!(err.contains(n), "{args:?}: {n:?} missing from {err}");
+        }
+        for english in ["error:", "Usage:", "For more information", "unexpected", "invalid"] {
+            assert!(!err.contains(english), "{args:?}: English {english:?} in {err}");
+        }
+        let en = lesson11(args);
+        assert_eq!(en.status.code(), Some(2), "{args:?}");
+        assert!(stderr(&en).starts_with("error: "), "{args:?}: {}", stderr(&en));
+    }
+}
+
+/// Every placeholder of every command's `--help` is Bulgarian under
+/// Bulgarian (`<ПРОБИ>`, not `<SPP>`), but for the names that stay as they
+/// are in both languages (SEED, K, PYTHON).
+#[test]
+fn help_placeholders_are_bulgarian() {
+    let top = String::from_utf8_lossy(&in_bulgarian(&["--help"]).stdout).into_owned();
+    let commands: Vec<String> = top
+        .lines()
+        .skip_while(|l| !l.starts_with("Команди:"))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        .filter_map(|l| l.split_whitespace().next().map(str::to_string))
+        .filter(|c| c != "help")
+        .collect();
+    assert!(commands.len() > 15, "{commands:?}");
+    let mut english = BTreeSet::new();
+    for c in &commands {
+        let help = String::from_utf8_lossy(&in_bulgarian(&[c, "--help"]).stdout).into_owned();
+        for part in help.split('<').skip(1) {
+            let name = &part[..part.find('>').unwrap_or(0)];
+            if name.chars().any(|ch| ch.is_ascii_uppercase())
+                && !["SEED", "K", "PYTHON"].contains(&name)
+            {
+                english.insert(format!("{c}: <{name}>"));
+            }
+        }
+    }
+    assert!(english.is_empty(), "English placeholders: {english:?}");
+}
+
 fn temp_dir(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("lesson11-cli-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);

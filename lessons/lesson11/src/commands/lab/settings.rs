@@ -280,7 +280,7 @@ fn clap_reason(e: &clap::Error) -> String {
         let (arg, why) = rest.split_once('\'').unwrap_or((rest, ""));
         let flag = arg.split_whitespace().next()?.trim_start_matches("--");
         let why = why.trim_start_matches(':').trim();
-        let why = lang::pick(why, why_bg(why));
+        let why = lang::pick(why, crate::cli_errors::why_bg(why));
         let invalid = lang::pick("is not valid", "не е допустима стойност");
         Some(if why.is_empty() {
             format!("--{flag}: {value:?} {invalid}")
@@ -289,21 +289,6 @@ fn clap_reason(e: &clap::Error) -> String {
         })
     });
     parsed.unwrap_or_else(|| first.to_string())
-}
-
-/// The reasons Rust's number parsers give (clap passes them on), in
-/// Bulgarian; any other reason as it is.
-fn why_bg(why: &str) -> &str {
-    match why {
-        "invalid digit found in string" => "не е цяло неотрицателно число",
-        "cannot parse integer from empty string" | "cannot parse float from empty string" => {
-            "празно поле"
-        }
-        "number too large to fit in target type" => "твърде голямо число",
-        "number too small to fit in target type" => "твърде малко число",
-        "invalid float literal" => "не е число",
-        other => other,
-    }
 }
 
 /// A message of `lesson11 render` in the page's words: every `--option`
