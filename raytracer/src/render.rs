@@ -158,7 +158,7 @@ pub fn install_interrupt_handler() {
     HANDLER.call_once(|| {
         let installed = ctrlc::set_handler(|| {
             if INTERRUPTED.swap(true, Ordering::SeqCst) {
-                eprintln!("\ninterrupted twice: exiting without writing");
+                eprintln!("\n{}", words().interrupted_twice);
                 crate::film::output::exit_removing_staged_files(130);
             }
             let message = *INTERRUPT_MESSAGE
@@ -170,6 +170,48 @@ pub fn install_interrupt_handler() {
             eprintln!("warning: cannot install the Ctrl-C handler: {e}");
         }
     });
+}
+
+/// The words of a render's summary line and progress bar. The renderer
+/// knows no language: the program above may hand it its own words once
+/// ([`say_in`]), as it hands it what Ctrl-C says ([`on_interrupt_say`]);
+/// the numbers and units (spp, s, ×) stay as they are.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Words {
+    /// "samples": the unit of work counted.
+    pub samples: &'static str,
+    /// "in", between the samples and the seconds they took.
+    pub took: &'static str,
+    /// "threads".
+    pub threads: &'static str,
+    /// "INTERRUPTED".
+    pub interrupted: &'static str,
+    /// "NaN/inf/negative values dropped", after their number.
+    pub dropped: &'static str,
+    /// "interrupted twice: exiting without writing".
+    pub interrupted_twice: &'static str,
+}
+
+/// The renderer's own words.
+pub const ENGLISH: Words = Words {
+    samples: "samples",
+    took: "in",
+    threads: "threads",
+    interrupted: "INTERRUPTED",
+    dropped: "NaN/inf/negative values dropped",
+    interrupted_twice: "interrupted twice: exiting without writing",
+};
+
+static WORDS: Mutex<Words> = Mutex::new(ENGLISH);
+
+/// Makes every later summary line and progress bar use `words`.
+pub fn say_in(words: Words) {
+    *WORDS.lock().unwrap_or_else(|poisoned| poisoned.into_inner()) = words;
+}
+
+/// The words in use ([`ENGLISH`] unless [`say_in`] chose others).
+pub fn words() -> Words {
+    *WORDS.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
 }
 
 /// Makes the first Ctrl-C say `message` instead of the render's "keeping
@@ -328,7 +370,7 @@ where
     let start = Instant::now();
     let layout = Layout::new(width, height, options.tile_size, options.spp);
     let expected = width as u64 * height as u64 * options.spp as u64;
-    let bar = progress_bar(options, expected, "samples");
+    let bar = progress_bar(options, expected, words().samples);
     let job = Job {
         layout,
         seed: options.seed,
@@ -685,19 +727,23 @@ pub fn progress_bar(options: &RenderOptions, samples: u64, unit: &str) -> Progre
 
 /// One line: what was rendered, how fast, and anything unusual.
 pub fn summary(options: &RenderOptions, w: u32, h: u32, threads: usize, s: &RenderStats) -> String {
+    let words = words();
     let mut line = format!(
-        "{}: {w}×{h}, {} spp, {} samples in {:.2} s ({} samples/s, {threads} threads)",
+        "{}: {w}×{h}, {} spp, {} {samples} {took} {:.2} s ({} {samples}/s, {threads} {threads_word})",
         options.label,
         options.spp,
         human(s.samples as f64),
         s.elapsed.as_secs_f64(),
         human(s.samples_per_second()),
+        samples = words.samples,
+        took = words.took,
+        threads_word = words.threads,
     );
     if s.interrupted {
-        line += ", INTERRUPTED";
+        line += &format!(", {}", words.interrupted);
     }
     if s.nonfinite > 0 {
-        line += &format!(", {} NaN/inf/negative values dropped", s.nonfinite);
+        line += &format!(", {} {}", s.nonfinite, words.dropped);
     }
     line
 }

@@ -176,7 +176,7 @@ pub fn equal_time(
     let mut algorithms: Vec<(&'static str, &str, Run)> = vec![
         ("path (MIS)", path.name(), pixels(scene, &path, base)),
         (
-            "path (BRDF only)",
+            lang::pick("path (BRDF only)", "path (само по BRDF)"),
             path_brdf.name(),
             pixels(scene, &path_brdf, base),
         ),
@@ -185,11 +185,19 @@ pub fn equal_time(
     ];
     if also.naive {
         let run = pixels(scene, &naive, base);
-        algorithms.insert(0, ("naive recursion, N = 4 then 1", naive.name(), run));
+        let label = lang::pick(
+            "naive recursion, N = 4 then 1",
+            "наивна рекурсия, N = 4, после 1",
+        );
+        algorithms.insert(0, (label, naive.name(), run));
     }
     if also.metropolis {
         let run = metropolis(scene, &bdpt, base);
-        algorithms.push(("Metropolis (over bidirectional)", "mlt", run));
+        let label = lang::pick(
+            "Metropolis (over bidirectional)",
+            "Metropolis (върху bidirectional)",
+        );
+        algorithms.push((label, "mlt", run));
     }
     let mut rows = Vec::new();
     for (algorithm, name, run) in algorithms {

@@ -143,11 +143,29 @@ impl FromArgMatches for Command {
     }
 }
 
+/// The renderer's summary line and progress bar in Bulgarian (see
+/// `raytracer::render::Words`: the renderer knows no language, so the words
+/// are handed down to it).
+const BULGARIAN_RENDER_WORDS: raytracer::render::Words = raytracer::render::Words {
+    samples: "проби",
+    took: "за",
+    threads: "нишки",
+    interrupted: "ПРЕКЪСНАТО",
+    dropped: "стойности NaN/inf/отрицателни, изхвърлени",
+    interrupted_twice: "прекъснато два пъти: излизам, без да записвам",
+};
+
 /// The program: parses the command line (in the language it asks for) and runs
 /// the tour, a chapter or a command; an error is one line on standard error.
 pub fn main() -> ExitCode {
     let cli = Cli::parse_localized();
     raytracer::render::install_interrupt_handler();
+    if lang::current() == lang::Lang::Bg {
+        raytracer::render::say_in(BULGARIAN_RENDER_WORDS);
+        raytracer::render::on_interrupt_say(
+            "прекъснато: спирам и пазя изчислените дотук проби (прекъснете пак, за да излезете)",
+        );
+    }
     let result = match cli.command.unwrap_or(Command::Tour(TourArgs::default())) {
         Command::Tour(args) => chapters::run(&args),
         Command::Chapter(chapter, matches) => chapters::run_alone(chapter, &matches),

@@ -108,7 +108,7 @@ pub fn mitsuba_cornell() -> Result<Reference> {
         variance: read(&dir.join("cornell-mitsuba-variance.exr"))?,
         spp: 2048,
         source: "Mitsuba 3.9.1, 2048 spp".into(),
-        name: "Mitsuba 3's image",
+        name: lang::pick("Mitsuba 3's image", "картината на Mitsuba 3"),
     })
 }
 
@@ -230,11 +230,17 @@ impl StoredSettings {
             mean: read(&mean)?,
             variance: read(&variance)?,
             spp: self.spp,
-            source: format!(
-                "our bidirectional path tracer, another seed, {} spp (stored)",
-                self.spp
+            source: lang::pick(
+                format!(
+                    "our bidirectional path tracer, another seed, {} spp (stored)",
+                    self.spp
+                ),
+                format!(
+                    "нашият bidirectional path tracer, друг seed, {} spp (запазен)",
+                    self.spp
+                ),
             ),
-            name: "the stored reference",
+            name: lang::pick("the stored reference", "запазения еталон"),
         })
     }
 
@@ -296,8 +302,14 @@ pub fn render_now(scene: &Scene, base: &RenderOptions, max_depth: u32, spp: u32)
         mean: film.image(),
         variance: film.variance_image(),
         spp,
-        source: format!("our bidirectional path tracer, another seed, {spp} spp (rendered now)"),
-        name: "a reference rendered now with another seed",
+        source: lang::pick(
+            format!("our bidirectional path tracer, another seed, {spp} spp (rendered now)"),
+            format!("нашият bidirectional path tracer, друг seed, {spp} spp (рендериран сега)"),
+        ),
+        name: lang::pick(
+            "a reference rendered now with another seed",
+            "еталон, рендериран сега с друг seed",
+        ),
     }
 }
 
@@ -336,15 +348,30 @@ pub fn independent(
         Ok((reference, depth)) => match reference.at_size(w, h) {
             Some(r) => return (r, depth),
             None => crate::console::say!(
-                "  note: the stored reference of {} is {}×{}, which {w}×{h} does not divide; \
-                 rendering one now",
-                scene.name,
-                reference.mean.width,
-                reference.mean.height
+                "  {}",
+                lang::fill(
+                    lang::pick(
+                        "note: the stored reference of {scene} is {rw}×{rh}, which {w}×{h} does \
+                         not divide; rendering one now",
+                        "бележка: запазеният еталон на {scene} е {rw}×{rh}, което {w}×{h} не \
+                         дели; рендерирам нов сега",
+                    ),
+                    &[
+                        ("scene", &scene.name),
+                        ("rw", &reference.mean.width),
+                        ("rh", &reference.mean.height),
+                        ("w", &w),
+                        ("h", &h),
+                    ]
+                )
             ),
         },
         Err(e) if builtin.is_some_and(|b| ["cornell", "door", "caustic"].contains(&b)) => {
-            crate::console::say!("  note: {e:#}; rendering a reference now")
+            crate::console::say!(
+                "  {} {e:#}; {}",
+                lang::pick("note:", "бележка:"),
+                lang::pick("rendering a reference now", "рендерирам еталон сега")
+            )
         }
         Err(_) => {}
     }

@@ -120,8 +120,20 @@ fn render(tour: &Tour) -> Result<Section> {
         let (reference, max_depth) = independent(builtin, &scene, &base, 5, base.spp);
         let floor = reference.noise_floor();
         crate::console::say!(
-            "  {name}: max depth {max_depth}, reference {} (noise floor {floor:.5})",
-            reference.source
+            "  {}",
+            lang::fill(
+                lang::pick(
+                    "{name}: max depth {max_depth}, reference {source} (noise floor {floor:.5})",
+                    "{name}: максимална дълбочина {max_depth}, еталон {source} (дъно на шума \
+                     {floor:.5})",
+                ),
+                &[
+                    ("name", &name),
+                    ("max_depth", &max_depth),
+                    ("source", &reference.source),
+                    ("floor", &floor),
+                ]
+            )
         );
         floors.push(format!("{name} {floor:.5} ({})", reference.source));
         if name == "door" {

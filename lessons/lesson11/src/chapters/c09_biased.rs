@@ -210,9 +210,22 @@ fn render(tour: &Tour) -> Result<Section> {
     let (reference, max_depth) = independent(builtin, &scene, &base, 5, 256);
     let floor = reference.noise_floor();
     crate::console::say!(
-        "  {} {}×{}: max depth {max_depth}, reference {} (noise floor {floor:.5})",
-        scene.name,
-        scene.camera.width, scene.camera.height, reference.source
+        "  {}",
+        lang::fill(
+            lang::pick(
+                "{name} {w}×{h}: max depth {max_depth}, reference {source} (noise floor {floor:.5})",
+                "{name} {w}×{h}: максимална дълбочина {max_depth}, еталон {source} (дъно на шума \
+                 {floor:.5})",
+            ),
+            &[
+                ("name", &scene.name),
+                ("w", &scene.camera.width),
+                ("h", &scene.camera.height),
+                ("max_depth", &max_depth),
+                ("source", &reference.source),
+                ("floor", &floor),
+            ]
+        )
     );
     // The lamp and the pixels at its edge are left out of every error.
     let counted = off_the_light(&reference.mean);
@@ -220,14 +233,17 @@ fn render(tour: &Tour) -> Result<Section> {
     for algorithm in Algorithm::ALL {
         let m = measure(&scene, &base, algorithm, &k, max_depth, &reference, &counted, &e)?;
         crate::console::say!(
-            "  {} {:20} {:5} spp {:>8} (build {:>8})  RMSE {:.4}  bias² {}  variance {:.2e}",
+            "  {} {:20} {:5} spp {:>8} ({} {:>8})  RMSE {:.4}  {}² {}  {} {:.2e}",
             scene.name,
             algorithm.label(),
             m.run.spp,
             seconds_text(m.run.seconds),
+            lang::pick("build", "построяване"),
             seconds_text(m.build_seconds),
             m.rmse,
+            lang::pick("bias", "отместване"),
             m.split.bias2_text(),
+            lang::pick("variance", "дисперсия"),
             m.split.variance
         );
         measured.push(m);
@@ -445,8 +461,19 @@ fn render(tour: &Tour) -> Result<Section> {
     base.progress = false;
     let (reference, max_depth) = independent(Some("caustic"), &scene, &base, 8, 256);
     crate::console::say!(
-        "  caustic {}×{}: max depth {max_depth}, reference {}",
-        scene.camera.width, scene.camera.height, reference.source
+        "  {}",
+        lang::fill(
+            lang::pick(
+                "caustic {w}×{h}: max depth {max_depth}, reference {source}",
+                "caustic {w}×{h}: максимална дълбочина {max_depth}, еталон {source}",
+            ),
+            &[
+                ("w", &scene.camera.width),
+                ("h", &scene.camera.height),
+                ("max_depth", &max_depth),
+                ("source", &reference.source),
+            ]
+        )
     );
     let everywhere = vec![true; reference.mean.pixels.len()];
     let caustic_knobs = Knobs {

@@ -48,7 +48,10 @@ fn exercise(number: usize) -> Result<Exercise> {
 pub fn run_exercises(args: &ExercisesArgs) -> Result<()> {
     if args.watch {
         // Ctrl-C is how a watch ends: no render, nothing to keep.
-        raytracer::render::on_interrupt_say("stopped watching exercises/src/");
+        raytracer::render::on_interrupt_say(lang::pick(
+            "stopped watching exercises/src/",
+            "спрях да следя exercises/src/",
+        ));
         return grading::watch::run(&raytracer::render::interrupted)
             .context("watching exercises/src/");
     }
