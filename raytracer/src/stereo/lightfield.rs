@@ -97,7 +97,7 @@ impl LightField {
             for col in 0..n {
                 view_scene.camera = Self::view_camera(&base, n, aperture, col, row);
                 let opts = RenderOptions {
-                    label: format!("{} view {}/{}", options.label, row * n + col + 1, n * n),
+                    label: format!("{} {}/{}", options.label, row * n + col + 1, n * n),
                     ..options.clone()
                 };
                 views.push(render(&view_scene, integrator, &opts).film.image());

@@ -425,7 +425,16 @@ fn render_section(args: &StereoArgs, page_root: &Path) -> Result<Section> {
     for (camera, eye) in rig.eyes(&scene.camera).into_iter().zip(Eye::BOTH) {
         eye_scene.camera = camera;
         let opts = RenderOptions {
-            label: format!("{} {} eye", scene.name, eye.name()),
+            label: match eye {
+                Eye::Left => lang::pick(
+                    format!("{} left eye", scene.name),
+                    format!("{} ляво око", scene.name),
+                ),
+                Eye::Right => lang::pick(
+                    format!("{} right eye", scene.name),
+                    format!("{} дясно око", scene.name),
+                ),
+            },
             ..options.clone()
         };
         let picture = render_to_files(
@@ -666,7 +675,10 @@ fn separation_sweep(
             let opts = RenderOptions {
                 spp,
                 progress: false,
-                label: format!("{} {} eye, separation {separation}", scene.name, eye.name()),
+                label: lang::pick(
+                    format!("{} {} eye, separation {separation}", scene.name, eye.name()),
+                    format!("{} {}, разделение {separation}", scene.name, eye_bg(eye)),
+                ),
                 ..options.clone()
             };
             eyes.push(raytracer::render::render(&eye_scene, integrator, &opts).film.image());
@@ -733,7 +745,10 @@ fn light_field(
     let spp = args.lf_spp.unwrap_or((options.spp / 16).max(1));
     let lf_options = RenderOptions {
         spp,
-        label: format!("{} light field", scene.name),
+        label: lang::pick(
+            format!("{} light field", scene.name),
+            format!("{} светлинно поле", scene.name),
+        ),
         ..options.clone()
     };
     let start = Instant::now();
@@ -922,4 +937,12 @@ pub fn refocus_digits(depths: &[f32]) -> usize {
             names.len() == depths.len()
         })
         .unwrap_or(9)
+}
+
+/// "ляво око" or "дясно око" (progress labels).
+fn eye_bg(eye: Eye) -> &'static str {
+    match eye {
+        Eye::Left => "ляво око",
+        Eye::Right => "дясно око",
+    }
 }
