@@ -677,7 +677,7 @@ fn separation_sweep(
                 progress: false,
                 label: lang::pick(
                     format!("{} {} eye, separation {separation}", scene.name, eye.name()),
-                    format!("{} {}, разделение {separation}", scene.name, eye_bg(eye)),
+                    format!("{} {} око, разделение {separation}", scene.name, eye_bg(eye)),
                 ),
                 ..options.clone()
             };
@@ -937,12 +937,4 @@ pub fn refocus_digits(depths: &[f32]) -> usize {
             names.len() == depths.len()
         })
         .unwrap_or(9)
-}
-
-/// "ляво око" or "дясно око" (progress labels).
-fn eye_bg(eye: Eye) -> &'static str {
-    match eye {
-        Eye::Left => "ляво око",
-        Eye::Right => "дясно око",
-    }
 }
