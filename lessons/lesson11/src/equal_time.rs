@@ -176,7 +176,7 @@ pub fn equal_time(
     let mut algorithms: Vec<(&'static str, &str, Run)> = vec![
         ("path (MIS)", path.name(), pixels(scene, &path, base)),
         (
-            lang::pick("path (BRDF only)", "path (само по BRDF)"),
+            "path (BRDF only)",
             path_brdf.name(),
             pixels(scene, &path_brdf, base),
         ),
@@ -185,19 +185,11 @@ pub fn equal_time(
     ];
     if also.naive {
         let run = pixels(scene, &naive, base);
-        let label = lang::pick(
-            "naive recursion, N = 4 then 1",
-            "наивна рекурсия, N = 4, после 1",
-        );
-        algorithms.insert(0, (label, naive.name(), run));
+        algorithms.insert(0, ("naive recursion, N = 4 then 1", naive.name(), run));
     }
     if also.metropolis {
         let run = metropolis(scene, &bdpt, base);
-        let label = lang::pick(
-            "Metropolis (over bidirectional)",
-            "Metropolis (върху bidirectional)",
-        );
-        algorithms.push((label, "mlt", run));
+        algorithms.push(("Metropolis (over bidirectional)", "mlt", run));
     }
     let mut rows = Vec::new();
     for (algorithm, name, run) in algorithms {
@@ -206,8 +198,9 @@ pub fn equal_time(
         };
         let rmse = rmse(&image, &reference.mean);
         crate::console::say!(
-            "  {:14} {algorithm:34} {spp:6} spp {seconds:7.2} s  RMSE {rmse:.4}",
-            scene.name
+            "  {:14} {:34} {spp:6} spp {seconds:7.2} s  RMSE {rmse:.4}",
+            scene.name,
+            lang::pick(algorithm, label_in_bulgarian(algorithm))
         );
         let stem = format!("{}-{name}", scene.name);
         rows.push(EqualTimeRow {
@@ -221,4 +214,18 @@ pub fn equal_time(
         });
     }
     rows
+}
+
+/// An equal-time row's label in Bulgarian: the algorithms keep the
+/// lecture's English names, as on the slides; the words around them do not.
+/// The rows keep their English labels (the CSV and the charts' colours
+/// read them).
+pub fn label_in_bulgarian(en: &str) -> &str {
+    match en {
+        "path (BRDF only)" => "path (само BRDF)",
+        "naive recursion, N = 4 then 1" => "наивна рекурсия, N = 4, после 1",
+        "naive recursion" => "наивна рекурсия",
+        "Metropolis (over bidirectional)" => "Metropolis (върху bidirectional)",
+        other => other,
+    }
 }

@@ -761,7 +761,7 @@ fn light_field(
         "{}",
         lang::pick(
             format!("  light field: {n}×{n} views of {w}×{h} at {spp} spp in {seconds:.1} s"),
-            format!("  light field: {n}×{n} изгледа по {w}×{h} с {spp} spp за {seconds:.1} s"),
+            format!("  светлинно поле: {n}×{n} изгледа по {w}×{h} с {spp} spp за {seconds:.1} s"),
         )
     );
     section.figures.push(save(

@@ -255,7 +255,7 @@ fn render(tour: &Tour) -> Result<Section> {
                     "{}, {}, при равно време: {} spp за {} ({w}×{h}, максимална дълбочина \
                      {max_depth}): RMSE {:.5} спрямо {} (дъно на шума {floor:.5}).",
                     in_bulgarian(name),
-                    row.algorithm,
+                    crate::equal_time::label_in_bulgarian(row.algorithm),
                     row.spp,
                     seconds_text(row.seconds),
                     row.rmse,
@@ -429,9 +429,7 @@ fn in_bulgarian(en: &str) -> String {
         "error against time" => "грешка спрямо времето",
         "seconds" => "секунди",
         "noise floor" => "дъното на шума",
-        "path (BRDF only)" => "path (само BRDF)",
-        "naive recursion" => "наивна рекурсия",
-        other => other,
+        other => crate::equal_time::label_in_bulgarian(other),
     }
     .to_string()
 }
