@@ -88,10 +88,10 @@ pub fn bulgarian(e: &clap::Error) -> String {
         ErrorKind::TooFewValues | ErrorKind::WrongNumberOfValues => {
             format!("{arg} иска друг брой стойности")
         }
-        ErrorKind::ArgumentConflict => format!(
-            "{arg} не може да се дава заедно с {}",
-            text(e, ContextKind::PriorArg).unwrap_or_default()
-        ),
+        ErrorKind::ArgumentConflict => match text(e, ContextKind::PriorArg) {
+            Some(prior) if prior != arg => format!("{arg} не може да се дава заедно с {prior}"),
+            _ => format!("{arg} може да се даде само веднъж"),
+        },
         ErrorKind::MissingRequiredArgument => format!("липсва задължителният аргумент {arg}"),
         ErrorKind::MissingSubcommand => "липсва команда".to_string(),
         _ => "грешен команден ред".to_string(),
