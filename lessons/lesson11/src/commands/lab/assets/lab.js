@@ -1003,14 +1003,16 @@ async function layoutCheck() {
 
 // Latin words a Bulgarian text keeps: the names the Bulgarian deck keeps in
 // English (algorithms, BRDF models, quantities), the integrators', scenes',
-// engines' and exercises' names, units, file types and symbols.
+// engines' and exercises' names, units, file types and symbols, and the
+// command line's flags a message names (--force).
 const KEPT_IN_ENGLISH = new Set(`path tracing light bidirectional tracer monte carlo mis multiple importance
   sampling brdf phong lambert rmse exr png spp seed toe ambient occlusion photon mapping instant radiosity
   irradiance caching cache metropolis transport sppm mlt vpl bdpt naive direct nee brdf ao cornell door caustic
   stereo furnace white gallery veach mitsuba box wavefront throughput pdf fresnel dubois colorcode ward nan
   toe-in rightdir rgb
   lesson11 render student cargo todo exercises src lab cutoff mib sin cos max min tile brdf-gallery
-  white-furnace veach-mis path-brdf path-nee irradiance-cache`.split(/\s+/).filter(Boolean));
+  white-furnace veach-mis path-brdf path-nee irradiance-cache
+  force`.split(/\s+/).filter(Boolean));
 
 // The page's texts with an English word left (a text with Latin words
 // outside KEPT_IN_ENGLISH): every text node but code and the scene's own
