@@ -72,16 +72,29 @@ pub fn run(args: &LabArgs) -> Result<()> {
     let address = resolve(&args.host, args.port)?;
     if !address.ip().is_loopback() {
         eprintln!(
-            "warning: serving on {address}: every machine that can reach this address can use the lab \
-             and its processors (use --host 127.0.0.1 to keep it to this machine)"
+            "{}",
+            lang::fill(
+                lang::pick(
+                    "warning: serving on {address}: every machine that can reach this address can \
+                     use the lab and its processors (use --host 127.0.0.1 to keep it to this machine)",
+                    "внимание: лабораторията слуша на {address}: всяка машина, която достига този \
+                     адрес, може да ползва нея и процесорите ѝ (--host 127.0.0.1 я оставя само за \
+                     тази машина)",
+                ),
+                &[("address", &address)]
+            )
         );
     }
     if let Some(dir) = &args.scenes
         && !dir.is_dir()
     {
         bail!(
-            "--scenes {}: no such folder (give a folder of .toml scene files)",
-            dir.display()
+            "--scenes {}: {}",
+            dir.display(),
+            lang::pick(
+                "no such folder (give a folder of .toml scene files)",
+                "няма такава папка (дайте папка с файлове със сцени .toml)"
+            )
         );
     }
     let lab = Lab::start(
@@ -92,14 +105,28 @@ pub fn run(args: &LabArgs) -> Result<()> {
     )
     .map_err(|e| {
         let hint = if e.to_string().contains("in use") {
-            " (another program uses it: pass --port N, or --port 0 for a free one)"
+            lang::pick(
+                " (another program uses it: pass --port N, or --port 0 for a free one)",
+                " (друга програма го ползва: дайте --port N или --port 0 за свободен)",
+            )
         } else {
             ""
         };
-        anyhow::anyhow!("cannot listen on {address}: {e}{hint}")
+        anyhow::anyhow!(
+            "{} {address}: {e}{hint}",
+            lang::pick("cannot listen on", "не мога да слушам на")
+        )
     })?;
-    let url = lab.url();
-    crate::console::say!("lesson11 lab: open {url} (Ctrl-C stops the lab)");
+    // The page opens in the lab's language (it is English without `?lang`).
+    let url = match lang::current() {
+        lang::Lang::En => lab.url(),
+        lang::Lang::Bg => format!("{}?lang=bg", lab.url()),
+    };
+    crate::console::say!(
+        "lesson11 lab: {} {url} {}",
+        lang::pick("open", "отворете"),
+        lang::pick("(Ctrl-C stops the lab)", "(Ctrl-C спира лабораторията)")
+    );
     if args.open {
         open_browser(&url);
     }
@@ -108,7 +135,7 @@ pub fn run(args: &LabArgs) -> Result<()> {
         std::thread::sleep(Duration::from_millis(100));
     }
     lab.stop();
-    crate::console::say!("lesson11 lab: stopped");
+    crate::console::say!("lesson11 lab: {}", lang::pick("stopped", "спряна"));
     Ok(())
 }
 
