@@ -206,12 +206,16 @@ static WORDS: Mutex<Words> = Mutex::new(ENGLISH);
 
 /// Makes every later summary line and progress bar use `words`.
 pub fn say_in(words: Words) {
-    *WORDS.lock().unwrap_or_else(|poisoned| poisoned.into_inner()) = words;
+    *WORDS
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner()) = words;
 }
 
 /// The words in use ([`ENGLISH`] unless [`say_in`] chose others).
 pub fn words() -> Words {
-    *WORDS.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
+    *WORDS
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner())
 }
 
 /// Makes the first Ctrl-C say `message` instead of the render's "keeping

@@ -232,12 +232,9 @@ fn says(words: &[String], phrase: &str) -> bool {
         None => word == w,
     };
     !wanted.is_empty()
-        && words.windows(wanted.len()).any(|window| {
-            window
-                .iter()
-                .zip(&wanted)
-                .all(|(word, w)| matches(word, w))
-        })
+        && words
+            .windows(wanted.len())
+            .any(|window| window.iter().zip(&wanted).all(|(word, w)| matches(word, w)))
 }
 
 /// The glossary check matches whole words (issue 30: "семпли" was found in
@@ -269,10 +266,7 @@ const DECK_LEFT: &[&str] = &[
 fn the_deck_the_tour_and_the_lab_use_the_glossary_words() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let mut files: Vec<PathBuf> = Vec::new();
-    let mut stack = vec![
-        root.join("slides/bg"),
-        root.join("lessons/lesson11/src"),
-    ];
+    let mut stack = vec![root.join("slides/bg"), root.join("lessons/lesson11/src")];
     while let Some(dir) = stack.pop() {
         for entry in std::fs::read_dir(&dir).unwrap() {
             let path = entry.unwrap().path();

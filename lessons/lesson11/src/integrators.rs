@@ -253,9 +253,10 @@ fn check_ray_budget(
     options: &RenderOptions,
     force: bool,
 ) -> Result<()> {
-    let depth = naive
-        .max_depth()
-        .map_or_else(|| lang::pick("unlimited", "без граница").to_string(), |d| d.to_string());
+    let depth = naive.max_depth().map_or_else(
+        || lang::pick("unlimited", "без граница").to_string(),
+        |d| d.to_string(),
+    );
     let Some(per_sample) = naive.rays_per_sample_bound() else {
         let ends = match (naive.roulette_depth().is_some(), lang::current()) {
             (true, lang::Lang::En) => "Russian roulette",
@@ -283,7 +284,11 @@ fn check_ray_budget(
     let total = per_sample as f64 * samples;
     // The bound saturates at u64::MAX ("18446744073709551615 rays").
     let per_sample = if per_sample == u64::MAX {
-        format!("{} {:.1e}", lang::pick("more than", "повече от"), u64::MAX as f64)
+        format!(
+            "{} {:.1e}",
+            lang::pick("more than", "повече от"),
+            u64::MAX as f64
+        )
     } else {
         per_sample.to_string()
     };

@@ -9,8 +9,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use anyhow::{Context, Result, bail};
 use clap::Args;
-use raytracer::film::output::StagedFile;
 use lang::Lang;
+use raytracer::film::output::StagedFile;
 use raytracer::render::{MemoryCap, RenderOptions, gib, memory_needed, thread_limit};
 use raytracer::scene::{Scene, builtin};
 

@@ -183,10 +183,7 @@ impl Tour {
         }
         let (w, h) = (scene.settings.width, scene.settings.height);
         check_memory(
-            &lang::pick(
-                format!("a {w}×{h} render"),
-                format!("рендериране {w}×{h}"),
-            ),
+            &lang::pick(format!("a {w}×{h} render"), format!("рендериране {w}×{h}")),
             memory_needed(w, h),
             lang::pick("--width and --height", "--width и --height"),
             o.force,

@@ -68,7 +68,10 @@ fn in_bulgarian(args: &[&str]) -> Output {
 fn command_line_errors_speak_bulgarian() {
     let cases: [(&[&str], &[&str]); 6] = [
         (&["--quality", "tiny"], &["непознат аргумент", "--quality"]),
-        (&["tour", "--quality", "huge"], &["„huge“", "--quality", "tiny, quick, full"]),
+        (
+            &["tour", "--quality", "huge"],
+            &["„huge“", "--quality", "tiny, quick, full"],
+        ),
         (&["tour", "--spp", "abc"], &["„abc“", "--spp", "не е цяло"]),
         (&["tour", "--sp", "3"], &["--sp", "може би „--spp“"]),
         (&["frobnicate"], &["непозната команда „frobnicate“"]),
@@ -82,12 +85,25 @@ fn command_line_errors_speak_bulgarian() {
         for n in named {
             assert!(err.contains(n), "{args:?}: {n:?} missing from {err}");
         }
-        for english in ["error:", "Usage:", "For more information", "unexpected", "invalid"] {
-            assert!(!err.contains(english), "{args:?}: English {english:?} in {err}");
+        for english in [
+            "error:",
+            "Usage:",
+            "For more information",
+            "unexpected",
+            "invalid",
+        ] {
+            assert!(
+                !err.contains(english),
+                "{args:?}: English {english:?} in {err}"
+            );
         }
         let en = lesson11(args);
         assert_eq!(en.status.code(), Some(2), "{args:?}");
-        assert!(stderr(&en).starts_with("error: "), "{args:?}: {}", stderr(&en));
+        assert!(
+            stderr(&en).starts_with("error: "),
+            "{args:?}: {}",
+            stderr(&en)
+        );
     }
 }
 

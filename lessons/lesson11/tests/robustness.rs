@@ -1260,7 +1260,7 @@ fn kill_9_during_a_rewrite_leaves_whole_files() {
         }
         let states: Vec<_> = targets.iter().map(|p| stat(p)).collect();
         let mut child = Command::new(EXE)
-        .env("LESSON11_LANG", "en")
+            .env("LESSON11_LANG", "en")
             .args(args("6", "big"))
             .current_dir(&dir)
             .stdout(Stdio::null())
@@ -1952,7 +1952,11 @@ fn on_two_workers<T: Sync>(cases: &[T], one: impl Fn(&T) + Sync) {
 #[test]
 fn a_bulgarian_error_names_the_same_thing() {
     let cases: [(&[&str], &str, &str); 5] = [
-        (&["render", "--threads", "0"], "--threads", "трябва да е поне 1"),
+        (
+            &["render", "--threads", "0"],
+            "--threads",
+            "трябва да е поне 1",
+        ),
         (&["render", "--exposure=NaN"], "--exposure", "NaN"),
         (&["render", "--width", "0"], "0×", "размерът на картината"),
         (&["stereo", "--leakage", "2"], "--leakage", "а е 2"),

@@ -345,7 +345,10 @@ pub fn plan(
             check_memory(
                 &what,
                 bytes,
-                lang::pick("--vpl-paths (or --max-depth)", "--vpl-paths (или --max-depth)"),
+                lang::pick(
+                    "--vpl-paths (or --max-depth)",
+                    "--vpl-paths (или --max-depth)",
+                ),
                 force,
             )?;
             BiasedPlan::Vpl(s)

@@ -15,7 +15,11 @@ fn mib(bytes: usize) -> f64 {
 
 /// ", INTERRUPTED" if `interrupted`.
 fn interrupted_bg(interrupted: bool) -> &'static str {
-    if interrupted { ", ПРЕКЪСНАТО" } else { "" }
+    if interrupted {
+        ", ПРЕКЪСНАТО"
+    } else {
+        ""
+    }
 }
 
 /// "photon maps: N light paths, C caustic + G global photons × B bytes = M MiB (…)".
