@@ -25,7 +25,7 @@
 //! engine.rs        which engine runs the path tracer: the lecture's, or the wavefront one
 //! options.rs       scene, size, samples, seed, threads and output folder of a command line
 //! page/ plots/     the HTML page and its SVG plots
-//! language.rs      --lang bg|en, and the command line's help in Bulgarian
+//! language.rs cli_errors.rs  --lang bg|en, and the command line's help and clap's errors in Bulgarian
 //! console.rs       standard output that a closed pipe or a full disk cannot crash
 //! ```
 //!
