@@ -35,6 +35,7 @@ fn the_albedo_is_exact_where_it_is_known() {
 /// times ρ at normal incidence; normalized Phong never exceeds ρ.
 #[test]
 fn the_verdict_tells_normalized_from_original_phong() {
+    crate::english();
     let good = analyse(&choice("model=phong&exponent=1&albedo=1").unwrap(), 30.0);
     assert!(good.conserves_energy, "{}", good.verdict);
     assert!((good.max_albedo - 1.0).abs() < 2e-3 && good.max_at == 0.0);

@@ -9,6 +9,7 @@ use raytracer::render::RenderOptions;
 /// its message (N = 8 at max depth 12: 8¹¹ rays per sample).
 #[test]
 fn the_lab_refuses_the_naive_renders_the_command_line_refuses() {
+    crate::english();
     let Err(e) = setup("integrator=naive&width=64&height=64&spp=16&max-depth=12") else {
         panic!("accepted");
     };
@@ -22,6 +23,7 @@ fn the_lab_refuses_the_naive_renders_the_command_line_refuses() {
 #[cfg(unix)]
 #[test]
 fn links_in_the_scenes_folder_are_not_followed() {
+    crate::english();
     let root = std::env::temp_dir().join(format!("lab-links-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&root);
     let dir = root.join("scenes");
@@ -74,6 +76,7 @@ fn the_query_is_read_as_lesson11_render_reads_its_options() {
 
 #[test]
 fn bad_settings_get_the_commands_reasons_in_one_line() {
+    crate::english();
     for (query, reason) in [
         (
             "spp=abc",
@@ -104,6 +107,7 @@ fn bad_settings_get_the_commands_reasons_in_one_line() {
 /// page's fields, and following it renders.
 #[test]
 fn the_advice_for_unlimited_naive_recursion_can_be_followed_on_the_page() {
+    crate::english();
     let base = "integrator=naive&width=16&height=16&spp=1&max-depth=-1";
     let Err(e) = setup(&format!("{base}&branching=8,1")) else {
         panic!("accepted")

@@ -109,6 +109,7 @@ fn the_render_of_a_closed_page_stops() {
 /// to wait until the maps are built, then records photon mapping's samples.
 #[test]
 fn a_biased_integrator_is_built_on_the_jobs_thread() {
+    crate::english();
     let lab = start();
     let render = "/api/render?page=b&width=16&height=16&spp=1&integrator=photon";
     let (status, body) = request(&lab, "POST", render);
@@ -290,6 +291,7 @@ fn the_z_map_of_a_right_integrator_is_consistent() {
 /// student's NaN samples are counted as the student's.
 #[test]
 fn a_students_panic_or_nan_is_a_message_not_a_crash() {
+    crate::english();
     let lab = start();
     let job = faulty_job(&lab, "p", Fault::Panics, 4);
     let s = job.status();

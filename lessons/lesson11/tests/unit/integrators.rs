@@ -107,6 +107,7 @@ fn max_depth_follows_the_scene_files_rule() {
 
 #[test]
 fn naive_recursion_stays_within_its_ray_budget() {
+    crate::english();
     let args = IntegratorArgs {
         branching: vec![1000],
         ..IntegratorArgs::default()
