@@ -30,13 +30,30 @@ pub struct Reference {
     pub variance: Image,
     /// Samples per pixel at its own size.
     pub spp: u32,
-    /// Who made it, for tables: "Mitsuba 3.9.1, 2048 spp".
+    /// Who made it, for tables: "Mitsuba 3.9.1, 2048 spp" (in English, as
+    /// the CSV keeps it; [`Reference::source_here`] in the run's language).
     pub source: String,
     /// What captions call it: "Mitsuba 3's image".
     pub name: &'static str,
 }
 
 impl Reference {
+    /// [`Reference::source`] in the run's language (for the console and the
+    /// page; the CSV keeps the English).
+    pub fn source_here(&self) -> String {
+        match lang::current() {
+            lang::Lang::En => self.source.clone(),
+            lang::Lang::Bg => self
+                .source
+                .replace(
+                    "our bidirectional path tracer, another seed,",
+                    "нашият bidirectional path tracer, друг seed,",
+                )
+                .replace("(stored)", "(запазен)")
+                .replace("(rendered now)", "(рендериран сега)"),
+        }
+    }
+
     /// The reference's own RMSE against the truth it estimates,
     /// `√(mean over pixels and channels of the variance of its mean)`: the
     /// floor an error measured against it cannot go below.
@@ -230,15 +247,9 @@ impl StoredSettings {
             mean: read(&mean)?,
             variance: read(&variance)?,
             spp: self.spp,
-            source: lang::pick(
-                format!(
-                    "our bidirectional path tracer, another seed, {} spp (stored)",
-                    self.spp
-                ),
-                format!(
-                    "нашият bidirectional path tracer, друг seed, {} spp (запазен)",
-                    self.spp
-                ),
+            source: format!(
+                "our bidirectional path tracer, another seed, {} spp (stored)",
+                self.spp
             ),
             name: lang::pick("the stored reference", "запазения еталон"),
         })
@@ -302,10 +313,7 @@ pub fn render_now(scene: &Scene, base: &RenderOptions, max_depth: u32, spp: u32)
         mean: film.image(),
         variance: film.variance_image(),
         spp,
-        source: lang::pick(
-            format!("our bidirectional path tracer, another seed, {spp} spp (rendered now)"),
-            format!("нашият bidirectional path tracer, друг seed, {spp} spp (рендериран сега)"),
-        ),
+        source: format!("our bidirectional path tracer, another seed, {spp} spp (rendered now)"),
         name: lang::pick(
             "a reference rendered now with another seed",
             "еталон, рендериран сега с друг seed",

@@ -213,7 +213,7 @@ fn against_mitsuba(tour: &Tour, s: &mut ChapterOutput, ours: &Image, path: &Pict
             format!(" с размер {mw}×{mh}, усреднена до {w}×{h}"),
         )
     };
-    let source = &reference.source;
+    let source = &reference.source_here();
     s.section.figures.push(Figure::new(
         &tour.out,
         &mitsuba_picture,

@@ -86,17 +86,17 @@ fn render(tour: &Tour) -> Result<Section> {
             ),
         ),
     )?;
-    let mut table = Table::new(
+    let mut table = Table::in_both(
         "Equal-time comparison (RMSE against a reference rendered with other random numbers; lower is better)",
         &[
-            "scene",
-            "algorithm",
-            "max depth D",
-            "spp",
-            "seconds",
-            "RMSE",
-            "reference",
-            "reference noise floor",
+            ("scene", "сцена"),
+            ("algorithm", "алгоритъм"),
+            ("max depth D", "максимална дълбочина D"),
+            ("spp", "spp"),
+            ("seconds", "секунди"),
+            ("RMSE", "RMSE"),
+            ("reference", "еталон"),
+            ("reference noise floor", "дъно на шума на еталона"),
         ],
     );
     let mut floors = Vec::new();
@@ -130,12 +130,12 @@ fn render(tour: &Tour) -> Result<Section> {
                 &[
                     ("name", &name),
                     ("max_depth", &max_depth),
-                    ("source", &reference.source),
+                    ("source", &reference.source_here()),
                     ("floor", &floor),
                 ]
             )
         );
-        floors.push(format!("{name} {floor:.5} ({})", reference.source));
+        floors.push(format!("{name} {floor:.5} ({})", reference.source_here()));
         if name == "door" {
             // What the door renders converge to, at the same exposure (the
             // Cornell box's reference is shown in chapter 2).
@@ -159,7 +159,7 @@ fn render(tour: &Tour) -> Result<Section> {
                     format!(
                         "вратата, еталонът: {}, максимална дълбочина {max_depth}, експозиция \
                          +{DOOR_EXPOSURE} EV; към това се приближава всяко рендериране по-долу.",
-                        reference.source
+                        reference.source_here()
                     ),
                 ),
             ));
@@ -265,16 +265,19 @@ fn render(tour: &Tour) -> Result<Section> {
             c.section
                 .figures
                 .push(Figure::new(&tour.out, &picture, &caption));
-            table.rows.push(vec![
-                name.into(),
-                row.algorithm.into(),
-                max_depth.to_string(),
-                row.spp.to_string(),
-                seconds_number(row.seconds),
-                format!("{:.5}", row.rmse),
-                reference.source.clone(),
-                format!("{floor:.5}"),
-            ]);
+            table.push(|l| {
+                vec![
+                    name.into(),
+                    l.pick(row.algorithm, crate::equal_time::label_in_bulgarian(row.algorithm))
+                        .into(),
+                    max_depth.to_string(),
+                    row.spp.to_string(),
+                    seconds_number(row.seconds),
+                    format!("{:.5}", row.rmse),
+                    lang::with(l, || reference.source_here()),
+                    format!("{floor:.5}"),
+                ]
+            });
         }
     }
     table.caption = lang::pick(

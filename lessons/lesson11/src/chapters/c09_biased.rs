@@ -5,6 +5,7 @@
 
 use std::sync::atomic::AtomicBool;
 
+use lang::Lang;
 use anyhow::{Context, Result, anyhow};
 use raytracer::film::Image;
 use raytracer::integrator::{
@@ -186,17 +187,17 @@ fn render(tour: &Tour) -> Result<Section> {
             ),
         ),
     )?;
-    let mut table = Table::new(
+    let mut table = Table::in_both(
         "Equal time on the Cornell box: error against Mitsuba 3's image, split into bias² and variance",
         &[
-            "algorithm",
-            "unbiased",
-            "spp",
-            "seconds",
-            "RMSE",
-            "bias² ± SE",
-            "variance",
-            "first time RMSE ≤ target",
+            ("algorithm", "алгоритъм"),
+            ("unbiased", "неотместен"),
+            ("spp", "spp"),
+            ("seconds", "секунди"),
+            ("RMSE", "RMSE"),
+            ("bias² ± SE", "отместване² ± SE"),
+            ("variance", "дисперсия"),
+            ("first time RMSE ≤ target", "първо време с RMSE ≤ целта"),
         ],
     );
 
@@ -222,7 +223,7 @@ fn render(tour: &Tour) -> Result<Section> {
                 ("w", &scene.camera.width),
                 ("h", &scene.camera.height),
                 ("max_depth", &max_depth),
-                ("source", &reference.source),
+                ("source", &reference.source_here()),
                 ("floor", &floor),
             ]
         )
@@ -295,19 +296,33 @@ fn render(tour: &Tour) -> Result<Section> {
                 ),
             ),
         ));
-        table.rows.push(vec![
-            m.algorithm.label().into(),
-            if unbiased { "yes" } else { "no" }.into(),
-            m.run.spp.to_string(),
-            seconds_number(m.run.seconds),
-            format!("{:.5}", m.rmse),
-            m.split.bias2_text(),
-            format!("{:.3e}", m.split.variance),
-            reached.map_or_else(
-                || format!("not within {}", seconds_text(m.run.seconds)),
-                seconds_number,
-            ),
-        ]);
+        table.push(|l| {
+            vec![
+                m.algorithm.label().into(),
+                match (unbiased, l) {
+                    (true, Lang::En) => "yes",
+                    (false, Lang::En) => "no",
+                    (true, Lang::Bg) => "да",
+                    (false, Lang::Bg) => "не",
+                }
+                .into(),
+                m.run.spp.to_string(),
+                seconds_number(m.run.seconds),
+                format!("{:.5}", m.rmse),
+                m.split.bias2_text(),
+                format!("{:.3e}", m.split.variance),
+                reached.map_or_else(
+                    || {
+                        format!(
+                            "{} {}",
+                            l.pick("not within", "не и за"),
+                            seconds_text(m.run.seconds)
+                        )
+                    },
+                    seconds_number,
+                ),
+            ]
+        });
     }
     let flat: Vec<&str> = measured
         .iter()
@@ -471,7 +486,7 @@ fn render(tour: &Tour) -> Result<Section> {
                 ("w", &scene.camera.width),
                 ("h", &scene.camera.height),
                 ("max_depth", &max_depth),
-                ("source", &reference.source),
+                ("source", &reference.source_here()),
             ]
         )
     );
