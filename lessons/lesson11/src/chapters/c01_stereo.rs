@@ -684,7 +684,10 @@ fn separation_sweep(
             eyes.push(raytracer::render::render(&eye_scene, integrator, &opts).film.image());
         }
         if raytracer::render::interrupted() {
-            bail!("interrupted by Ctrl-C while rendering the separation sweep");
+            bail!(lang::pick(
+                "interrupted by Ctrl-C while rendering the separation sweep",
+                "прекъснато с Ctrl-C по време на рендерирането на разделенията"
+            ));
         }
         let look = if separation < 0.05 {
             lang::pick("almost flat", "почти плоско")
@@ -754,7 +757,10 @@ fn light_field(
     let start = Instant::now();
     let lf = LightField::render(&lf_scene, integrator, &lf_options, n, args.lf_aperture);
     if raytracer::render::interrupted() {
-        bail!("interrupted while rendering the light field; its pictures were not written");
+        bail!(lang::pick(
+            "interrupted while rendering the light field; its pictures were not written",
+            "прекъснато по време на рендерирането на светлинното поле; картините му не са записани"
+        ));
     }
     let seconds = start.elapsed().as_secs_f64();
     crate::console::say!(
