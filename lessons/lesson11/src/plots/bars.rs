@@ -9,7 +9,7 @@ use std::path::Path;
 
 use anyhow::{Context, Result};
 
-use super::chart::{FONT, Scale, TITLE_FONT, legend_layout, tick_label, ticks};
+use super::chart::{FONT, Scale, TITLE_FONT, legend_layout, tick_class, tick_label, ticks};
 use super::palette::{GUIDE, OTHERS as COLORS};
 use super::series::label_text;
 
@@ -86,8 +86,9 @@ impl Bars {
             let y = py(10f64.powf(t));
             let _ = writeln!(
                 s,
-                "<line x1=\"{LEFT}\" y1=\"{y:.1}\" x2=\"{}\" y2=\"{y:.1}\" stroke=\"#ddd\"/><text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{}</text>",
+                "<line x1=\"{LEFT}\" y1=\"{y:.1}\" x2=\"{}\" y2=\"{y:.1}\" stroke=\"#ddd\"/><text class=\"{}\" x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{}</text>",
                 W - RIGHT,
+                tick_class("y", Scale::Log),
                 LEFT - 6.0,
                 y + 4.0,
                 tick_label(t, Scale::Log)
