@@ -78,13 +78,20 @@ pub fn ticks(lo: f64, hi: f64, scale: Scale) -> Vec<f64> {
         }
         // Less than three integer multiples of a power of ten inside (from
         // 0.51 to 0.59, say): round steps of the values themselves.
+        // The step shrinks through 1, 0.5, 0.2, 0.1 × a power of ten until
+        // three multiples of it fall inside.
         let (a, b) = (10f64.powf(lo), 10f64.powf(hi));
-        return ticks(a, b, Scale::Linear)
-            .into_iter()
-            .filter(|v| *v > 0.0)
-            .map(f64::log10)
-            .filter(inside)
-            .collect();
+        let mut step = 10f64.powf((b - a).log10().floor());
+        for k in 0.. {
+            let out: Vec<f64> = ((a / step).ceil() as i64..=(b / step).floor() as i64)
+                .map(|m| (m as f64 * step).log10())
+                .collect();
+            if out.len() >= 3 || k > 60 {
+                return out;
+            }
+            step /= [2.0, 2.5, 2.0][k % 3];
+        }
+        unreachable!("the loop returns")
     }
     let span = (hi - lo).max(1e-12);
     let raw = span / 5.0;

@@ -129,7 +129,8 @@ pub fn signed_map_svg(
                 svg,
                 "<text x=\"{x:.1}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
                 bar_y + bar + 4 + font,
-                label(scale * (i as f64 / 2.0 - 1.0), scale)
+                // As few digits as the numbered ticks need: −0.05, not −0.050.
+                label(scale * (i as f64 / 2.0 - 1.0), 2.0 * scale)
             );
         }
         svg.push('\n');
