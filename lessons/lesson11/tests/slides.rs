@@ -1338,7 +1338,7 @@ fn chart_text_on_the_slides_is_at_least_12_px_at_1280x720_in_chromium() {
 }
 
 #[test]
-fn every_log_axis_has_at_least_three_labelled_ticks() {
+fn every_log_axis_has_at_least_three_labelled_ticks_and_bulgarian_ones_decimal_commas() {
     let out = tiny_build();
     let charts = charts(out);
     let mut axes = 0;
@@ -1353,6 +1353,20 @@ fn every_log_axis_has_at_least_three_labelled_ticks() {
                 })
                 .filter(|l| !l.is_empty())
                 .collect();
+            // The Bulgarian charts write their numbers with a decimal comma.
+            let all: Vec<&str> = svg
+                .match_indices("class=\"tick ")
+                .map(|(k, _)| {
+                    let t = &svg[k..];
+                    &t[t.find('>').unwrap() + 1..t.find("</text>").unwrap()]
+                })
+                .collect();
+            if name.contains("-bg.") {
+                assert!(
+                    all.iter().all(|l| !l.contains('.')),
+                    "{name}: a decimal point in {all:?}"
+                );
+            }
             if svg.contains(&class) {
                 axes += 1;
                 assert!(

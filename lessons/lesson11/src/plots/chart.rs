@@ -120,6 +120,24 @@ pub fn tick_class(axis: &str, scale: Scale) -> String {
     format!("tick {axis} {scale}")
 }
 
+/// Whether a chart speaks Bulgarian: some of its words are Cyrillic. Its
+/// numbers then take the decimal comma (0,05), as the Bulgarian slides do.
+pub fn is_bulgarian<'a>(texts: impl IntoIterator<Item = &'a str>) -> bool {
+    texts
+        .into_iter()
+        .any(|t| t.chars().any(|c| ('\u{0400}'..='\u{04ff}').contains(&c)))
+}
+
+/// A tick's label with the decimal separator of the chart's language.
+pub fn tick_text(t: f64, scale: Scale, bulgarian: bool) -> String {
+    let text = tick_label(t, scale);
+    if bulgarian {
+        text.replace('.', ",")
+    } else {
+        text
+    }
+}
+
 pub fn tick_label(t: f64, scale: Scale) -> String {
     match scale {
         Scale::Log => {
@@ -198,6 +216,8 @@ impl Chart {
         let py = |y: f64| H - BOTTOM - (y - y0) / (y1 - y0) * (H - TOP - BOTTOM);
         let labels: Vec<&str> = self.series.iter().map(|s| s.label.as_str()).collect();
         let (columns, column, rows) = legend_layout(&labels, W);
+        let words = [&self.title, &self.x_label, &self.y_label].map(String::as_str);
+        let bulgarian = is_bulgarian(words.into_iter().chain(labels.iter().copied()));
         let height = H + 22.0 * rows as f64 + 8.0;
         let mut s = String::new();
         let _ = writeln!(
@@ -220,7 +240,7 @@ impl Chart {
                 H - BOTTOM,
                 tick_class("x", self.x_scale),
                 H - BOTTOM + 19.0,
-                tick_label(t, self.x_scale)
+                tick_text(t, self.x_scale, bulgarian)
             );
         }
         for t in ticks(y0, y1, self.y_scale) {
@@ -232,7 +252,7 @@ impl Chart {
                 tick_class("y", self.y_scale),
                 LEFT - 6.0,
                 y + 4.0,
-                tick_label(t, self.y_scale)
+                tick_text(t, self.y_scale, bulgarian)
             );
         }
         let _ = writeln!(
