@@ -120,8 +120,10 @@ fn render(tour: &Tour) -> Result<Section> {
         let share = 100.0 * total(&weighted) / total(&unweighted).max(1e-30);
         let share = if share >= 1.0 {
             format!("{share:.0} %")
+        } else if share >= 0.005 {
+            lang::pick(format!("{share:.2} %"), format!("{share:.2} %").replace('.', ","))
         } else {
-            format!("{share:.2} %")
+            lang::pick("< 0.01 %", "< 0,01 %").to_string()
         };
         let kept = lang::pick(
             format!("weighted: its share after MIS, {share} of its own estimate's light"),
