@@ -1148,6 +1148,44 @@ fn every_algorithm_has_one_colour_on_every_chart_of_both_decks() {
     );
 }
 
+/// The BRDF a legend label names (chapter 3's lobes, their heights and the
+/// directional albedo: `Phong n=10`, `n=10 unnorm.`), as this test reads it.
+fn brdf_of(label: &str) -> Option<String> {
+    let l: String = label.to_lowercase().split_whitespace().collect();
+    if l.contains("lambert") {
+        return Some("Lambert".into());
+    }
+    let start = l.find("n=")? + 2;
+    let digits: String = l[start..]
+        .chars()
+        .take_while(char::is_ascii_digit)
+        .collect();
+    (!digits.is_empty()).then(|| format!("Phong n={digits}"))
+}
+
+#[test]
+fn every_brdf_has_one_colour_on_every_chart_of_both_decks() {
+    let out = tiny_build();
+    let mut colour_of: BTreeMap<String, (String, String)> = BTreeMap::new();
+    for (name, svg) in &charts(out) {
+        for (colour, label) in legend(svg) {
+            let Some(brdf) = brdf_of(&label) else {
+                continue;
+            };
+            let here = format!("{name}: {label}");
+            if let Some((c, w)) = colour_of.get(&brdf) {
+                assert_eq!(c, &colour, "{brdf}: {colour} in {here}, {c} in {w}");
+            }
+            colour_of.insert(brdf, (colour, here));
+        }
+    }
+    assert_eq!(
+        colour_of.keys().collect::<Vec<_>>(),
+        ["Lambert", "Phong n=1", "Phong n=10", "Phong n=100"],
+        "the BRDFs of chapter 3's charts"
+    );
+}
+
 #[test]
 fn chart_texts_and_legends_stay_inside_their_charts_in_chromium() {
     let Some(chromium) = chromium::chromium() else {
@@ -1193,6 +1231,158 @@ fn chart_texts_and_legends_stay_inside_their_charts_in_chromium() {
     );
     let bad: Vec<&str> = lines.filter(|l| !l.is_empty()).collect();
     assert!(bad.is_empty(), "chart texts cut off:\n{}", bad.join("\n"));
+}
+
+/// A deck's page with every SVG picture inline instead of an `<img>` (same
+/// place, same size: `figure>svg` is styled as `figure>img`), so that a
+/// script can measure the SVGs' text as the slide shows it.
+fn deck_with_inline_svgs(page: &Path) -> String {
+    let html = std::fs::read_to_string(page).unwrap();
+    let dir = page.parent().unwrap();
+    let mut out = String::new();
+    let mut rest = html.as_str();
+    while let Some(k) = rest.find("<img ") {
+        out.push_str(&rest[..k]);
+        let end = k + rest[k..].find('>').unwrap() + 1;
+        let tag = &rest[k..end];
+        let src = tag
+            .split_once("src=\"")
+            .and_then(|(_, r)| r.split_once('"'))
+            .map(|(src, _)| src.to_string())
+            .unwrap_or_default();
+        let file = dir.join(&src);
+        match std::fs::read_to_string(&file) {
+            Ok(svg) if src.ends_with(".svg") => {
+                let svg = &svg[svg.find("<svg").expect("an <svg> root")..];
+                out.push_str(&svg.replacen("<svg", &format!("<svg data-src=\"{src}\""), 1));
+            }
+            _ => out.push_str(tag),
+        }
+        rest = &rest[end..];
+    }
+    out.push_str(rest);
+    out
+}
+
+#[test]
+fn chart_text_on_the_slides_is_at_least_12_px_at_1280x720_in_chromium() {
+    let Some(chromium) = chromium::chromium() else {
+        eprintln!("skipped: no chromium, so the charts' text on the slides was not measured");
+        return;
+    };
+    let out = tiny_build();
+    // Each slide shown in turn; every text of every SVG picture measured:
+    // its font size times the scale at which the slide draws it (the
+    // picture's own text, subscripts included, and the numbers of colour
+    // bars; not the text rendered into a PNG).
+    let script = "<script>addEventListener('load',function(){var s=document.querySelectorAll('section.slide'),\
+         bad=[],n=0,svgs=0;for(var k=0;k<s.length;k++){for(var j=0;j<s.length;j++)\
+         s[j].classList.toggle('current',j===k);\
+         s[k].querySelectorAll('.figures svg[data-src]').forEach(function(svg){svgs++;\
+         svg.querySelectorAll('text,tspan').forEach(function(t){\
+         if(![].some.call(t.childNodes,function(c){return c.nodeType===3&&c.textContent.trim();}))return;\
+         var m=t.getScreenCTM(),px=parseFloat(getComputedStyle(t).fontSize)*Math.sqrt(m.a*m.a+m.b*m.b);n++;\
+         if(px<11.95)bad.push(s[k].id+' '+svg.dataset.src+': \\u201c'+t.textContent.trim()+'\\u201d '+px.toFixed(1)+' px');});});}\
+         var pre=document.createElement('pre');pre.id='fonts';\
+         pre.textContent='measured '+n+' texts in '+svgs+' pictures at '+innerWidth+' '+innerHeight+'\\n'+bad.join('\\n');document.body.appendChild(pre);});\
+         </script></body>";
+    let mut problems = Vec::new();
+    for lang in ["bg", "en"] {
+        let page = out.join("slides").join(lang).join("index.html");
+        let pictures = std::fs::read_to_string(&page)
+            .unwrap()
+            .matches(".svg\" alt=")
+            .count();
+        let html = deck_with_inline_svgs(&page).replacen("</body>", script, 1);
+        let file = page.with_file_name("fonts.html");
+        std::fs::write(&file, html).unwrap();
+        // The window, enlarged by what the browser keeps of it for itself
+        // (measured by the first run), so that the page gets 1280×720.
+        let mut window = (1280, 720);
+        let (report, counts) = loop {
+            let url = format!("file://{}", file.display());
+            let dom = dump_dom(&chromium, &url, window.0, window.1).unwrap();
+            let start = dom
+                .find("<pre id=\"fonts\">")
+                .expect("the page measured the text")
+                + 16;
+            let report =
+                dom[start..start + dom[start..].find("</pre>").unwrap()].replace("&amp;", "&");
+            let head = report.lines().next().unwrap_or_default();
+            let counts: Vec<u32> = head.split(' ').filter_map(|w| w.parse().ok()).collect();
+            assert_eq!(counts.len(), 4, "{lang}: {head}");
+            if (counts[2], counts[3]) == (1280, 720) || window != (1280, 720) {
+                break (report, counts);
+            }
+            window = (2 * 1280 - counts[2], 2 * 720 - counts[3]);
+        };
+        let mut lines = report.lines();
+        let head = lines.next().unwrap_or_default();
+        assert!(
+            (counts[2], counts[3]) == (1280, 720)
+                && counts[0] > 100
+                && counts[1] as usize == pictures
+                && pictures > 15,
+            "{lang}: {head}, of {pictures} SVG pictures on the slides"
+        );
+        problems.extend(
+            lines
+                .filter(|l| !l.is_empty())
+                .map(|l| format!("{lang}: {l}")),
+        );
+    }
+    assert!(
+        problems.is_empty(),
+        "chart text under 12 px on a 1280×720 slide:\n{}",
+        problems.join("\n")
+    );
+}
+
+#[test]
+fn every_log_axis_has_at_least_three_labelled_ticks_and_bulgarian_ones_decimal_commas() {
+    let out = tiny_build();
+    let charts = charts(out);
+    let mut axes = 0;
+    for (name, svg) in &charts {
+        for axis in ["x", "y"] {
+            let class = format!("class=\"tick {axis} log\"");
+            let labels: Vec<&str> = svg
+                .match_indices(&class)
+                .map(|(k, _)| {
+                    let t = &svg[k..];
+                    t[t.find('>').unwrap() + 1..t.find("</text>").unwrap()].trim()
+                })
+                .filter(|l| !l.is_empty())
+                .collect();
+            // The Bulgarian charts write their numbers with a decimal comma.
+            let all: Vec<&str> = svg
+                .match_indices("class=\"tick ")
+                .map(|(k, _)| {
+                    let t = &svg[k..];
+                    &t[t.find('>').unwrap() + 1..t.find("</text>").unwrap()]
+                })
+                .collect();
+            if name.contains("-bg.") {
+                assert!(
+                    all.iter().all(|l| !l.contains('.')),
+                    "{name}: a decimal point in {all:?}"
+                );
+            }
+            if svg.contains(&class) {
+                axes += 1;
+                assert!(
+                    labels.len() >= 3,
+                    "{name}: the {axis} axis is labelled {labels:?}"
+                );
+            }
+        }
+    }
+    // Chapter 3's lobe heights (y), chapter 8's error against time (x and y
+    // of each scene), chapter 9's (x and y) and its bars (y), in both decks.
+    assert!(
+        axes >= 12,
+        "only {axes} log axes in the tiny build's charts"
+    );
 }
 
 #[test]

@@ -26,9 +26,13 @@ pub const CHAPTER: Chapter = Chapter::new(
 /// The max depth D of the strategy images: every path of 1 to 3 segments.
 const STRATEGY_DEPTH: u32 = 3;
 
-/// Exposure of each strategy's image in stops: each holds the light of one
-/// path length only and is dark at exposure 0 (their sum is shown at 0).
-const STRATEGY_EXPOSURE: f32 = 1.0;
+/// Exposure of each strategy's own (unweighted) image in stops: each holds
+/// the light of one path length only and is dark at exposure 0 (their sum is
+/// shown at 0).
+const UNWEIGHTED_EXPOSURE: f32 = 2.0;
+/// Exposure of each strategy's weighted image: one more stop, as MIS leaves
+/// each strategy a share of that light (a quarter, on average, of four).
+const WEIGHTED_EXPOSURE: f32 = 3.0;
 
 /// Chapter 7: bidirectional path tracing and its strategies.
 fn render(tour: &Tour) -> Result<Section> {
@@ -87,17 +91,19 @@ fn render(tour: &Tour) -> Result<Section> {
     let (w, h) = (scene.camera.width, scene.camera.height);
     let count = 2 * strategies.len();
     let took = seconds_text(seconds);
-    let made = lang::pick(
-        format!(
-            "max depth {STRATEGY_DEPTH}, {w}×{h}, no roulette, exposure +{STRATEGY_EXPOSURE} \
-             stop; one of {count} strategy images that took {took} together"
-        ),
-        format!(
-            "максимална дълбочина {STRATEGY_DEPTH}, {w}×{h}, без рулетка, експозиция \
-             +{STRATEGY_EXPOSURE} стъпка; една от {count} картини на стратегиите, които заедно \
-             отнеха {took}"
-        ),
-    );
+    let made = |stops: f32| {
+        lang::pick(
+            format!(
+                "max depth {STRATEGY_DEPTH}, {w}×{h}, no roulette, exposure +{stops} stops; one \
+                 of {count} strategy images that took {took} together"
+            ),
+            format!(
+                "максимална дълбочина {STRATEGY_DEPTH}, {w}×{h}, без рулетка, експозиция \
+                 +{stops} стъпки; една от {count} картини на стратегиите, които заедно отнеха \
+                 {took}"
+            ),
+        )
+    };
     // The weighted images of all strategies add up to bidirectional path
     // tracing of max depth D = 3: written, so that the slide shows the sum.
     let mut sum = Image::new(w, h);
@@ -108,30 +114,43 @@ fn render(tour: &Tour) -> Result<Section> {
     }
     let sum_picture = write_image(&c.dir, "strategy-sum", &sum, options.spp, 0.0, None)?;
     for ((s, t), weighted, unweighted) in strategies {
-        for (image, kind, (en, bg)) in [
+        // The share of its own estimate that MIS leaves the strategy, so
+        // that a black weighted image says why it is black.
+        let total = |i: &Image| -> f64 { i.pixels.iter().map(|p| f64::from(p.x + p.y + p.z)).sum() };
+        let share = 100.0 * total(&weighted) / total(&unweighted).max(1e-30);
+        let share = if share >= 1.0 {
+            format!("{share:.0} %")
+        } else if share >= 0.005 {
+            lang::pick(format!("{share:.2} %"), format!("{share:.2} %").replace('.', ","))
+        } else {
+            lang::pick("< 0.01 %", "< 0,01 %").to_string()
+        };
+        let kept = lang::pick(
+            format!("weighted: its share after MIS, {share} of its own estimate's light"),
+            format!("претеглена: делът ѝ след MIS, {share} от светлината на собствената ѝ оценка"),
+        );
+        for (image, kind, what, stops) in [
             (
                 &unweighted,
                 "unweighted",
-                (
+                lang::pick(
                     "unweighted: its own estimate of every path it can make",
                     "без тегла: собствената ѝ оценка на всеки път, който може да създаде",
-                ),
+                )
+                .to_string(),
+                UNWEIGHTED_EXPOSURE,
             ),
-            (
-                &weighted,
-                "weighted",
-                ("weighted: its share after MIS", "претеглена: делът ѝ след MIS"),
-            ),
+            (&weighted, "weighted", kept, WEIGHTED_EXPOSURE),
         ] {
             let stem = format!("strategy-s{s}-t{t}-{kind}");
-            let picture = write_image(&c.dir, &stem, image, options.spp, STRATEGY_EXPOSURE, None)?;
+            let picture = write_image(&c.dir, &stem, image, options.spp, stops, None)?;
             let segments = match (s + t - 1, lang::current()) {
                 (1, lang::Lang::En) => "1 segment".to_string(),
                 (n, lang::Lang::En) => format!("{n} segments"),
                 (1, lang::Lang::Bg) => "1 отсечка".to_string(),
                 (n, lang::Lang::Bg) => format!("{n} отсечки"),
             };
-            let what = lang::pick(en, bg);
+            let made = made(stops);
             c.section.figures.push(Figure::new(
                 &tour.out,
                 &picture,

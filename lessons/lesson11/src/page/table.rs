@@ -2,8 +2,9 @@
 //!
 //! The page shows a table in the run's language; its CSV keeps English
 //! column names and words whatever the language (a table made with
-//! [`Table::in_both`]), so that scripts, the tests and the slides' checks
-//! read the same columns from every run.
+//! [`Table::in_both`], or with [`Table::new`] and headings that
+//! [`HEADINGS`] translates), so that scripts, the tests and the slides'
+//! checks read the same columns from every run.
 
 use std::path::Path;
 
@@ -17,20 +18,53 @@ pub struct Table {
     pub header: Vec<String>,
     /// The rows as the page shows them.
     pub rows: Vec<Vec<String>>,
-    /// The CSV's headings and rows in English, where they may differ from
-    /// the page's (a table made with [`Table::in_both`]); `None`: the CSV is
-    /// the page's table.
-    csv: Option<(Vec<String>, Vec<Vec<String>>)>,
+    /// The CSV's headings in English, where they differ from the page's;
+    /// `None`: the page's.
+    csv_header: Option<Vec<String>>,
+    /// The CSV's rows in English, for a table made with [`Table::in_both`];
+    /// `None`: the page's rows.
+    csv_rows: Option<Vec<Vec<String>>>,
 }
 
+/// The Bulgarian of the column headings that tables made with
+/// [`Table::new`] use (chapters 8 and 9), in the lecture's words: the page
+/// shows these, the CSV the English. A heading not listed (a symbol, `RMSE`,
+/// `spp`) is the same in both languages.
+pub const HEADINGS: [(&str, &str); 10] = [
+    ("scene", "сцена"),
+    ("algorithm", "алгоритъм"),
+    ("max depth D", "максимална дълбочина D"),
+    ("seconds", "секунди"),
+    ("reference", "еталон"),
+    ("reference noise floor", "дъно на шума на еталона"),
+    ("unbiased", "неотместен"),
+    ("bias² ± SE", "отместване² ± SE"),
+    ("variance", "дисперсия"),
+    ("first time RMSE ≤ target", "първо време с RMSE ≤ целта"),
+];
+
 impl Table {
-    /// A table whose page and CSV say the same.
+    /// A table whose CSV has the headings `header` and the page's rows; the
+    /// page shows the headings in the run's language ([`HEADINGS`]).
     pub fn new(caption: &str, header: &[&str]) -> Self {
+        let shown = |h: &str| {
+            match lang::current() {
+                Lang::Bg => HEADINGS
+                    .iter()
+                    .find(|(en, _)| *en == h)
+                    .map_or(h, |(_, bg)| *bg),
+                _ => h,
+            }
+            .to_string()
+        };
+        let header: Vec<String> = header.iter().map(|h| h.to_string()).collect();
+        let page: Vec<String> = header.iter().map(|h| shown(h)).collect();
         Table {
             caption: caption.into(),
-            header: header.iter().map(|h| h.to_string()).collect(),
+            csv_header: (page != header).then_some(header),
+            header: page,
             rows: Vec::new(),
-            csv: None,
+            csv_rows: None,
         }
     }
 
@@ -43,10 +77,8 @@ impl Table {
             .iter()
             .map(|(en, bg)| lang::pick(*en, *bg).into())
             .collect();
-        table.csv = Some((
-            header.iter().map(|(en, _)| en.to_string()).collect(),
-            Vec::new(),
-        ));
+        table.csv_header = Some(header.iter().map(|(en, _)| en.to_string()).collect());
+        table.csv_rows = Some(Vec::new());
         table
     }
 
@@ -54,7 +86,7 @@ impl Table {
     /// a table in both languages, in English.
     pub fn push(&mut self, row: impl Fn(Lang) -> Vec<String>) {
         self.rows.push(row(lang::current()));
-        if let Some((_, rows)) = &mut self.csv {
+        if let Some(rows) = &mut self.csv_rows {
             rows.push(row(Lang::En));
         }
     }
@@ -68,10 +100,8 @@ impl Table {
                 f.to_string()
             }
         };
-        let (header, rows) = match &self.csv {
-            Some((header, rows)) => (header, rows),
-            None => (&self.header, &self.rows),
-        };
+        let header = self.csv_header.as_ref().unwrap_or(&self.header);
+        let rows = self.csv_rows.as_ref().unwrap_or(&self.rows);
         let mut text = String::new();
         for row in std::iter::once(header).chain(rows) {
             text.push_str(&row.iter().map(|f| field(f)).collect::<Vec<_>>().join(","));

@@ -9,7 +9,9 @@ use std::path::Path;
 
 use anyhow::{Context, Result};
 
-use super::chart::{FONT, Scale, TITLE_FONT, legend_layout, tick_label, ticks};
+use super::chart::{
+    FONT, Scale, TITLE_FONT, is_bulgarian, legend_layout, tick_class, tick_text, ticks,
+};
 use super::palette::{GUIDE, OTHERS as COLORS};
 use super::series::label_text;
 
@@ -82,15 +84,22 @@ impl Bars {
             W / 2.0,
             label_text(&self.title)
         );
+        let bulgarian = is_bulgarian(
+            [&self.title, &self.y_label]
+                .map(String::as_str)
+                .into_iter()
+                .chain(legend.iter().copied()),
+        );
         for t in ticks(lo, hi, Scale::Log) {
             let y = py(10f64.powf(t));
             let _ = writeln!(
                 s,
-                "<line x1=\"{LEFT}\" y1=\"{y:.1}\" x2=\"{}\" y2=\"{y:.1}\" stroke=\"#ddd\"/><text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{}</text>",
+                "<line x1=\"{LEFT}\" y1=\"{y:.1}\" x2=\"{}\" y2=\"{y:.1}\" stroke=\"#ddd\"/><text class=\"{}\" x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{}</text>",
                 W - RIGHT,
+                tick_class("y", Scale::Log),
                 LEFT - 6.0,
                 y + 4.0,
-                tick_label(t, Scale::Log)
+                tick_text(t, Scale::Log, bulgarian)
             );
         }
         let n = self.parts.len().max(1) as f64;

@@ -6,7 +6,7 @@ use std::path::Path;
 
 use anyhow::{Context, Result};
 
-use super::palette::curve_color;
+use super::palette::{curve_color, dashed};
 use super::series::{Series, label_text};
 
 /// Scale of an axis.
@@ -53,7 +53,8 @@ pub fn legend_layout(labels: &[&str], width: f64) -> (usize, f64, usize) {
 
 /// Tick positions covering `[lo, hi]` (in the axis' own units: log10 for logs).
 /// A log axis gets at least three labelled ticks: the decades, then 2 and 5
-/// times them, then every integer multiple, as the range narrows.
+/// times them, then every integer multiple, then round steps of the values,
+/// as the range narrows.
 pub fn ticks(lo: f64, hi: f64, scale: Scale) -> Vec<f64> {
     if scale == Scale::Log {
         let inside = |t: &f64| *t >= lo - 1e-9 && *t <= hi + 1e-9;
@@ -71,10 +72,26 @@ pub fn ticks(lo: f64, hi: f64, scale: Scale) -> Vec<f64> {
                 })
                 .filter(inside)
                 .collect();
-            if out.len() >= 3 || multiples.len() == 9 {
+            if out.len() >= 3 {
                 return out;
             }
         }
+        // Less than three integer multiples of a power of ten inside (from
+        // 0.51 to 0.59, say): round steps of the values themselves.
+        // The step shrinks through 1, 0.5, 0.2, 0.1 × a power of ten until
+        // three multiples of it fall inside.
+        let (a, b) = (10f64.powf(lo), 10f64.powf(hi));
+        let mut step = 10f64.powf((b - a).log10().floor());
+        for k in 0.. {
+            let out: Vec<f64> = ((a / step).ceil() as i64..=(b / step).floor() as i64)
+                .map(|m| (m as f64 * step).log10())
+                .collect();
+            if out.len() >= 3 || k > 60 {
+                return out;
+            }
+            step /= [2.0, 2.5, 2.0][k % 3];
+        }
+        unreachable!("the loop returns")
     }
     let span = (hi - lo).max(1e-12);
     let raw = span / 5.0;
@@ -93,13 +110,42 @@ pub fn ticks(lo: f64, hi: f64, scale: Scale) -> Vec<f64> {
     out
 }
 
+/// The class of an axis' tick labels, `tick x log` or `tick y linear`: the
+/// slides' test counts the labelled ticks of every log axis by it.
+pub fn tick_class(axis: &str, scale: Scale) -> String {
+    let scale = match scale {
+        Scale::Log => "log",
+        Scale::Linear => "linear",
+    };
+    format!("tick {axis} {scale}")
+}
+
+/// Whether a chart speaks Bulgarian: some of its words are Cyrillic. Its
+/// numbers then take the decimal comma (0,05), as the Bulgarian slides do.
+pub fn is_bulgarian<'a>(texts: impl IntoIterator<Item = &'a str>) -> bool {
+    texts
+        .into_iter()
+        .any(|t| t.chars().any(|c| ('\u{0400}'..='\u{04ff}').contains(&c)))
+}
+
+/// A tick's label with the decimal separator of the chart's language.
+pub fn tick_text(t: f64, scale: Scale, bulgarian: bool) -> String {
+    let text = tick_label(t, scale);
+    if bulgarian {
+        text.replace('.', ",")
+    } else {
+        text
+    }
+}
+
 pub fn tick_label(t: f64, scale: Scale) -> String {
     match scale {
         Scale::Log => {
             let v = 10f64.powf(t);
             if (1e-3..1e4).contains(&v) {
-                // Three significant digits: 0.002, 0.05, 20.
-                let digits = (2 - v.log10().floor() as i32).max(0) as usize;
+                // Four significant digits at most (a narrow axis' ticks
+                // differ in the third): 0.002, 0.05, 20, 5.15.
+                let digits = (3 - v.log10().floor() as i32).max(0) as usize;
                 let text = format!("{v:.digits$}");
                 if text.contains('.') {
                     text.trim_end_matches('0').trim_end_matches('.').to_string()
@@ -107,8 +153,11 @@ pub fn tick_label(t: f64, scale: Scale) -> String {
                     text
                 }
             } else {
-                let e = t.floor();
-                let m = (10f64.powf(t - e)).round();
+                let mut e = t.floor();
+                let mut m = (10f64.powf(t - e) * 100.0).round() / 100.0;
+                if m >= 10.0 {
+                    (m, e) = (m / 10.0, e + 1.0);
+                }
                 if m == 1.0 {
                     format!("1e{e}")
                 } else {
@@ -167,6 +216,8 @@ impl Chart {
         let py = |y: f64| H - BOTTOM - (y - y0) / (y1 - y0) * (H - TOP - BOTTOM);
         let labels: Vec<&str> = self.series.iter().map(|s| s.label.as_str()).collect();
         let (columns, column, rows) = legend_layout(&labels, W);
+        let words = [&self.title, &self.x_label, &self.y_label].map(String::as_str);
+        let bulgarian = is_bulgarian(words.into_iter().chain(labels.iter().copied()));
         let height = H + 22.0 * rows as f64 + 8.0;
         let mut s = String::new();
         let _ = writeln!(
@@ -184,22 +235,24 @@ impl Chart {
             let x = px(t);
             let _ = writeln!(
                 s,
-                "<line x1=\"{x:.1}\" y1=\"{}\" x2=\"{x:.1}\" y2=\"{}\" stroke=\"#ddd\"/><text x=\"{x:.1}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
+                "<line x1=\"{x:.1}\" y1=\"{}\" x2=\"{x:.1}\" y2=\"{}\" stroke=\"#ddd\"/><text class=\"{}\" x=\"{x:.1}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
                 TOP,
                 H - BOTTOM,
+                tick_class("x", self.x_scale),
                 H - BOTTOM + 19.0,
-                tick_label(t, self.x_scale)
+                tick_text(t, self.x_scale, bulgarian)
             );
         }
         for t in ticks(y0, y1, self.y_scale) {
             let y = py(t);
             let _ = writeln!(
                 s,
-                "<line x1=\"{LEFT}\" y1=\"{y:.1}\" x2=\"{}\" y2=\"{y:.1}\" stroke=\"#ddd\"/><text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{}</text>",
+                "<line x1=\"{LEFT}\" y1=\"{y:.1}\" x2=\"{}\" y2=\"{y:.1}\" stroke=\"#ddd\"/><text class=\"{}\" x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{}</text>",
                 W - RIGHT,
+                tick_class("y", self.y_scale),
                 LEFT - 6.0,
                 y + 4.0,
-                tick_label(t, self.y_scale)
+                tick_text(t, self.y_scale, bulgarian)
             );
         }
         let _ = writeln!(
@@ -237,7 +290,7 @@ impl Chart {
             // A flat guide (two points at one height: a noise floor, a
             // bias floor) is dashed and has no dots: it is no measurement.
             let guide = series.points.len() == 2 && series.points[0].1 == series.points[1].1;
-            let dash = if guide {
+            let dash = if guide || dashed(&series.label) {
                 " stroke-dasharray=\"7 5\""
             } else {
                 ""

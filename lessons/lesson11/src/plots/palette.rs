@@ -2,7 +2,10 @@
 //! curve of path tracing is the same blue in chapter 8's convergence plots
 //! and in chapter 9's, whatever else the chart shows. Curves that are not an
 //! algorithm (BRDF lobes, a noise floor) take the colours of [`OTHERS`],
-//! none of which an algorithm uses.
+//! none of which an algorithm uses; a BRDF keeps its colour from chart to
+//! chart too (Phong with n = 10 is the same blue in chapter 3's lobes, their
+//! true heights and the directional albedo), and an unnormalized variant of
+//! one is drawn dashed in its colour.
 
 /// Every algorithm a chart draws a curve of.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -91,6 +94,36 @@ pub const OTHERS: [&str; 8] = [
 /// The grey of a reference's noise floor and other guide lines.
 pub const GUIDE: &str = "#777777";
 
+/// The colour of a BRDF a label names, the same on every chart: Lambert,
+/// Phong by its exponent (`Phong n=10`, `n = 10 unnorm.`), the mirror.
+fn brdf_color(label: &str) -> Option<&'static str> {
+    let l: String = label.to_lowercase().split_whitespace().collect();
+    if l.contains("lambert") {
+        return Some(OTHERS[0]);
+    }
+    if l.contains("mirror") || l.contains("огледало") {
+        return Some(OTHERS[4]);
+    }
+    let start = l.find("n=")? + 2;
+    let digits: String = l[start..]
+        .chars()
+        .take_while(char::is_ascii_digit)
+        .collect();
+    match digits.as_str() {
+        "1" => Some(OTHERS[1]),
+        "10" => Some(OTHERS[2]),
+        "100" => Some(OTHERS[3]),
+        _ => None,
+    }
+}
+
+/// Whether a curve is drawn dashed: an unnormalized BRDF (beside its
+/// normalized self, in the same colour).
+pub fn dashed(label: &str) -> bool {
+    let l = label.to_lowercase();
+    l.contains("unnorm") || l.contains("ненорм")
+}
+
 /// The colour of the `i`-th curve of a chart, labelled `label`.
 pub fn curve_color(label: &str, i: usize) -> &'static str {
     if let Some(d) = Drawn::of_label(label) {
@@ -100,5 +133,5 @@ pub fn curve_color(label: &str, i: usize) -> &'static str {
     if l.contains("noise floor") || l.contains("шум") {
         return GUIDE;
     }
-    OTHERS[i % OTHERS.len()]
+    brdf_color(label).unwrap_or(OTHERS[i % OTHERS.len()])
 }

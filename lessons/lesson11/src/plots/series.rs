@@ -35,7 +35,7 @@ pub fn label_text(s: &str) -> String {
         };
         match sub {
             Some(sub) => out.push_str(&format!(
-                "<tspan baseline-shift=\"sub\" font-size=\"75%\">{}</tspan>",
+                "<tspan baseline-shift=\"sub\" font-size=\"85%\">{}</tspan>",
                 escape(&sub)
             )),
             None => out.push_str(&escape(&c.to_string())),

@@ -6,8 +6,11 @@
 //! The picture lies in the SVG as a PNG at its own pixels (a data URI, as
 //! the slides show SVG with `<img>`), drawn at a whole multiple of its size
 //! (twice at least, the drawing at least 256 units wide) without smoothing;
-//! the bar's numbers are SVG text 13 units high, so at least 13 px wherever
-//! the figure is shown at its drawing's size or more.
+//! the bar's numbers are SVG text a sixteenth of the drawing's width high
+//! (16 units at least), so that they stay 12 px or more on a slide that
+//! shows the figure at three quarters of its drawing's size. At that
+//! height five numbers do not fit in a row: the bar numbers its ends and 0
+//! and leaves the half-way ticks bare.
 
 use std::fmt::Write as _;
 
@@ -18,9 +21,8 @@ use super::zmap::diverging;
 
 /// The least width of the drawing, in its units.
 const LEAST_WIDTH: u32 = 256;
-/// Height of the bar and of its labels, in drawing units.
-const BAR: u32 = 14;
-const FONT: u32 = 13;
+/// The least height of the bar's numbers, in drawing units.
+const LEAST_FONT: u32 = 16;
 
 /// A round bound for a colour scale: the smallest of 1, 2, 5 × 10ⁿ at or
 /// above `v` (and 1 for a `v` that is not a positive number).
@@ -55,7 +57,7 @@ pub fn label(v: f64, scale: f64) -> String {
 
 /// The SVG of `values` (one signed number per pixel of a `width`×`height`
 /// picture, row by row) in colours spanning [−scale, scale], with a bar of
-/// five numbered ticks. An error, for pictures that cannot be encoded.
+/// five ticks, three of them numbered. An error, for pictures that cannot be encoded.
 pub fn signed_map_svg(
     values: &[f32],
     width: u32,
@@ -69,15 +71,18 @@ pub fn signed_map_svg(
     let png = image.png_bytes(0.0)?;
     let zoom = LEAST_WIDTH.div_ceil(width.max(1)).max(2);
     let (w, h) = (width * zoom, height * zoom);
-    let margin = 3 * FONT;
+    // The numbers' height, and the bar's.
+    let font = (w / 16).max(LEAST_FONT);
+    let bar = font;
+    let margin = 3 * font;
     let (bar_x, bar_w) = (margin, w - 2 * margin);
-    let bar_y = h + FONT / 2;
-    let total_h = bar_y + BAR + 6 + FONT + 4;
+    let bar_y = h + font / 2;
+    let total_h = bar_y + bar + 6 + font + 4;
     let mut svg = String::new();
     let _ = writeln!(
         svg,
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{total_h}\" \
-         viewBox=\"0 0 {w} {total_h}\" font-family=\"sans-serif\" font-size=\"{FONT}\">\
+         viewBox=\"0 0 {w} {total_h}\" font-family=\"sans-serif\" font-size=\"{font}\">\
          <rect width=\"100%\" height=\"100%\" fill=\"white\"/>"
     );
     let _ = writeln!(
@@ -107,20 +112,28 @@ pub fn signed_map_svg(
     let _ = writeln!(svg, "</linearGradient></defs>");
     let _ = writeln!(
         svg,
-        "<rect x=\"{bar_x}\" y=\"{bar_y}\" width=\"{bar_w}\" height=\"{BAR}\" fill=\"url(#bar)\" \
+        "<rect x=\"{bar_x}\" y=\"{bar_y}\" width=\"{bar_w}\" height=\"{bar}\" fill=\"url(#bar)\" \
          stroke=\"#333\" stroke-width=\"0.5\"/>"
     );
+    // Numbers at the ends and at 0 only: five of this height do not fit in
+    // a row (a number of 5 characters is some 3 of its heights wide).
     for i in 0..5 {
-        let v = scale * (i as f64 / 2.0 - 1.0);
         let x = bar_x as f64 + bar_w as f64 * i as f64 / 4.0;
-        let _ = writeln!(
+        let _ = write!(
             svg,
-            "<line x1=\"{x:.1}\" x2=\"{x:.1}\" y1=\"{bar_y}\" y2=\"{}\" stroke=\"#111\"/>\
-             <text x=\"{x:.1}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
-            bar_y + BAR + 4,
-            bar_y + BAR + 4 + FONT,
-            label(v, scale)
+            "<line x1=\"{x:.1}\" x2=\"{x:.1}\" y1=\"{bar_y}\" y2=\"{}\" stroke=\"#111\"/>",
+            bar_y + bar + 4,
         );
+        if i % 2 == 0 {
+            let _ = write!(
+                svg,
+                "<text x=\"{x:.1}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
+                bar_y + bar + 4 + font,
+                // As few digits as the numbered ticks need: −0.05, not −0.050.
+                label(scale * (i as f64 / 2.0 - 1.0), 2.0 * scale)
+            );
+        }
+        svg.push('\n');
     }
     svg.push_str("</svg>\n");
     Ok(svg)

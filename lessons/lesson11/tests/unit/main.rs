@@ -21,6 +21,7 @@ mod commands_slides_math;
 mod integrators;
 mod language;
 mod page_figure;
+mod page_table;
 mod plots_bars;
 mod plots_chart;
 mod plots_data_uri;

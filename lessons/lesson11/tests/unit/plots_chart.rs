@@ -48,3 +48,23 @@ fn svg_has_every_series_and_axis_label() {
         assert!(svg.contains(text), "{text}");
     }
 }
+
+#[test]
+fn every_log_axis_gets_at_least_three_labelled_ticks_however_narrow() {
+    // From many decades down to 5 % of a value, anywhere on the axis.
+    for lo in [-9.0, -4.3, -2.0, -1.0, -0.31, 0.0, 0.7, 2.5] {
+        for span in [6.0, 2.0, 1.0, 0.5, 0.2, 0.1, 0.05, 0.02] {
+            let (a, b) = (lo, lo + span);
+            let t = ticks(a, b, Scale::Log);
+            assert!(t.len() >= 3, "[{a}, {b}]: {t:?}");
+            assert!(
+                t.iter().all(|t| *t >= a - 1e-9 && *t <= b + 1e-9),
+                "[{a}, {b}]: {t:?}"
+            );
+            let labels: Vec<String> = t.iter().map(|t| tick_label(*t, Scale::Log)).collect();
+            let mut distinct = labels.clone();
+            distinct.dedup();
+            assert_eq!(distinct, labels, "[{a}, {b}]: labels that repeat");
+        }
+    }
+}
