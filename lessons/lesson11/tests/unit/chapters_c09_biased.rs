@@ -1,6 +1,7 @@
 //! Unit tests of `chapters/c09_biased.rs`.
 
 use lesson11::chapters::c09_biased::*;
+use lesson11::equal_time::off_the_light;
 use lesson11::tour::Quality;
 use raytracer::film::Image;
 use raytracer::math::Color;
@@ -18,7 +19,7 @@ fn the_slides_state_the_default_seed_count() {
         (
             "bg",
             format!(
-                "Средното от {seeds} рендерирания с независими seed-ове (при качеството по подразбиране)"
+                "Средното от {seeds} рендерирания с независими случайни числа (при качеството по подразбиране)"
             ),
         ),
     ] {
