@@ -251,7 +251,13 @@ pub fn off_the_light(reference: &Image) -> Vec<bool> {
 /// The RMSE of `a` against `b` over the `counted` pixels and all channels.
 pub fn masked_rmse(a: &Image, b: &Image, counted: &[bool]) -> f64 {
     let (mut sum, mut n) = (0.0f64, 0usize);
-    for ((x, y), _) in a.pixels.iter().zip(&b.pixels).zip(counted).filter(|(_, c)| **c) {
+    for ((x, y), _) in a
+        .pixels
+        .iter()
+        .zip(&b.pixels)
+        .zip(counted)
+        .filter(|(_, c)| **c)
+    {
         for ch in 0..3 {
             let d = (x[ch] - y[ch]) as f64;
             sum += d * d;
@@ -265,7 +271,13 @@ pub fn masked_rmse(a: &Image, b: &Image, counted: &[bool]) -> f64 {
 /// variance of its mean), below which no error measured against it falls.
 pub fn masked_noise_floor(reference: &crate::reference::Reference, counted: &[bool]) -> f64 {
     let (mut sum, mut n) = (0.0f64, 0usize);
-    for (v, _) in reference.variance.pixels.iter().zip(counted).filter(|(_, c)| **c) {
+    for (v, _) in reference
+        .variance
+        .pixels
+        .iter()
+        .zip(counted)
+        .filter(|(_, c)| **c)
+    {
         sum += (v.x + v.y + v.z) as f64;
         n += 3;
     }

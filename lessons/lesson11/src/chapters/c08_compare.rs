@@ -414,6 +414,8 @@ fn metropolis_noise(
 fn short(algorithm: &str) -> &str {
     match algorithm {
         "naive recursion, N = 4 then 1" => "naive recursion",
+        "door" => "door scene",
+        "cornell" => "Cornell box",
         "path (MIS)" => "path tracing (MIS)",
         "path (BRDF only)" => "path tracing (BRDF only)",
         "light" => "light tracing",
@@ -427,7 +429,7 @@ fn short(algorithm: &str) -> &str {
 /// the lecture's English names, as on the slides).
 fn in_bulgarian(en: &str) -> String {
     match en {
-        "door" => "сцената с вратата",
+        "door" | "door scene" => "сцената с вратата",
         "cornell" => "Cornell box",
         "error against time" => "грешка спрямо времето",
         "seconds" => "секунди",

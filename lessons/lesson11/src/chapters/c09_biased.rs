@@ -335,8 +335,8 @@ fn render(tour: &Tour) -> Result<Section> {
                  {max_depth}, each point a run of its own with four times the work of the one \
                  before: photon mapping, clamped instant radiosity and irradiance caching build \
                  once, then render more samples per pixel that all read what was built, so their \
-                 error falls towards the floor that build sets and no further; path tracing, \
-                 unbiased, for scale. The dashed lines are that floor's part no build removes, \
+                 error falls towards the floor that build sets and no further (path tracing, \
+                 for scale, is on the next chart). The dashed lines are that floor's part no build removes, \
                  √bias² from {} seeds ({}); a single build's own noise adds to it. {}",
                 reference.name,
                 e.seeds,
@@ -349,7 +349,8 @@ fn render(tour: &Tour) -> Result<Section> {
                  четири пъти повече работа от предишното: photon mapping, instant radiosity с \
                  ограничаване и irradiance caching строят веднъж, после рендерират още проби на \
                  пиксел, които четат построеното, затова грешката им пада към дъното, което \
-                 строежът определя, и не по-надолу; path tracing, неотместен, за сравнение. \
+                 строежът определя, и не по-надолу (path tracing, за сравнение, е на следващата \
+                 графика). \
                  Прекъснатите линии са частта от това дъно, която никой строеж не премахва, \
                  √(отместване²) от {} рендерирания ({}); шумът на един строеж се добавя към нея. {}",
                 reference.name,
@@ -837,7 +838,9 @@ fn rmse_time_chart(measured: &[Measured], shown: &[Algorithm], title: &str) -> C
         .collect();
     for m in shown.iter().filter(|m| m.build_once() && m.split.resolved()) {
         series.push(Series {
-            label: format!("{}: √{}", m.algorithm.label(), lang::pick("bias²", "отместване²")),
+            // "floor", not "√bias²": the longest label sets the legend's
+            // columns, and "irradiance caching: √отместване²" took one a row.
+            label: format!("{}: {}", m.algorithm.label(), lang::pick("floor", "дъно")),
             points: vec![(t0, m.split.bias2.sqrt()), (t1, m.split.bias2.sqrt())],
         });
     }
@@ -851,14 +854,10 @@ fn rmse_time_chart(measured: &[Measured], shown: &[Algorithm], title: &str) -> C
     }
 }
 
-/// The algorithms of the first error-against-time chart: the build-once
-/// methods beside path tracing; the second has the unbiased ones and SPPM.
-const BUILD_ONCE: [Algorithm; 4] = [
-    Algorithm::Path,
-    Algorithm::Photon,
-    Algorithm::Vpl,
-    Algorithm::IrradianceCache,
-];
+/// The algorithms of the first error-against-time chart, the build-once
+/// methods (with their floors, seven legend entries would shrink the chart);
+/// the second has the unbiased ones and SPPM.
+const BUILD_ONCE: [Algorithm; 3] = [Algorithm::Photon, Algorithm::Vpl, Algorithm::IrradianceCache];
 const FALLING: [Algorithm; 3] = [Algorithm::Path, Algorithm::Bdpt, Algorithm::Sppm];
 
 /// Bias² beside variance per algorithm, on a log axis, in the current
