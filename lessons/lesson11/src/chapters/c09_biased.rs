@@ -306,12 +306,14 @@ fn render(tour: &Tour) -> Result<Section> {
                 &measured,
                 &BUILD_ONCE,
                 lang::pick("Cornell box: build once", "Cornell box: строят веднъж"),
+                None,
             );
             chart.write(&c.dir.join(format!("{}-rmse-time-{code}.svg", scene.name)))?;
             let chart = rmse_time_chart(
                 &measured,
                 &FALLING,
                 lang::pick("Cornell box: unbiased, and SPPM", "Cornell box: неотместени и SPPM"),
+                Some(floor),
             );
             chart.write(&c.dir.join(format!("{}-rmse-time-sppm-{code}.svg", scene.name)))?;
             bias_variance_bars(&measured, e.seeds, e.budget / e.seed_share)
@@ -369,7 +371,9 @@ fn render(tour: &Tour) -> Result<Section> {
                 "RMSE against time as above, for the unbiased path tracing and bidirectional \
                  path tracing, which fall as t^−1/2 all the way to zero, and SPPM: biased but \
                  consistent, each pass shrinks its radii, so its bias falls with the passes too \
-                 and it has no fixed floor to draw; its bias² over {} seeds: {}.",
+                 and it has no fixed floor to draw; its bias² over {} seeds: {}. The grey dashed \
+                 line is the reference's own noise, {floor:.5}, below which no error measured \
+                 against it falls.",
                 e.seeds,
                 sppm_bias(&measured),
             ),
@@ -378,7 +382,8 @@ fn render(tour: &Tour) -> Result<Section> {
                  path tracing, които падат като t^−1/2 чак до нула, и SPPM: отместен, но \
                  състоятелен, всеки проход намалява радиусите му, затова и отместването му пада с \
                  проходите и няма постоянно дъно, което да се начертае; отместването² му от {} \
-                 рендерирания: {}.",
+                 рендерирания: {}. Сивата прекъсната линия е шумът на самия еталон, {floor:.5}, \
+                 под който не пада никоя грешка, измерена спрямо него.",
                 e.seeds,
                 sppm_bias(&measured),
             ),
@@ -390,13 +395,24 @@ fn render(tour: &Tour) -> Result<Section> {
         &svg,
         &lang::pick(
             format!(
-                "Bias² and variance per algorithm (log scale) at {} each, from {} runs with                  independent seeds: variance is their spread per pixel, bias² the squared error of                  their mean image against {}, less the part the spread and the reference's own                  noise (floor {floor:.5}) explain. An outline is a bias² that does not stand out                  of its noise, drawn up to its bound (b̂² + 2 SE); the table gives each bias² with                  its standard error.",
+                "Bias² and variance per algorithm (log scale) at {} each, from {} runs with \
+                 independent seeds: variance is their spread per pixel, bias² the squared error of \
+                 their mean image against {} off the lamp, less the part the spread and the \
+                 reference's own noise (floor {floor:.5}) explain. An outline is a bias² that does \
+                 not stand out of its noise, drawn up to its bound (b̂² + 2 SE); the table gives \
+                 each bias² with its standard error",
                 seconds_text(e.budget / e.seed_share),
                 e.seeds,
                 reference.name
             ),
             format!(
-                "Отместване² и дисперсия за всеки алгоритъм (логаритмична скала) при {} на                  рендериране, от {} рендерирания с независими случайни числа: дисперсията е разсейването                  им във всеки пиксел, отместването² – квадратът на грешката на средната им картинка                  спрямо {} без частта, която разсейването и шумът на самия еталон (дъно {floor:.5})                  обясняват. Контурът е отместване², което не се откроява от шума си, начертано до                  горната му граница (b̂² + 2 SE); таблицата дава всяко отместване² със                  стандартната му грешка.",
+                "Отместване² и дисперсия за всеки алгоритъм (логаритмична скала) при {} на \
+                 рендериране, от {} рендерирания с независими случайни числа: дисперсията е \
+                 разсейването им във всеки пиксел, отместването² – квадратът на грешката на \
+                 средната им картинка спрямо {} без лампата, без частта, която разсейването и \
+                 шумът на самия еталон (дъно {floor:.5}) обясняват. Контурът е отместване², което \
+                 не се откроява от шума си, начертано до горната му граница (b̂² + 2 SE); \
+                 таблицата дава всяко отместване² със стандартната му грешка",
                 seconds_text(e.budget / e.seed_share),
                 e.seeds,
                 reference.name
@@ -821,7 +837,15 @@ fn equal_time(
 /// √bias² in its colour, the floor no amount of rendering removes. Every
 /// chart spans the times of all the algorithms, a quarter more on each side
 /// (a point on the frame is cut in half), so the two read on one time axis.
-fn rmse_time_chart(measured: &[Measured], shown: &[Algorithm], title: &str) -> Chart {
+///
+/// `noise_floor`, when given, is drawn too: the reference's own noise, the
+/// floor of the unbiased curves as measured here.
+fn rmse_time_chart(
+    measured: &[Measured],
+    shown: &[Algorithm],
+    title: &str,
+    noise_floor: Option<f64>,
+) -> Chart {
     let times = measured.iter().flat_map(|m| m.curve.iter().map(|p| p.0));
     let (t0, t1) = times.fold((f64::MAX, 0.0f64), |(a, b), t| (a.min(t), b.max(t)));
     let (t0, t1) = (t0 / 1.25, t1 * 1.25);
@@ -842,6 +866,12 @@ fn rmse_time_chart(measured: &[Measured], shown: &[Algorithm], title: &str) -> C
             // columns, and "irradiance caching: √отместване²" took one a row.
             label: format!("{}: {}", m.algorithm.label(), lang::pick("floor", "дъно")),
             points: vec![(t0, m.split.bias2.sqrt()), (t1, m.split.bias2.sqrt())],
+        });
+    }
+    if let Some(floor) = noise_floor {
+        series.push(Series {
+            label: lang::pick("reference noise floor", "дъното на шума на еталона").into(),
+            points: vec![(t0, floor), (t1, floor)],
         });
     }
     Chart {
