@@ -18,6 +18,7 @@ use raytracer::scene::Scene;
 
 use crate::algorithms::{Algorithm, Knobs, Prepared, Run};
 use crate::bias::{BiasVariance, split};
+use crate::equal_time::{masked_rmse, off_the_light};
 use crate::page::{Figure, Section, Table, seconds_number, seconds_text};
 use crate::plots::{Bars, Chart, Part, Scale, Series, round_scale, signed_map_svg};
 use crate::reference::{Reference, independent};
@@ -78,8 +79,7 @@ pub fn effort(quality: Quality) -> Effort {
         },
         Quality::Quick => Effort {
             size: Some(128),
-            // 0.4 s, not 0.5: the tour took 60.3 s with 0.5 (chapter 9 13.0 s).
-            budget: 0.4,
+            budget: crate::equal_time::QUICK_SECONDS,
             caustic_budget: 0.2,
             seeds: 16,
             // Each seed's run 1/30 s, as before the budget grew from 0.2 s.
@@ -172,7 +172,7 @@ fn render(tour: &Tour) -> Result<Section> {
                  проходите). Instant radiosity: VPL на {} светлинни пътя, геометричният член \
                  ограничен до {VPL_CLAMP}. Irradiance caching: a = {}, {} лъча на запис. Грешката \
                  на всеки алгоритъм е разделена на отместване² и дисперсия по {} рендерирания с \
-                 независими seed-ове (по {} всяко): средното им минус еталона е самото \
+                 независими случайни числа (по {} всяко): средното им минус еталона е самото \
                  отместване, показано като картина.",
                 seconds_text(e.budget),
                 seconds_text(e.caustic_budget),
@@ -209,7 +209,9 @@ fn render(tour: &Tour) -> Result<Section> {
     base.progress = false;
     let builtin = tour.overrides.scene.is_none().then_some("cornell");
     let (reference, max_depth) = independent(builtin, &scene, &base, 5, 256);
-    let floor = reference.noise_floor();
+    // The lamp and the pixels at its edge are left out of every error.
+    let counted = off_the_light(&reference.mean);
+    let floor = crate::equal_time::masked_noise_floor(&reference, &counted);
     crate::console::say!(
         "  {}",
         lang::fill(
@@ -228,8 +230,6 @@ fn render(tour: &Tour) -> Result<Section> {
             ]
         )
     );
-    // The lamp and the pixels at its edge are left out of every error.
-    let counted = off_the_light(&reference.mean);
     let mut measured = Vec::new();
     for algorithm in Algorithm::ALL {
         let m = measure(&scene, &base, algorithm, &k, max_depth, &reference, &counted, &e)?;
@@ -333,8 +333,21 @@ fn render(tour: &Tour) -> Result<Section> {
     for language in lang::Lang::ALL {
         lang::with(language, || -> Result<()> {
             let code = language.code();
-            rmse_time_chart(&measured).write(&c.dir.join(format!("{}-rmse-time-{code}.svg", scene.name)))?;
-            bias_variance_bars(&measured, e.seeds)
+            let chart = rmse_time_chart(
+                &measured,
+                &BUILD_ONCE,
+                lang::pick("Cornell box: build once", "Cornell box: строят веднъж"),
+                None,
+            );
+            chart.write(&c.dir.join(format!("{}-rmse-time-{code}.svg", scene.name)))?;
+            let chart = rmse_time_chart(
+                &measured,
+                &FALLING,
+                lang::pick("Cornell box: unbiased, and SPPM", "Cornell box: неотместени и SPPM"),
+                Some(floor),
+            );
+            chart.write(&c.dir.join(format!("{}-rmse-time-sppm-{code}.svg", scene.name)))?;
+            bias_variance_bars(&measured, e.seeds, e.budget / e.seed_share)
                 .write(&c.dir.join(format!("{}-bias-variance-{code}.svg", scene.name)))
         })?;
     }
@@ -345,23 +358,65 @@ fn render(tour: &Tour) -> Result<Section> {
         .filter(|m| m.build_once() && m.split.resolved())
         .map(|m| format!("{} {:.4}", m.algorithm.label(), m.split.bias2.sqrt()))
         .collect();
+    let (w, h) = (scene.camera.width, scene.camera.height);
     c.section.figures.push(Figure::plot(
         &tour.out,
         &svg,
         &lang::pick(
             format!(
-                "RMSE against time, log–log, against {} (off the lamp), 128×128 pixels, max depth                  {max_depth}, each point a run of its own with four times the work of the one before:                  path tracing and bidirectional fall as t^−1/2, all the way to zero; photon mapping,                  clamped instant radiosity and irradiance caching build once, then render more                  samples per pixel that all read what was built, so their error falls towards the                  floor that build sets and no further. The dashed lines are that floor's part no                  build removes, √bias² from {} seeds ({}); a single build's own noise adds to it. {}                  SPPM, consistent, falls further in the limit (its radii shrink with every pass),                  more slowly.",
+                "RMSE against time, log–log, against {} off the lamp, {w}×{h} pixels, max depth \
+                 {max_depth}, each point a run of its own with four times the work of the one \
+                 before: photon mapping, clamped instant radiosity and irradiance caching build \
+                 once, then render more samples per pixel that all read what was built, so their \
+                 error falls towards the floor that build sets and no further (path tracing, \
+                 for scale, is on the next chart). The dashed lines are that floor's part no build removes, \
+                 √bias² from {} seeds ({}); a single build's own noise adds to it. {}",
                 reference.name,
                 e.seeds,
                 floors.join(", "),
                 flat_text(&flat, e.budget),
             ),
             format!(
-                "RMSE спрямо времето, log–log, спрямо {} (без лампата), 128×128 пиксела, максимална                  дълбочина {max_depth}; всяка точка е отделно рендериране с двойно повече работа от                  предишното: path tracing и bidirectional падат като t^−1/2, чак до нула; photon                  mapping, instant radiosity с ограничаване и irradiance caching строят веднъж, после                  рендерират още проби на пиксел, които четат построеното, затова грешката им пада                  към дъното, което строежът определя, и не по-надолу. Прекъснатите линии са частта                  от това дъно, която никой строеж не премахва, √(отместване²) от {} seed-а ({});                  шумът на един строеж се добавя към нея. {} SPPM е състоятелен и в границата пада                  по-надолу (радиусите му намаляват с всеки проход), но по-бавно.",
+                "RMSE спрямо времето, в логаритмичен мащаб, спрямо {} без лампата, {w}×{h} \
+                 пиксела, максимална дълбочина {max_depth}; всяка точка е отделно рендериране с \
+                 четири пъти повече работа от предишното: photon mapping, instant radiosity с \
+                 ограничаване и irradiance caching строят веднъж, после рендерират още проби на \
+                 пиксел, които четат построеното, затова грешката им пада към дъното, което \
+                 строежът определя, и не по-надолу (path tracing, за сравнение, е на следващата \
+                 графика). \
+                 Прекъснатите линии са частта от това дъно, която никой строеж не премахва, \
+                 √(отместване²) от {} рендерирания ({}); шумът на един строеж се добавя към нея. {}",
                 reference.name,
                 e.seeds,
                 floors.join(", "),
                 flat_text(&flat, e.budget),
+            ),
+        ),
+    ));
+    let svg = c.dir.join(format!("{}-rmse-time-sppm-{code}.svg", scene.name));
+    c.section.figures.push(Figure::plot(
+        &tour.out,
+        &svg,
+        &lang::pick(
+            format!(
+                "RMSE against time as above, for the unbiased path tracing and bidirectional \
+                 path tracing, which fall as t^−1/2 all the way to zero, and SPPM: biased but \
+                 consistent, each pass shrinks its radii, so its bias falls with the passes too \
+                 and it has no fixed floor to draw; its bias² over {} seeds: {}. The grey dashed \
+                 line is the reference's own noise, {floor:.5}, below which no error measured \
+                 against it falls.",
+                e.seeds,
+                sppm_bias(&measured),
+            ),
+            format!(
+                "RMSE спрямо времето както по-горе, за неотместените path tracing и bidirectional \
+                 path tracing, които падат като t^−1/2 чак до нула, и SPPM: отместен, но \
+                 състоятелен, всеки проход намалява радиусите му, затова и отместването му пада с \
+                 проходите и няма постоянно дъно, което да се начертае; отместването² му от {} \
+                 рендерирания: {}. Сивата прекъсната линия е шумът на самия еталон, {floor:.5}, \
+                 под който не пада никоя грешка, измерена спрямо него.",
+                e.seeds,
+                sppm_bias(&measured),
             ),
         ),
     ));
@@ -371,13 +426,24 @@ fn render(tour: &Tour) -> Result<Section> {
         &svg,
         &lang::pick(
             format!(
-                "Bias² and variance per algorithm (log scale) at {} each, from {} runs with                  independent seeds: variance is their spread per pixel, bias² the squared error of                  their mean image against {}, less the part the spread and the reference's own                  noise (floor {floor:.5}) explain. An outline is a bias² that does not stand out                  of its noise, drawn up to its bound (b̂² + 2 SE); the table gives each bias² with                  its standard error.",
+                "Bias² and variance per algorithm (log scale) at {} each, from {} runs with \
+                 independent seeds: variance is their spread per pixel, bias² the squared error of \
+                 their mean image against {} off the lamp, less the part the spread and the \
+                 reference's own noise (floor {floor:.5}) explain. An outline is a bias² that does \
+                 not stand out of its noise, drawn up to its bound (b̂² + 2 SE); the table gives \
+                 each bias² with its standard error",
                 seconds_text(e.budget / e.seed_share),
                 e.seeds,
                 reference.name
             ),
             format!(
-                "Отместване² и дисперсия за всеки алгоритъм (логаритмична скала) при {} на                  рендериране, от {} рендерирания с независими seed-ове: дисперсията е разсейването                  им във всеки пиксел, отместването² – квадратът на грешката на средната им картинка                  спрямо {} без частта, която разсейването и шумът на самия еталон (дъно {floor:.5})                  обясняват. Контурът е отместване², което не се откроява от шума си, начертано до                  горната му граница (b̂² + 2 SE); таблицата дава всяко отместване² със                  стандартната му грешка.",
+                "Отместване² и дисперсия за всеки алгоритъм (логаритмична скала) при {} на \
+                 рендериране, от {} рендерирания с независими случайни числа: дисперсията е \
+                 разсейването им във всеки пиксел, отместването² – квадратът на грешката на \
+                 средната им картинка спрямо {} без лампата, без частта, която разсейването и \
+                 шумът на самия еталон (дъно {floor:.5}) обясняват. Контурът е отместване², което \
+                 не се откроява от шума си, начертано до горната му граница (b̂² + 2 SE); \
+                 таблицата дава всяко отместване² със стандартната му грешка",
                 seconds_text(e.budget / e.seed_share),
                 e.seeds,
                 reference.name
@@ -581,7 +647,7 @@ fn render(tour: &Tour) -> Result<Section> {
             "Равно време в Cornell box: грешката спрямо картината на Mitsuba 3, разделена на \
              отместване² и дисперсия; грешките са по пикселите без лампата и ръба ѝ (там грешката \
              е шумът от изглаждането на ръб, 18,6 пъти по-ярък от бялото, еднакъв за всички); \
-             отместване² ± стандартната му грешка (jackknife по seed-овете) или \"< граница\", \
+             отместване² ± стандартната му грешка (jackknife по рендериранията) или \"< граница\", \
              когато не се откроява от шума; целевата RMSE, {target:.4}, е по средата (в \
              логаритмичен мащаб) между най-добрата и най-лошата грешка при равно време."
         ),
@@ -713,7 +779,7 @@ fn bias_pictures(
                     m.split.bias2_text()
                 ),
                 format!(
-                    "{}: средното от {seeds} рендерирания с независими seed-ове минус {}, в \
+                    "{}: средното от {seeds} рендерирания с независими случайни числа минус {}, в \
                      яркост (червено: твърде светло, синьо: твърде тъмно): отместването му, с \
                      шума на средно от {seeds} (стандартно отклонение {noise:.3} на пиксел и \
                      канал); отместване² {}.",
@@ -806,28 +872,52 @@ fn equal_time(
     (run, curve)
 }
 
-/// Chapter 9's error against time in the current language: each
-/// algorithm's curve, and for each build-once method whose bias² stands out
-/// of its noise a dashed line at √bias² in its colour, the floor no amount
-/// of rendering removes.
-fn rmse_time_chart(measured: &[Measured]) -> Chart {
+/// Chapter 9's error against time in the current language, for the
+/// algorithms `shown` (the others are left out: six curves and three floors
+/// on one chart were too many to tell apart): each one's curve, and for each
+/// build-once method whose bias² stands out of its noise a dashed line at
+/// √bias² in its colour, the floor no amount of rendering removes. Every
+/// chart spans the times of all the algorithms, a quarter more on each side
+/// (a point on the frame is cut in half), so the two read on one time axis.
+///
+/// `noise_floor`, when given, is drawn too: the reference's own noise, the
+/// floor of the unbiased curves as measured here.
+fn rmse_time_chart(
+    measured: &[Measured],
+    shown: &[Algorithm],
+    title: &str,
+    noise_floor: Option<f64>,
+) -> Chart {
     let times = measured.iter().flat_map(|m| m.curve.iter().map(|p| p.0));
     let (t0, t1) = times.fold((f64::MAX, 0.0f64), |(a, b), t| (a.min(t), b.max(t)));
-    let mut series: Vec<Series> = measured
+    let (t0, t1) = (t0 / 1.25, t1 * 1.25);
+    let shown: Vec<&Measured> = measured
+        .iter()
+        .filter(|m| shown.contains(&m.algorithm))
+        .collect();
+    let mut series: Vec<Series> = shown
         .iter()
         .map(|m| Series {
             label: m.algorithm.label().into(),
             points: m.curve.clone(),
         })
         .collect();
-    for m in measured.iter().filter(|m| m.build_once() && m.split.resolved()) {
+    for m in shown.iter().filter(|m| m.build_once() && m.split.resolved()) {
         series.push(Series {
-            label: format!("{}: √{}", m.algorithm.label(), lang::pick("bias²", "отм.²")),
+            // "floor", not "√bias²": the longest label sets the legend's
+            // columns, and "irradiance caching: √отместване²" took one a row.
+            label: format!("{}: {}", m.algorithm.label(), lang::pick("floor", "дъно")),
             points: vec![(t0, m.split.bias2.sqrt()), (t1, m.split.bias2.sqrt())],
         });
     }
+    if let Some(floor) = noise_floor {
+        series.push(Series {
+            label: lang::pick("reference noise floor", "дъното на шума на еталона").into(),
+            points: vec![(t0, floor), (t1, floor)],
+        });
+    }
     Chart {
-        title: lang::pick("Cornell box: error against time", "Cornell box: грешка спрямо времето").into(),
+        title: title.into(),
         x_label: lang::pick("seconds (build included)", "секунди (със строежа)").into(),
         y_label: "RMSE".into(),
         x_scale: Scale::Log,
@@ -836,16 +926,26 @@ fn rmse_time_chart(measured: &[Measured]) -> Chart {
     }
 }
 
+/// The algorithms of the first error-against-time chart, the build-once
+/// methods (with their floors, seven legend entries would shrink the chart);
+/// the second has the unbiased ones and SPPM.
+const BUILD_ONCE: [Algorithm; 3] = [Algorithm::Photon, Algorithm::Vpl, Algorithm::IrradianceCache];
+const FALLING: [Algorithm; 3] = [Algorithm::Path, Algorithm::Bdpt, Algorithm::Sppm];
+
 /// Bias² beside variance per algorithm, on a log axis, in the current
 /// language; a bias² that does not stand out of its noise is an outline up
 /// to its bound.
-fn bias_variance_bars(measured: &[Measured], seeds: u64) -> Bars {
+fn bias_variance_bars(measured: &[Measured], seeds: u64, seconds: f64) -> Bars {
+    let each = seconds_text(seconds);
     Bars {
         title: lang::pick(
-            format!("Cornell box: bias² and variance ({seeds} seeds)"),
-            format!("Cornell box: отместване² и дисперсия ({seeds} seed-а)"),
+            format!("Cornell box: bias² and variance, {seeds} runs of {each}"),
+            format!(
+                "Cornell box: отместване² и дисперсия, {seeds} рендерирания по {}",
+                each.replace('.', ",")
+            ),
         ),
-        y_label: lang::pick("mean squared error", "средна квадратична грешка").into(),
+        y_label: "MSE".into(),
         parts: vec![
             lang::pick("bias²", "отместване²").into(),
             lang::pick("variance", "дисперсия").into(),
@@ -870,6 +970,14 @@ fn bias_variance_bars(measured: &[Measured], seeds: u64) -> Bars {
             })
             .collect(),
     }
+}
+
+/// SPPM's bias² as the table gives it.
+fn sppm_bias(measured: &[Measured]) -> String {
+    measured
+        .iter()
+        .find(|m| m.algorithm == Algorithm::Sppm)
+        .map_or_else(String::new, |m| m.split.bias2_text())
 }
 
 /// Which build-once methods flattened within `budget`, in the current
@@ -904,37 +1012,6 @@ fn flat_text(flat: &[&str], budget: f64) -> String {
             ),
         )
     }
-}
-
-/// The pixels an error counts: those off the lamp, and not next to it — a
-/// pixel is left out if its reference luminance or that of one of its eight
-/// neighbours is 1 or more. A pixel at the lamp's edge sees the lamp (18.6
-/// times brighter than white) through part of its area, and a few samples
-/// per pixel either hit it or miss it: its error is that edge's
-/// anti-aliasing noise, the same for every algorithm and larger than all
-/// else.
-pub fn off_the_light(reference: &Image) -> Vec<bool> {
-    let (w, h) = (reference.width as i64, reference.height as i64);
-    let bright = |x: i64, y: i64| {
-        (0..w).contains(&x) && (0..h).contains(&y) && luminance(reference.get(x as u32, y as u32)) >= 1.0
-    };
-    (0..h)
-        .flat_map(|y| (0..w).map(move |x| (x, y)))
-        .map(|(x, y)| !(-1..=1).any(|dy| (-1..=1).any(|dx| bright(x + dx, y + dy))))
-        .collect()
-}
-
-/// The RMSE over the `counted` pixels and all channels.
-fn masked_rmse(a: &Image, b: &Image, counted: &[bool]) -> f64 {
-    let (mut sum, mut n) = (0.0f64, 0usize);
-    for ((x, y), _) in a.pixels.iter().zip(&b.pixels).zip(counted).filter(|(_, c)| **c) {
-        for ch in 0..3 {
-            let d = (x[ch] - y[ch]) as f64;
-            sum += d * d;
-        }
-        n += 3;
-    }
-    (sum / n.max(1) as f64).sqrt()
 }
 
 /// The first time a curve reaches `target`, interpolated log–log between

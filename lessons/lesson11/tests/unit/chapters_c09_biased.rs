@@ -1,6 +1,7 @@
 //! Unit tests of `chapters/c09_biased.rs`.
 
 use lesson11::chapters::c09_biased::*;
+use lesson11::equal_time::off_the_light;
 use lesson11::tour::Quality;
 use raytracer::film::Image;
 use raytracer::math::Color;
@@ -18,7 +19,7 @@ fn the_slides_state_the_default_seed_count() {
         (
             "bg",
             format!(
-                "Средното от {seeds} рендерирания с независими seed-ове (при качеството по подразбиране)"
+                "Средното от {seeds} рендерирания с независими случайни числа (при качеството по подразбиране)"
             ),
         ),
     ] {
@@ -56,4 +57,34 @@ fn a_curve_flattens_when_doubling_the_work_no_longer_helps() {
     assert!(flattens(&biased));
     assert!(!flattens(&biased[..2]), "not yet at its floor");
     assert!(!flattens(&[]));
+}
+
+/// Chapters 8 and 9 give every algorithm the same time, and the slides of
+/// both say which (s83, s91, s100): the slides' 0.4 s is the code's.
+#[test]
+fn the_slides_state_the_equal_time_both_chapters_use() {
+    let seconds = lesson11::equal_time::QUICK_SECONDS;
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../../slides");
+    for (lang, stated) in [
+        ("en", format!("{seconds} s")),
+        ("bg", format!("{seconds} s").replace('.', ",")),
+    ] {
+        for deck in ["08-compare", "09-biased"] {
+            let text = std::fs::read_to_string(format!("{root}/{lang}/{deck}.md")).unwrap();
+            assert!(text.contains(&stated), "{lang}/{deck}: `{stated}` missing");
+            for other in ["0.55 s", "0,55 s"] {
+                assert!(!text.contains(other), "{lang}/{deck}: a stale `{other}`");
+            }
+        }
+    }
+}
+
+/// The error off the lamp ignores the pixels left out, whatever they hold.
+#[test]
+fn the_error_off_the_lamp_ignores_the_pixels_left_out() {
+    use lesson11::equal_time::masked_rmse;
+    let a = Image::from_fn(2, 1, |x, _| Color::splat(if x == 0 { 100.0 } else { 0.5 }));
+    let b = Image::from_fn(2, 1, |_, _| Color::splat(0.25));
+    assert!((masked_rmse(&a, &b, &[false, true]) - 0.25).abs() < 1e-9);
+    assert!(masked_rmse(&a, &b, &[true, true]) > 50.0);
 }
