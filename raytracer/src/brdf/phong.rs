@@ -71,7 +71,7 @@ impl Phong {
     /// derives it).
     /// Directions that fall below the horizon are rejected (`None`); the pdf
     /// stays that of the whole lobe, so accepted directions keep their
-    /// density and the estimator `f cos θ_i / pdf` stays unbiased (a rejected
+    /// density and a Monte Carlo estimate with them stays unbiased (a rejected
     /// sample contributes zero, exactly where `f_r = 0`).
     #[inline]
     pub fn sample(&self, wo: Vec3A, u: Vec2) -> Option<BrdfSample> {

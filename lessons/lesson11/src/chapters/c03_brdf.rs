@@ -397,7 +397,7 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
         });
     };
     row(
-        &|_| "Lambert ρ/π".into(),
+        &|_| "Lambert".into(),
         directional_albedo(&lambert(), Vec3A::Z, samples),
         1.0,
     );
