@@ -21,8 +21,9 @@
 //! texture `albedo` at the texture coordinates `uv`: a white texture
 //! (albedo 1) reflects exactly all the light, `∫_Ω f_r cos θ_i dω_i = 1`
 //! over the hemisphere, and a texel of colour ρ reflects the fraction ρ of
-//! it, channel by channel. Derive the constant from that integral. Directions are in the local shading frame: the
-//! normal is `+z`, so `cos θ` of a direction is its `z`; `wo` points towards
+//! it, channel by channel. Derive the constant from that integral.
+//! Directions are in the local shading frame: the normal is `+z`, so
+//! `cos θ` of a direction is its `z`; `wo` points towards
 //! the viewer, `wi` towards where the light comes from (both away from the
 //! surface). Light from below, or leaving below (`wi.z ≤ 0` or `wo.z ≤ 0`),
 //! is not reflected: return black.
@@ -56,8 +57,9 @@
 //! `albedo` в текстурните координати `uv`: бяла текстура (албедо 1) отразява
 //! точно цялата светлина, `∫_Ω f_r cos θ_i dω_i = 1` по полусферата, а тексел
 //! с цвят ρ отразява частта ρ от нея, за всеки канал поотделно. Изведете
-//! константата от този интеграл. Посоките са в локалната система на засенчването: нормалата е
-//! `+z`, така че `cos θ` на една посока е нейното `z`; `wo` сочи към
+//! константата от този интеграл. Посоките са в локалната система на
+//! засенчването: нормалата е `+z`, така че `cos θ` на една посока е нейното
+//! `z`; `wo` сочи към
 //! наблюдателя, `wi` — натам, откъдето идва светлината (и двете навън от
 //! повърхността). Светлина, която идва отдолу или излиза отдолу (`wi.z ≤ 0` или
 //! `wo.z ≤ 0`), не се отразява: върнете черно.
@@ -73,7 +75,7 @@ use raytracer::math::{Color, Vec2, Vec3A};
 ///
 /// `f_r(ω_i, ω_o)` на ламбертова повърхност с текстура.
 pub fn lambert_eval(albedo: &Texture, uv: Vec2, wo: Vec3A, wi: Vec3A) -> Color {
-    // TODO: the texture's colour at uv times the constant you derived.
-    // TODO (бг): цветът на текстурата в uv, умножен по изведената от вас константа.
+    // TODO: f_r at uv, from the albedo the texture gives there and energy conservation.
+    // TODO (бг): f_r в uv, от албедото, което текстурата дава там, и запазването на енергията.
     todo!()
 }
