@@ -5,8 +5,8 @@
 //! The lecture's glossy BRDF is `f_r = S(n) · max(0, cos∠(reflect(ω_i),
 //! ω_o))^n`, with `S(n)` "a normalizing constant meant to conserve energy".
 //! Directions point away from the surface (`ω_o` towards the viewer, `ω_i`
-//! towards the light), and `reflect(ω) = 2(ω·n)n − ω` mirrors a direction
-//! about the normal. A reflection keeps angles and is its own inverse, so
+//! towards the light), and `reflect(ω)` mirrors a direction about the normal
+//! (slide "Directions at a point"; exercise 6 derives its formula). A reflection keeps angles and is its own inverse, so
 //! the slide's angle between `reflect(ω_i)` and `ω_o` is the angle α between
 //! `ω_i` and `reflect(ω_o)`. We add the specular albedo ρ_s as a factor.
 //!
@@ -38,8 +38,8 @@
 //! Glossy BRDF от лекцията е `f_r = S(n) · max(0, cos∠(reflect(ω_i), ω_o))^n`,
 //! където `S(n)` е „нормираща константа, целяща запазване на енергията“.
 //! Посоките сочат навън от повърхността (`ω_o` към наблюдателя, `ω_i` към
-//! светлината), а `reflect(ω) = 2(ω·n)n − ω` отразява посоката огледално спрямо
-//! нормалата. Отражението запазва ъглите и е обратно само на себе си, така че
+//! светлината), а `reflect(ω)` отразява посоката огледално спрямо нормалата
+//! (слайдът „Посоките в една точка“; формулата ѝ извежда задача 6). Отражението запазва ъглите и е обратно само на себе си, така че
 //! ъгълът от слайда между `reflect(ω_i)` и `ω_o` е ъгълът α между `ω_i` и
 //! `reflect(ω_o)`. Добавяме и огледалното албедо ρ_s като множител.
 //!

@@ -18,8 +18,10 @@
 //! either form of the bound says the same.
 //!
 //! Task: estimate `ρ(ω_o)` of `brdf` for `wo` (local frame, normal `+z`) by
-//! the Monte Carlo method with N = `samples` random directions. Draw them as
-//! you like:
+//! the Monte Carlo method with N = `samples` random directions. The slide
+//! "Solving with Monte Carlo" estimates an integral of any `g` over
+//! directions; which `g` and which density are yours to write down, for
+//! the sampling you choose. Draw the directions as you like:
 //! - with the BRDF's own sampling, `Brdf::sample` (it returns a
 //!   `BrdfSample` with `wi`, `f` and `pdf_w`, or `None` when the direction
 //!   it drew carries nothing, e.g. below the horizon: such a draw
@@ -59,8 +61,10 @@
 //! така че двата записа на ограничението казват едно и също.
 //!
 //! Задача: оценете `ρ(ω_o)` на `brdf` за `wo` (локална система, нормала `+z`)
-//! по метода Monte Carlo с N = `samples` случайни посоки. Избирайте ги както
-//! искате:
+//! по метода Monte Carlo с N = `samples` случайни посоки. Слайдът „Решаване
+//! чрез Monte Carlo метод“ оценява интеграл на произволна `g` по посоките;
+//! коя е `g` и с каква плътност, изведете сами за избора, който правите.
+//! Избирайте посоките както искате:
 //! - с избора по самата BRDF, `Brdf::sample` (връща `BrdfSample` с `wi`, `f` и
 //!   `pdf_w` или `None`, когато избраната посока не носи нищо, например под
 //!   хоризонта: такъв избор допринася 0 и пак е един от N-те);

@@ -22,9 +22,11 @@
 //!
 //! Task: return the radiance arriving at the origin of `ray` along it — the
 //! `L_o` of its first hit, towards the origin — estimating the integral at
-//! every hit with N = `branching` random directions, as on the slide
-//! "Solving with Monte Carlo", recursively. A ray that hits nothing brings
-//! the environment's radiance.
+//! every hit with N = `branching` random directions, recursively. The
+//! slide "Solving with Monte Carlo" gives the estimator of an integral of
+//! any `g` over directions: derive yours for the rendering equation — its
+//! `g`, the density of your directions, and what stands for `L_i`. A ray
+//! that hits nothing brings the environment's radiance.
 //!
 //! Depth: `max_depth` = D is the largest number of segments (rays) of a
 //! path from the camera: D = 1 shows only the emitters seen directly, D = 2
@@ -69,9 +71,11 @@
 //!
 //! Задача: върнете radiance, която пристига в началото на `ray` по него — `L_o`
 //! на първото му пресичане към началото — като оценявате интеграла във всяко
-//! пресичане с N = `branching` случайни посоки, както на слайда „Решаване чрез
-//! Monte Carlo метод“, рекурсивно. Лъч, който не удря нищо, носи radiance на
-//! околната среда.
+//! пресичане с N = `branching` случайни посоки, рекурсивно. Слайдът „Решаване
+//! чрез Monte Carlo метод“ дава оценката на интеграл на произволна `g` по
+//! посоките: изведете своята за транспортното уравнение — нейното `g`,
+//! плътността на посоките ви и какво стои вместо `L_i`. Лъч, който не удря
+//! нищо, носи radiance на околната среда.
 //!
 //! Дълбочина: `max_depth` = D е най-големият брой отсечки (лъчи) на път от
 //! камерата: при D = 1 се виждат само излъчвателите, видени направо, при D = 2

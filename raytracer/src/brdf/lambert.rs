@@ -25,8 +25,9 @@ impl Lambert {
         self.albedo.eval(uv) * INV_PI
     }
 
-    /// Cosine-weighted sampling: pdf `cos θ_i/π`, which cancels the cosine
-    /// and the `1/π`, so the weight `f cos θ_i / pdf` is ρ exactly.
+    /// Cosine-weighted sampling (exercise 7): its density cancels both the
+    /// cosine and the constant of `f_r`, so every draw's Monte Carlo weight is
+    /// ρ exactly.
     #[inline]
     pub fn sample(&self, wo: Vec3A, uv: Vec2, u: Vec2) -> Option<BrdfSample> {
         let wi = cosine_hemisphere(u);

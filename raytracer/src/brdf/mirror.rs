@@ -15,9 +15,9 @@ pub struct Mirror {
 }
 
 impl Mirror {
-    /// The mirror direction of `wo` (upper hemisphere, normal `+z`) with
-    /// `f = R/|cos θ_i|` and pdf 1 (the only lobe, always chosen), so the
-    /// weight `f |cos θ_i| / pdf` is `R`.
+    /// The mirror direction of `wo` (upper hemisphere, normal `+z`), with the
+    /// value and the pdf of the delta convention of [`super`] (exercise 6
+    /// derives them): the draw's Monte Carlo weight is `R` at every angle.
     #[inline]
     pub fn sample(&self, wo: Vec3A) -> Option<BrdfSample> {
         let wi = Vec3A::new(-wo.x, -wo.y, wo.z);

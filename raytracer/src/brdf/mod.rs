@@ -33,9 +33,9 @@
 //!
 //! Delta lobes (mirror, glass) follow pbrt's convention: a delta has no
 //! density over directions, so the sample's `pdf_w` is the probability of
-//! choosing the lobe, and its `f` is the number that makes the usual
-//! estimator `f · |cos θ_i| / pdf_w` the delta's weight in the reflected
-//! radiance; `eval` and `pdf` of a delta lobe are zero for any given pair of
+//! choosing the lobe, and its `f` is the number that makes the usual Monte
+//! Carlo estimate with this one draw give the delta's share of the reflected
+//! radiance (exercise 6 derives it); `eval` and `pdf` of a delta lobe are zero for any given pair of
 //! directions (the chance of hitting the delta direction is zero).
 
 pub mod fresnel;

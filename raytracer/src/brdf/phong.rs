@@ -5,11 +5,13 @@
 //! original Phong model is neither).
 //!
 //! `f_r(ω_i, ω_o) = ρ_s S(n) cos^n α`, with α the angle between `ω_i`
-//! and the mirror direction `ω_r = (−ω_o.x, −ω_o.y, ω_o.z)` of `ω_o`, and
-//! `f_r = 0` below the surface.
+//! and the mirror direction `ω_r` of `ω_o` about the normal, and `f_r = 0`
+//! beyond 90° from `ω_r` and below the surface.
 //!
-//! **Reciprocity.** `cos α = ω_r·ω_i = −ω_o.x ω_i.x − ω_o.y ω_i.y + ω_o.z ω_i.z`
-//! is symmetric in `ω_i` and `ω_o`, hence so is `f_r`.
+//! **Reciprocity.** A reflection keeps angles and is its own inverse, so the
+//! angle between `ω_i` and the mirror direction of `ω_o` is the angle between
+//! `ω_o` and the mirror direction of `ω_i`: α, hence `f_r`, is symmetric in
+//! `ω_i` and `ω_o`.
 //!
 //! **The constant.** `S(n)` is chosen so that the directional albedo
 //! `∫ f_r cos θ_i dω_i` is exactly `ρ_s` at normal incidence, where
@@ -35,7 +37,7 @@ pub struct Phong {
     pub exponent: f32,
 }
 
-/// The mirror direction of `w` about `+z`.
+/// The mirror direction of `w` about the normal `+z` of the local frame.
 #[inline]
 pub fn mirror_z(w: Vec3A) -> Vec3A {
     Vec3A::new(-w.x, -w.y, w.z)
@@ -69,7 +71,7 @@ impl Phong {
     /// derives it).
     /// Directions that fall below the horizon are rejected (`None`); the pdf
     /// stays that of the whole lobe, so accepted directions keep their
-    /// density and the estimator `f cos θ_i / pdf` stays unbiased (a rejected
+    /// density and a Monte Carlo estimate with them stays unbiased (a rejected
     /// sample contributes zero, exactly where `f_r = 0`).
     #[inline]
     pub fn sample(&self, wo: Vec3A, u: Vec2) -> Option<BrdfSample> {

@@ -2,9 +2,10 @@
 //!
 //! Lecture topic: "Решаване чрез Monte Carlo метод" — at a hit point `x`,
 //! shoot N random directions `ω_k`, find what each one sees (another instance
-//! of the same equation, solved the same way) and average:
-//!
-//! `L_o(x, ω_o) ≈ L_e(x, ω_o) + (1/N) Σ_k f_r(x, ω_k, ω_o) · L_i(x, ω_k) · |cos θ_k| / p(ω_k)`
+//! of the same equation, solved the same way) and average: the slide's
+//! general estimator `(1/N) Σ_k g(ω_k)/p(ω_k)` applied to the integral of the
+//! rendering equation (exercise 10 derives the line; `exercises/INSTRUCTOR.md`
+//! has it).
 //!
 //! The recursion ends when a ray escapes, when the depth limit is reached,
 //! optionally when the product of the BRDF weights along the recursion falls

@@ -343,14 +343,14 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
             format!(
                 "The same lobes at their true heights, f_r on a log axis (values below \
                  {LOBE_FLOOR} left out): a narrower normalized lobe is taller, so that its albedo \
-                 stays at most 1 — Lambert 1/π ≈ 0.318 everywhere, Phong n = 100 about 16 at the \
-                 mirror direction."
+                 stays at most 1 — Lambert flat, the same in every direction, Phong n = 100 about \
+                 16 at the mirror direction."
             ),
             format!(
                 "Същите лобове в истинските им височини, f_r по логаритмична ос (стойностите под \
                  {LOBE_FLOOR} са изпуснати): по-тесният нормиран лоб е по-висок, за да остане \
-                 албедото му най-много 1 – Lambert 1/π ≈ 0.318 навсякъде, Phong с n = 100 около \
-                 16 в огледалната посока."
+                 албедото му най-много 1 – Lambert е плосък, еднакъв във всяка посока, Phong с \
+                 n = 100 около 16 в огледалната посока."
             ),
         ),
     ));
@@ -397,7 +397,7 @@ fn plots_and_tables(c: &mut ChapterOutput, tour: &Tour) -> Result<()> {
         });
     };
     row(
-        &|_| "Lambert ρ/π".into(),
+        &|_| "Lambert".into(),
         directional_albedo(&lambert(), Vec3A::Z, samples),
         1.0,
     );
