@@ -1,7 +1,8 @@
 //! Exercise 12 — next event estimation: a path tracer that aims at the lights.
 //!
 //! Slides: "Directions at a point" ("Посоките в една точка"), "Next event
-//! estimation" ("Next event estimation"), "Finding the light by chance"
+//! estimation" ("Next event estimation"), "From area to solid angle" ("От
+//! площ към пространствен ъгъл"), "Finding the light by chance"
 //! ("Светлината, намерена случайно"), "The rendering equation: the
 //! integral" ("Транспортното уравнение: интегралът"), "Path tracing in
 //! outline" ("Принципна схема на path tracing").
@@ -65,7 +66,8 @@
 //!
 //! Задача 12 — next event estimation: path tracing, който се цели в лампите.
 //!
-//! Слайдове: „Посоките в една точка“, „Next event estimation“, „Светлината,
+//! Слайдове: „Посоките в една точка“, „Next event estimation“, „От площ към
+//! пространствен ъгъл“, „Светлината,
 //! намерена случайно“, „Транспортното уравнение: интегралът“, „Принципна схема
 //! на path tracing“.
 //!

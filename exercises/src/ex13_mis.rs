@@ -11,8 +11,8 @@
 //! noisy where a large light meets a shiny surface, BRDF sampling alone where
 //! a small light meets a rough one (Veach's plates, the slide). Here both
 //! count, each weighted so that the two weights of one direction sum to
-//! one: the power heuristic with exponent 2, as the slide writes it and the
-//! renderer uses (the balance heuristic, exponent 1, is a valid weight too,
+//! one: the power heuristic with exponent 2, as the slide writes it in
+//! general and the renderer uses (the balance heuristic, exponent 1, is a valid weight too,
 //! but it is not the one asked for, and the grader tells them apart).
 //!
 //! Task: `path_radiance_mis(scene, ray, max_depth, rr_depth, sampler)`:
@@ -24,9 +24,9 @@
 //!
 //! Each weight compares the two densities with which the two strategies
 //! would have produced the SAME direction ω_i at x, both per unit solid
-//! angle at x, and each the density of the whole strategy: the light
-//! strategy first chooses a light (with the probability `P(light)`), then a
-//! direction towards it. Compute the weights yourself (a small helper
+//! angle at x, each the density of everything its strategy chose to make
+//! that direction. Which two densities these are is yours to work out from
+//! the slide's general form. Compute the weights yourself (a small helper
 //! function of your own is welcome; not `raytracer::sampling`'s heuristics).
 //! Where only one strategy could have made the sample it takes the whole
 //! weight: the camera ray; a ray that left a delta lobe (mirror, glass: no
@@ -77,7 +77,7 @@
 //! среща грапава (пластините на Veach, слайдът). Тук се броят и двете, всяка с
 //! тегло, избрано така, че двете тегла на една посока да имат сбор единица:
 //! степенната евристика (power heuristic) с показател 2, както я записва
-//! слайдът и както я ползва рендерерът (балансовата евристика, с показател 1,
+//! слайдът в общ вид и както я ползва рендерерът (балансовата евристика, с показател 1,
 //! също е валидно тегло, но не тя се иска и проверката ги различава).
 //!
 //! Задача: `path_radiance_mis(scene, ray, max_depth, rr_depth, sampler)`:
@@ -89,9 +89,10 @@
 //!   степенната евристика.
 //!
 //! Всяко тегло сравнява двете плътности, с които двете стратегии биха дали
-//! СЪЩАТА посока ω_i в x, и двете на единица пространствен ъгъл в x, и всяка —
-//! плътността на цялата стратегия: стратегията с лампите първо избира лампа (с
-//! вероятността `P(лампа)`), после посока към нея. Пресметнете теглата сами
+//! СЪЩАТА посока ω_i в x, и двете на единица пространствен ъгъл в x, всяка —
+//! плътността на всичко, което стратегията ѝ е избрала, за да стигне до тази
+//! посока. Кои са тези две плътности, изведете сами от общия вид на слайда.
+//! Пресметнете теглата сами
 //! (малка ваша помощна функция е добре дошла; не евристиките от
 //! `raytracer::sampling`). Там, където само едната стратегия би могла да
 //! направи пробата, тя взима цялото тегло: лъчът от камерата; лъч, излязъл от

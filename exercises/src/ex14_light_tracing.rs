@@ -1,13 +1,15 @@
 //! Exercise 14 — a light tracer: light paths joined to the camera.
 //!
 //! Slides: "Light tracing" ("Light tracing"), "The connection to the camera"
-//! ("Свързването с камерата").
+//! ("Свързването с камерата"), "What a path brings" ("Какво носи един път").
 //!
 //! Light tracing is path tracing run backwards: a path starts on a light,
 //! bounces through the scene by BRDF sampling, and every vertex it makes is
-//! joined to the camera's lens. The contribution of such a connection is the
-//! slide's `C = β f_r G W_e` (divided by the density of the lens point): it
-//! lands on the pixel where the camera sees the vertex, as a *splat*. The
+//! joined to the camera's lens. Such a connection makes a whole path from
+//! the lens to the light: one sample of the integral over paths (slides "The
+//! integral over paths", "What a path brings"), whose Monte Carlo estimate
+//! `C` you derive (slide "The connection to the camera"). It lands on the
+//! pixel where the camera sees the vertex, as a *splat*. The
 //! camera's importance `W_e` plays the role `L_e` plays for lights. This is
 //! how the caustic of the `caustic` scene is found — a path tracer would
 //! have to hit a point light after a refraction.
@@ -24,16 +26,18 @@
 //!    normal `n`, the emitted `le` along the ray, the density `pdf_a` of the
 //!    point per unit area and `pdf_w` of the direction per unit solid
 //!    angle). Skip the environment (`Light::is_environment`): it has no light
-//!    paths here. The path's throughput β as it leaves the light is the
-//!    light's `L_e` weighted as a Monte Carlo estimate of everything chosen
-//!    so far (the slide's "divided by the densities of the choices"); `L_e`
-//!    is radiance, so mind the cosine at the light. A point light
+//!    paths here. The path's throughput β as it leaves the light is its
+//!    Monte Carlo weight so far: what it carries of the light's emission,
+//!    for everything chosen so far. `L_e` is radiance: per unit projected
+//!    area and per unit solid angle. A point light
 //!    (`is_delta_position`) has no surface: its `n` is zero, its cosine
 //!    counts as 1, and its `le` is its intensity.
 //! 2. **The light seen directly**: join the light's point `y_0` to the lens
-//!    too, with `L_e` towards the lens (`Scene::emitted_by` with the light's
-//!    `LightChoice::index`) in place of `β f_r`: a pinhole cannot be hit by a
-//!    light path, so this is the only way the camera sees an area light.
+//!    too: a path of one segment, whose value holds the light's `L_e`
+//!    towards the lens (`Scene::emitted_by` with the light's
+//!    `LightChoice::index`) and for which only the light and the point on it
+//!    were chosen. A pinhole cannot be hit by a light path, so this is the
+//!    only way the camera sees an area light.
 //! 3. **At every surface the path hits** (`Scene::intersect`), unless its BRDF
 //!    is a delta (`Brdf::is_delta`: mirror, glass — joining those to the lens
 //!    has zero value), join the vertex to the lens:
@@ -76,13 +80,15 @@
 //!
 //! Задача 14 — light tracing: пътища от светлината, свързани с камерата.
 //!
-//! Слайдове: „Light tracing“, „Свързването с камерата“.
+//! Слайдове: „Light tracing“, „Свързването с камерата“, „Какво носи един път“.
 //!
 //! Light tracing е path tracing, пуснат наобратно: пътят тръгва от лампа,
 //! отразява се в сцената с избор по BRDF и всеки негов връх се свързва с
-//! лещата на камерата. Приносът на такова свързване е `C = β f_r G W_e` от
-//! слайда (разделено на плътността на точката от лещата): той пада в
-//! пиксела, в който камерата вижда върха, като *splat*. Важността
+//! лещата на камерата. Такова свързване прави цял път от лещата до лампата:
+//! една проба от интеграла по пътищата (слайдове „Интегралът по пътищата“,
+//! „Какво носи един път“), чиято Monte Carlo оценка `C` извеждате вие
+//! (слайд „Свързването с камерата“). Тя пада в пиксела, в който камерата
+//! вижда върха, като *splat*. Важността
 //! (importance) на камерата `W_e` играе ролята, която `L_e` играе за
 //! лампите. Така се намира каустиката в сцената `caustic` — path tracer би
 //! трябвало да уцели точкова светлина след пречупване.
@@ -100,15 +106,16 @@
 //!    ѝ `n`, излъченото `le` по лъча, плътността `pdf_a` на точката на
 //!    единица площ и `pdf_w` на посоката на единица пространствен ъгъл).
 //!    Пропуснете околната светлина (`Light::is_environment`): тук тя няма
-//!    светлинни пътища. Throughput β на пътя, когато напуска лампата, е `L_e`
-//!    на лампата, претеглено като Monte Carlo оценка на всичко избрано дотук
-//!    („разделено на плътностите на изборите“ от слайда); `L_e` е radiance,
-//!    така че внимавайте с косинуса при лампата. Точковата светлина
+//!    светлинни пътища. Throughput β на пътя, когато напуска лампата, е
+//!    Monte Carlo теглото му дотук: колкото носи от излъчването на лампата
+//!    при всичко, избрано дотук. `L_e` е radiance: на единица проектирана
+//!    площ и на единица пространствен ъгъл. Точковата светлина
 //!    (`is_delta_position`) няма повърхност: нейното `n` е нула, косинусът ѝ
 //!    се брои за 1, а `le` е интензитетът ѝ.
 //! 2. **Лампата, видяна направо**: свържете с лещата и точката `y_0` върху
-//!    лампата, с `L_e` към лещата (`Scene::emitted_by` с
-//!    `LightChoice::index` на лампата) на мястото на `β f_r`: pinhole камера
+//!    лампата: път от една отсечка, чиято стойност съдържа `L_e` на лампата
+//!    към лещата (`Scene::emitted_by` с `LightChoice::index` на лампата) и
+//!    за който са избрани само лампата и точката върху нея. Pinhole камера
 //!    не може да бъде уцелена от светлинен път, така че само така камерата
 //!    вижда лампа с площ.
 //! 3. **Във всяка повърхност, която пътят удари** (`Scene::intersect`), освен

@@ -2,21 +2,21 @@
 //! paths, and their light gathered at a camera hit.
 //!
 //! Slides: "Instant radiosity" ("Instant radiosity"),
-//! "Clamping: smooth, but wrong" ("Ограничаване (clamping): гладко, но грешно").
+//! "Clamping: smooth, but wrong" ("Ограничаване (clamping): гладко, но грешно"),
+//! "What a path brings" ("Какво носи един път").
 //!
 //! Instant radiosity traces N light paths once and turns their vertices into
-//! virtual point lights (VPLs); a point the camera sees is then lit by every
-//! VPL over one connection, with a shadow ray each:
-//!
-//! ```text
-//!   L(x, ω_o) = Σ_y f_r(x; ω_xy, ω_o) · G(x, y) · f_y(ω_yx) · Φ_y · V(x, y)
-//! ```
-//!
-//! with `G(x, y)` the geometry term of the connection (exercise 15: a cosine
-//! at each end, the squared distance). Averaged over the choice of the light
-//! paths this is the rendering equation's answer: no bias, unless G is
-//! clamped. Conventions as in exercises 10–14: directions point away from
-//! the surface point, D counts the segments of a path.
+//! virtual point lights (VPLs); a point x the camera sees is then lit by every
+//! VPL over one connection, with a shadow ray each. Joined at x, a light path
+//! becomes a whole path from the camera to the light, one sample of the
+//! integral over paths (slides "The integral over paths", "What a path
+//! brings"): the light a VPL sends to x is that path's Monte Carlo estimate,
+//! given the light path — you derive it as you derived the splat of exercise
+//! 14, with x in the place of the lens. Averaged over the choice of the light
+//! paths this is the rendering equation's answer: no bias, unless the
+//! geometry term G of the connection is clamped. Conventions as in exercises
+//! 10–14: directions point away from the surface point, D counts the
+//! segments of a path.
 //!
 //! # Step 1: `generate_vpls`
 //!
@@ -50,18 +50,16 @@
 //! # Step 2: `gather`
 //!
 //! The light all `vpls` send to the camera's hit `x` and that `x` reflects
-//! towards `x.wo` (the sum above, RGB):
-//! - at `x`: the BRDF (`Scene::brdf`, `Brdf::eval` in the local frame of
-//!   `x.frame`) from the direction towards the VPL to `x.wo`;
-//! - at the VPL: what it sends back towards `x` — for `Vpl::Light` the
-//!   light's emission in that direction times its `weight`; for
-//!   `Vpl::Surface` its BRDF from its incoming direction (`it.wo`) to the
-//!   direction towards `x`, times its `power`;
-//! - the geometry term with both cosines, each taken where it belongs, and
-//!   normals that may face either way;
-//! - visibility: one shadow ray (`Scene::unoccluded`, with
-//!   `Ray::spawn_to` from `x` to the VPL's point with both geometric
-//!   normals);
+//! towards `x.wo` (radiance, RGB), one connection per VPL, each with a shadow
+//! ray. What you need:
+//! - the BRDF at `x` (`Scene::brdf`, `Brdf::eval` in the local frame of
+//!   `x.frame`), and at a `Vpl::Surface` its own BRDF, whose incoming
+//!   direction is `it.wo`;
+//! - what a `Vpl::Light` emits towards `x`: `Scene::emitted_by`; its
+//!   `weight` and a surface VPL's `power` are what Step 1 stored;
+//! - the geometry term of the connection; the normals may face either way;
+//! - visibility: `Scene::unoccluded`, with `Ray::spawn_to` from `x` to the
+//!   VPL's point with both geometric normals;
 //! - `clamp`: `Some(g_max)` bounds the geometry term at `g_max` (the
 //!   lecture's clamping: no splotches where x nears a VPL, and too dark
 //!   where surfaces meet); `None`: not clamped at all. A VPL at `x` itself
@@ -80,17 +78,20 @@
 //! камерата.
 //!
 //! Слайдове: „Instant radiosity“, „Ограничаване (clamping): гладко, но
-//! грешно“.
+//! грешно“, „Какво носи един път“.
 //!
 //! Instant radiosity трасира N светлинни пътя веднъж и превръща върховете им
-//! във виртуални точкови светлини (VPL); точка, която камерата вижда, после
-//! се осветява от всяка VPL чрез едно свързване, всяко с лъч за сянка (сумата
-//! по-горе). `G(x, y)` е геометричният член на свързването (задача 15: по
-//! косинус във всеки край, разстоянието на квадрат). Осреднено по избора на
-//! светлинните пътища, това е решението на транспортното уравнение: без
-//! отместване, освен ако G не е ограничено. Уговорките са като в задачи
-//! 10–14: посоките сочат навън от точката на повърхността, D брои отсечките
-//! на пътя.
+//! във виртуални точкови светлини (VPL); точка x, която камерата вижда, после
+//! се осветява от всяка VPL чрез едно свързване, всяко с лъч за сянка.
+//! Свързан в x, светлинният път става цял път от камерата до лампата, една
+//! проба от интеграла по пътищата (слайдове „Интегралът по пътищата“, „Какво
+//! носи един път“): светлината, която една VPL изпраща към x, е Monte Carlo
+//! оценката на този път при дадения светлинен път — изведете я така, както
+//! изведохте splat-а в задача 14, с x на мястото на лещата. Осреднено по
+//! избора на светлинните пътища, това е решението на транспортното уравнение:
+//! без отместване, освен ако геометричният член G на свързването не е
+//! ограничен. Уговорките са като в задачи 10–14: посоките сочат навън от
+//! точката на повърхността, D брои отсечките на пътя.
 //!
 //! ## Стъпка 1: `generate_vpls`
 //!
@@ -125,17 +126,18 @@
 //! ## Стъпка 2: `gather`
 //!
 //! Светлината, която всички `vpls` изпращат към пресичането `x` на лъча от
-//! камерата и която `x` отразява към `x.wo` (сумата по-горе, RGB):
-//! - в `x`: BRDF (`Scene::brdf`, `Brdf::eval` в локалната система на
-//!   `x.frame`) от посоката към VPL към `x.wo`;
-//! - във VPL: това, което тя изпраща обратно към `x` — за `Vpl::Light`
-//!   излъчването на лампата в тази посока, умножено по нейното `weight`; за
-//!   `Vpl::Surface` нейната BRDF от входящата ѝ посока (`it.wo`) към посоката
-//!   към `x`, умножена по нейното `power`;
-//! - геометричният член с двата косинуса, всеки взет там, където му е
-//!   мястото, и нормали, които може да сочат на която и да е страна;
-//! - видимост: един лъч за сянка (`Scene::unoccluded`, с `Ray::spawn_to` от
-//!   `x` до точката на VPL с двете геометрични нормали);
+//! камерата и която `x` отразява към `x.wo` (radiance, RGB), по едно
+//! свързване на VPL, всяко с лъч за сянка. Какво ви трябва:
+//! - BRDF в `x` (`Scene::brdf`, `Brdf::eval` в локалната система на
+//!   `x.frame`), а във `Vpl::Surface` — нейната собствена BRDF, чиято
+//!   входяща посока е `it.wo`;
+//! - какво излъчва `Vpl::Light` към `x`: `Scene::emitted_by`; нейното
+//!   `weight` и `power` на VPL върху повърхност са това, което е записала
+//!   Стъпка 1;
+//! - геометричният член на свързването; нормалите може да сочат на която и
+//!   да е страна;
+//! - видимост: `Scene::unoccluded`, с `Ray::spawn_to` от `x` до точката на
+//!   VPL с двете геометрични нормали;
 //! - `clamp`: `Some(g_max)` ограничава геометричния член до `g_max`
 //!   (ограничаването (clamping) от лекцията: без петна там, където x е близо
 //!   до VPL, и твърде тъмно там, където повърхностите се срещат); `None`:

@@ -719,7 +719,7 @@ fn ex14_light_tracing() {
             "cosine at the surface",
         ),
         ("signed cosines", ex14::signed_cos, "signed cosine"),
-        ("1/d", ex14::inv_distance, "1/d², once"),
+        ("1/d", ex14::inv_distance, "too slowly with distance"),
         (
             "no 1/d²",
             ex14::no_inv_distance2,
@@ -973,7 +973,7 @@ fn ex18_instant_radiosity() {
     fails!(
         "flux not divided by N",
         check(generate::<A, NOT_SHARED>, gather::<A, NONE>),
-        "1/N of its path's flux",
+        "do not share the light",
     );
     fails!(
         "no VPL on the light",
