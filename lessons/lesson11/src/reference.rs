@@ -47,7 +47,7 @@ impl Reference {
                 .source
                 .replace(
                     "our bidirectional path tracer, another seed,",
-                    "нашият bidirectional path tracer, друг seed,",
+                    "нашият bidirectional path tracer, други случайни числа,",
                 )
                 .replace("(stored)", "(запазен)")
                 .replace("(rendered now)", "(рендериран сега)"),
@@ -316,7 +316,7 @@ pub fn render_now(scene: &Scene, base: &RenderOptions, max_depth: u32, spp: u32)
         source: format!("our bidirectional path tracer, another seed, {spp} spp (rendered now)"),
         name: lang::pick(
             "a reference rendered now with another seed",
-            "еталон, рендериран сега с друг seed",
+            "еталон, рендериран сега с други случайни числа",
         ),
     }
 }

@@ -224,7 +224,7 @@ fn render(tour: &Tour) -> Result<Section> {
                     scene.camera.width, scene.camera.height
                 ),
                 format!(
-                    "{}: RMSE спрямо времето, log–log (наклон −1/2 е 1/√N на Monte Carlo), \
+                    "{}: RMSE спрямо времето, в логаритмичен мащаб (наклон −1/2 е 1/√N на Monte Carlo), \
                      {}×{}, по {budget} s на алгоритъм, максимална дълбочина {max_depth}, RMSE без \
                      лампите (таблицата дава spp на всеки); прекъснатата линия е дъното на \
                      шума на самия еталон, {floor:.5}.",

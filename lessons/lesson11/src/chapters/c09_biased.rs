@@ -366,7 +366,7 @@ fn render(tour: &Tour) -> Result<Section> {
             format!(
                 "RMSE against time, log–log, against {} off the lamp, {w}×{h} pixels, max depth \
                  {max_depth}, each point a run of its own with four times the work of the one \
-                 before: photon mapping, clamped instant radiosity and irradiance caching build \
+                 before (the last cut to end at the budget): photon mapping, clamped instant radiosity and irradiance caching build \
                  once, then render more samples per pixel that all read what was built, so their \
                  error falls towards the floor that build sets and no further (path tracing, \
                  for scale, is on the next chart). The dashed lines are that floor's part no build removes, \
@@ -379,7 +379,8 @@ fn render(tour: &Tour) -> Result<Section> {
             format!(
                 "RMSE спрямо времето, в логаритмичен мащаб, спрямо {} без лампата, {w}×{h} \
                  пиксела, максимална дълбочина {max_depth}; всяка точка е отделно рендериране с \
-                 четири пъти повече работа от предишното: photon mapping, instant radiosity с \
+                 четири пъти повече работа от предишното (последното е съкратено, за да свърши в \
+                 срока): photon mapping, instant radiosity с \
                  ограничаване и irradiance caching строят веднъж, после рендерират още проби на \
                  пиксел, които четат построеното, затова грешката им пада към дъното, което \
                  строежът определя, и не по-надолу (path tracing, за сравнение, е на следващата \
