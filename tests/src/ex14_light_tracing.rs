@@ -331,6 +331,28 @@ fn without_importance(scene: &Scene, exact: f32) -> Image {
     })
 }
 
+/// What a light tracer whose connection leaves out the cosine at the lens
+/// converges to where the right answer is `exact` in every pixel:
+/// `exact / cos θ`, θ the angle between the ray and the view direction,
+/// averaged over each pixel (a 4×4 grid of rays through the pinhole).
+fn without_lens_cosine(scene: &Scene, exact: f32) -> Image {
+    let cam = &scene.camera;
+    Image::from_fn(cam.width, cam.height, |x, y| {
+        let mut sum = 0.0;
+        for j in 0..4 {
+            for i in 0..4 {
+                let raster = Vec2::new(
+                    x as f32 + (i as f32 + 0.5) / 4.0,
+                    y as f32 + (j as f32 + 0.5) / 4.0,
+                );
+                let ray = cam.generate_ray(raster, Vec2::splat(0.5));
+                sum += 1.0 / ray.d.dot(cam.forward());
+            }
+        }
+        Color::splat(exact * sum / 16.0)
+    })
+}
+
 /// The usual mistakes by what the mean of the whole image converges to,
 /// relative to the right answer, in one case; `None` if none fits.
 fn recognise(ratio: f64, named: &[(f64, f64, String)]) -> Option<String> {
@@ -393,6 +415,10 @@ pub fn check_with_seed(f: LightFn, seed: u64) -> Result<(), String> {
         let case = crate::tr!("ex14.furnace", what);
         if agrees(&result, &without_importance(&furnace, exact)) {
             let advice = crate::tr!("ex14.no_importance");
+            return Err(format!("{}: {} — {}", case, why, advice));
+        }
+        if agrees(&result, &without_lens_cosine(&furnace, exact)) {
+            let advice = crate::tr!("ex14.no_cos_lens");
             return Err(format!("{}: {} — {}", case, why, advice));
         }
         let no_pmf = || crate::tr!("ex14.no_pmf");

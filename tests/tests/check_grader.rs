@@ -718,6 +718,11 @@ fn ex14_light_tracing() {
             ex14::no_cos_surface,
             "cosine at the surface",
         ),
+        (
+            "no cosine at the lens",
+            ex14::no_cos_lens,
+            "cosine at the lens",
+        ),
         ("signed cosines", ex14::signed_cos, "signed cosine"),
         ("1/d", ex14::inv_distance, "too slowly with distance"),
         (
