@@ -296,6 +296,21 @@ fn load_reference(c: &Comparison) -> Result<(Image, Image), String> {
 
 /// Renders `student` and z-tests it against the stored reference, tile by
 /// tile (threshold for the family of all tiles and channels at level [`ALPHA`]).
+/// An error naming both sizes unless the student's image has the reference's.
+pub fn same_size(c: &Comparison, reference: &Image, student: &Image) -> Result<(), String> {
+    if (student.width, student.height) == (reference.width, reference.height) {
+        return Ok(());
+    }
+    Err(crate::tr!(
+        "compare.size",
+        name = c.name,
+        rw = reference.width,
+        rh = reference.height,
+        w = student.width,
+        h = student.height
+    ))
+}
+
 pub fn compare(c: &Comparison, student: &dyn Integrator) -> Result<(), String> {
     compare_with_seed(c, student, 11)
 }
@@ -320,16 +335,7 @@ pub fn compare_into(
     let (bi, bv) = load_reference(c)?;
     let a = render(&scene(c)?, student, &options(c.spp, seed, false, ""));
     let (ai, av) = (a.film.image(), a.film.variance_image());
-    if (ai.width, ai.height) != (bi.width, bi.height) {
-        return Err(crate::tr!(
-            "compare.size",
-            name = c.name,
-            rw = bi.width,
-            rh = bi.height,
-            w = ai.width,
-            h = ai.height
-        ));
-    }
+    same_size(c, &bi, &ai)?;
     let z = z_test(&ai, &av, &bi, &bv, c.tile);
     let tests = z.z.len() * 3;
     let threshold = z_threshold(tests, ALPHA) as f32;

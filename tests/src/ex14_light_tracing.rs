@@ -42,7 +42,7 @@ use std::sync::Mutex;
 use exercises::plug::{LightPathFn, StudentLightTracer};
 use raytracer::film::{Image, Splat};
 use raytracer::integrator::Integrator;
-use raytracer::math::{Color, UVec2, Vec2};
+use raytracer::math::{Color, Ray, UVec2, Vec2};
 use raytracer::metrics::{mean, z_test, z_threshold};
 use raytracer::render::{RenderOptions, RenderResult, render};
 use raytracer::sampling::Sampler;
@@ -311,31 +311,22 @@ fn agrees(result: &RenderResult, image: &Image) -> bool {
 }
 
 /// What a light tracer without `W_e` converges to where the right answer is
-/// `exact` in every pixel: `exact / W_e`, averaged over each pixel (a 4×4
-/// grid of rays through the pinhole).
+/// `exact` in every pixel: `exact / W_e`.
 fn without_importance(scene: &Scene, exact: f32) -> Image {
-    let cam = &scene.camera;
-    Image::from_fn(cam.width, cam.height, |x, y| {
-        let mut sum = 0.0;
-        for j in 0..4 {
-            for i in 0..4 {
-                let raster = Vec2::new(
-                    x as f32 + (i as f32 + 0.5) / 4.0,
-                    y as f32 + (j as f32 + 0.5) / 4.0,
-                );
-                let ray = cam.generate_ray(raster, Vec2::splat(0.5));
-                sum += 1.0 / cam.we(&ray);
-            }
-        }
-        Color::splat(exact * sum / 16.0)
-    })
+    over_the_film(scene, exact, |ray| 1.0 / scene.camera.we(ray))
 }
 
 /// What a light tracer whose connection leaves out the cosine at the lens
 /// converges to where the right answer is `exact` in every pixel:
-/// `exact / cos θ`, θ the angle between the ray and the view direction,
-/// averaged over each pixel (a 4×4 grid of rays through the pinhole).
+/// `exact / cos θ`, θ the angle between the ray and the view direction.
 fn without_lens_cosine(scene: &Scene, exact: f32) -> Image {
+    over_the_film(scene, exact, |ray| 1.0 / ray.d.dot(scene.camera.forward()))
+}
+
+/// `exact · factor(ray)` averaged over each pixel (a 4×4 grid of rays
+/// through the pinhole): the image a mistake that scales each splat by a
+/// factor of the camera ray converges to.
+fn over_the_film(scene: &Scene, exact: f32, factor: impl Fn(&Ray) -> f32) -> Image {
     let cam = &scene.camera;
     Image::from_fn(cam.width, cam.height, |x, y| {
         let mut sum = 0.0;
@@ -345,8 +336,7 @@ fn without_lens_cosine(scene: &Scene, exact: f32) -> Image {
                     x as f32 + (i as f32 + 0.5) / 4.0,
                     y as f32 + (j as f32 + 0.5) / 4.0,
                 );
-                let ray = cam.generate_ray(raster, Vec2::splat(0.5));
-                sum += 1.0 / ray.d.dot(cam.forward());
+                sum += factor(&cam.generate_ray(raster, Vec2::splat(0.5)));
             }
         }
         Color::splat(exact * sum / 16.0)

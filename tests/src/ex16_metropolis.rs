@@ -524,16 +524,7 @@ pub fn door_max_t(chain: MetropolisChainFn, seed: u64) -> Result<f64, String> {
     );
     let film = exercises::plug::chains_film(&images, c.size, c.size);
     let student = film.image();
-    if (student.width, student.height) != (reference.width, reference.height) {
-        return Err(crate::tr!(
-            "compare.size",
-            name = c.name,
-            rw = reference.width,
-            rh = reference.height,
-            w = student.width,
-            h = student.height
-        ));
-    }
+    crate::compare::same_size(c, &reference, &student)?;
     if let Some(p) = student.pixels.iter().find(|p| !p.is_finite()) {
         return Err(crate::tr!("ex16.door_nonfinite", p));
     }

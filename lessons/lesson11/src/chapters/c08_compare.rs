@@ -450,7 +450,6 @@ fn in_bulgarian(en: &str) -> String {
         "seconds" => "секунди",
         "noise floor" => "дъното на шума",
         "path tracing (BRDF only)" => "path tracing (само BRDF)",
-        "naive recursion" => "наивна рекурсия",
         other => crate::equal_time::label_in_bulgarian(other),
     }
     .to_string()

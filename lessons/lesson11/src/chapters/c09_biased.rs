@@ -125,66 +125,59 @@ fn render(tour: &Tour) -> Result<Section> {
             "9 · Unbiased and biased algorithms",
             "9 · Неотместени и отместени алгоритми",
         ),
-        &lang::pick(
-            format!(
+        &lang::fill(
+            lang::pick(
                 "The lecture splits the GI algorithms in two. Unbiased ones (path tracing, light \
                  tracing, bidirectional, Metropolis): their error is only noise, and it falls as \
                  1/√t. Biased ones (photon mapping, irradiance caching, instant radiosity): they can \
                  give a picture without noise whose error does not go away — smooth but wrong, and \
-                 sooner. Here each algorithm gets the same time on the Cornell box (about {} each; \
+                 sooner. Here each algorithm gets the same time on the Cornell box (about {budget} each; \
                  every time below includes building the photon maps, virtual point lights or cache \
-                 records), measured against Mitsuba 3's image, and on the caustic scene (about {} \
+                 records), measured against Mitsuba 3's image, and on the caustic scene (about {caustic_budget} \
                  each), measured against a stored bidirectional render with thousands of samples. \
-                 Photon mapping: {} light paths ({} on the caustic scene, whose caustic is a small \
-                 spot), the {PHOTON_K} nearest photons under an Epanechnikov kernel (a wide disk: \
-                 smooth, and visibly biased; {CAUSTIC_PHOTON_K} on the caustic scene). SPPM: {} \
+                 Photon mapping: {photons} light paths ({caustic_photons} on the caustic scene, whose caustic is a small \
+                 spot), the {photon_k} nearest photons under an Epanechnikov kernel (a wide disk: \
+                 smooth, and visibly biased; {caustic_photon_k} on the caustic scene). SPPM: {sppm_photons} \
                  photon paths per pass, radii shrinking with α = 2/3 (consistent: its bias falls \
-                 with the passes). Instant radiosity: the VPLs of {} light paths, the geometry term \
-                 clamped at {VPL_CLAMP}. Irradiance caching: a = {}, {} rays per record. The error \
-                 of each algorithm is split into bias² and variance over {} runs with independent \
-                 seeds ({} each): the mean of the runs minus the reference is the bias itself, \
+                 with the passes). Instant radiosity: the VPLs of {vpl_paths} light paths, the geometry term \
+                 clamped at {vpl_clamp}. Irradiance caching: a = {ic_error}, {ic_rays} rays per record. The error \
+                 of each algorithm is split into bias² and variance over {seeds} runs with independent \
+                 seeds ({seed_time} each): the mean of the runs minus the reference is the bias itself, \
                  shown as a picture.",
-                seconds_text(e.budget),
-                seconds_text(e.caustic_budget),
-                k.photons,
-                e.caustic_photons,
-                k.sppm_photons,
-                k.vpl_paths,
-                k.ic_error,
-                k.ic_rays,
-                e.seeds,
-                seconds_text(e.budget / e.seed_share),
-            ),
-            format!(
                 "Лекцията дели алгоритмите за глобално осветление на две. Неотместените (path \
                  tracing, light tracing, bidirectional, Metropolis): грешката им е само шум и пада \
                  като 1/√t. Отместените (photon mapping, irradiance caching, instant radiosity): \
                  могат да дадат картинка без шум, чиято грешка не изчезва – гладка, но грешна, и \
-                 по-рано. Тук всеки алгоритъм получава едно и също време в Cornell box (около {} \
+                 по-рано. Тук всеки алгоритъм получава едно и също време в Cornell box (около {budget} \
                  всеки; всяко време по-долу включва строежа на фотонните карти, виртуалните \
                  точкови светлини или записите на кеша), сравнен с картината на Mitsuba 3, и в \
-                 сцената с каустиката (около {} всеки), сравнен със запазено bidirectional \
-                 рендериране с хиляди проби. Photon mapping: {} светлинни пътя ({} в сцената с \
-                 каустиката, чиято каустика е малко петно), {PHOTON_K}-те най-близки фотона с \
+                 сцената с каустиката (около {caustic_budget} всеки), сравнен със запазено bidirectional \
+                 рендериране с хиляди проби. Photon mapping: {photons} светлинни пътя ({caustic_photons} в сцената с \
+                 каустиката, чиято каустика е малко петно), {photon_k}-те най-близки фотона с \
                  ядрото на Епанечников (широк диск: гладко и видимо отместено; \
-                 {CAUSTIC_PHOTON_K} в сцената с каустиката). SPPM: {} фотонни пътя на проход, \
+                 {caustic_photon_k} в сцената с каустиката). SPPM: {sppm_photons} фотонни пътя на проход, \
                  радиусите намаляват с α = 2/3 (състоятелен: отместването му намалява с \
-                 проходите). Instant radiosity: VPL на {} светлинни пътя, геометричният член \
-                 ограничен до {VPL_CLAMP}. Irradiance caching: a = {}, {} лъча на запис. Грешката \
-                 на всеки алгоритъм е разделена на отместване² и дисперсия по {} рендерирания с \
-                 независими случайни числа (по {} всяко): средното им минус еталона е самото \
+                 проходите). Instant radiosity: VPL на {vpl_paths} светлинни пътя, геометричният член \
+                 ограничен до {vpl_clamp}. Irradiance caching: a = {ic_error}, {ic_rays} лъча на запис. Грешката \
+                 на всеки алгоритъм е разделена на отместване² и дисперсия по {seeds} рендерирания с \
+                 независими случайни числа (по {seed_time} всяко): средното им минус еталона е самото \
                  отместване, показано като картина.",
-                seconds_text(e.budget),
-                seconds_text(e.caustic_budget),
-                k.photons,
-                e.caustic_photons,
-                k.sppm_photons,
-                k.vpl_paths,
-                k.ic_error,
-                k.ic_rays,
-                e.seeds,
-                seconds_text(e.budget / e.seed_share),
             ),
+            &[
+                ("budget", &seconds_text(e.budget)),
+                ("caustic_budget", &seconds_text(e.caustic_budget)),
+                ("photons", &k.photons),
+                ("caustic_photons", &e.caustic_photons),
+                ("sppm_photons", &k.sppm_photons),
+                ("vpl_paths", &k.vpl_paths),
+                ("ic_error", &k.ic_error),
+                ("ic_rays", &k.ic_rays),
+                ("seeds", &e.seeds),
+                ("seed_time", &seconds_text(e.budget / e.seed_share)),
+                ("photon_k", &PHOTON_K),
+                ("caustic_photon_k", &CAUSTIC_PHOTON_K),
+                ("vpl_clamp", &VPL_CLAMP),
+            ],
         ),
     )?;
     let mut table = Table::in_both(

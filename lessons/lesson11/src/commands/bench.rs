@@ -156,10 +156,14 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             let (reference, max_depth) =
                 crate::reference::independent(Some(name), &scene, &base, 5, 512);
             stop_if_interrupted(false)?;
+            // The floor over the pixels equal_time's RMSE counts: off the lights.
+            let floor = crate::equal_time::masked_noise_floor(
+                &reference,
+                &crate::equal_time::off_the_light(&reference.mean),
+            );
             crate::console::say!(
-                "  {name}: max depth {max_depth}, reference {} (noise floor {:.5})",
-                reference.source,
-                reference.noise_floor()
+                "  {name}: max depth {max_depth}, reference {} (noise floor {floor:.5})",
+                reference.source
             );
             crate::equal_time::equal_time(
                 &scene,
